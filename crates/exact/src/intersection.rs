@@ -1,0 +1,126 @@
+//! Meeting points of two lines through input points, and predicates on
+//! them that never construct the point.
+//!
+//! The cell decomposition's vertices are such points (a visibility ray meets
+//! a map edge or another ray). Deciding their position from the defining
+//! lines keeps the degree of every predicate at 4 in the input coordinates.
+
+use crate::line::Line;
+use crate::point::{fits_bits, Point, RatPoint};
+use crate::predicates::Side;
+use crate::reference;
+use rug::Integer;
+use std::cmp::Ordering;
+
+/// Input coordinates below `2^INTERSECTION_FAST_BITS` in magnitude take the
+/// `i128` fast path of [`side_of_intersection`] and
+/// [`compare_intersections_along`].
+///
+/// Implementation note: write `d_i = b_i - a_i` for line `i` and
+/// `×` for the cross product. With `|c| < 2^B` every difference is below
+/// `2^(B+1)` and every cross product of two differences below
+/// `2 · 2^(2B+2) = 2^(2B+3)`. Both predicates evaluate the sign of
+/// `X·Y + Z·W` where each of `X, Y, Z, W` is such a cross product
+/// (`side_of_intersection`: `(d3 × (a1 - a3))·(d1 × d2) + (d3 × d1)·((a2 - a1) × d2)`;
+/// `compare_intersections_along`: `n1·e2 - n2·e1` with `n_k = (a_k - a0) × d_k`,
+/// `e_k = d0 × d_k`). Each product is below `2^(4B+6)` and the sum below
+/// `2^(4B+7)`, which fits an `i128` (`< 2^127`) for `B = 30`.
+/// `tests/it/bounds.rs` recomputes this worst case with GMP.
+pub const INTERSECTION_FAST_BITS: u32 = 30;
+
+#[inline]
+fn fast(ps: &[Point]) -> bool {
+    ps.iter().all(|p| {
+        fits_bits(p.x, INTERSECTION_FAST_BITS) && fits_bits(p.y, INTERSECTION_FAST_BITS)
+    })
+}
+
+#[inline]
+fn cross(ux: i128, uy: i128, vx: i128, vy: i128) -> i128 {
+    ux * vy - uy * vx
+}
+
+/// The meeting point of `l1` and `l2`; `None` if they are parallel
+/// (including equal).
+pub fn construct_intersection(l1: &Line, l2: &Line) -> Option<RatPoint> {
+    let (a1, b1, a2, b2) = (l1.a(), l1.b(), l2.a(), l2.b());
+    let big = |v: i128| Integer::from(v);
+    let (d1x, d1y) = (big(b1.x) - a1.x, big(b1.y) - a1.y);
+    let (d2x, d2y) = (big(b2.x) - a2.x, big(b2.y) - a2.y);
+    let den = Integer::from(&d1x * &d2y) - Integer::from(&d1y * &d2x);
+    if den == 0 {
+        return None;
+    }
+    let (ex, ey) = (big(a2.x) - a1.x, big(a2.y) - a1.y);
+    let num = ex * &d2y - ey * &d2x;
+    // a1 + (num / den) · d1, in homogeneous form over den.
+    let x = Integer::from(&den * a1.x) + Integer::from(&num * &d1x);
+    let y = Integer::from(&den * a1.y) + Integer::from(&num * &d1y);
+    RatPoint::new(x, y, den)
+}
+
+/// The side of the directed line `l3` on which the meeting point of `l1` and
+/// `l2` lies, without constructing it; `None` if `l1 ∥ l2`.
+///
+/// # Edge cases
+/// `Side::On` exactly when `l3` passes through the meeting point, as when
+/// three visibility rays meet in one point.
+/// ```
+/// use wai_exact::{side_of_intersection, Line, Point, Side};
+/// let l = |a: (i128, i128), b: (i128, i128)| Line::new(Point::new(a.0, a.1), Point::new(b.0, b.1)).unwrap();
+/// let (h, v) = (l((0, 0), (4, 0)), l((2, -1), (2, 5)));
+/// assert_eq!(side_of_intersection(&l((0, -2), (4, 2)), &h, &v), Some(Side::On));
+/// assert_eq!(side_of_intersection(&l((3, 0), (3, 1)), &h, &v), Some(Side::Left));
+/// assert_eq!(side_of_intersection(&h, &h, &l((0, 1), (4, 1))), None);
+/// ```
+pub fn side_of_intersection(l3: &Line, l1: &Line, l2: &Line) -> Option<Side> {
+    let (a1, b1, a2, b2, a3, b3) = (l1.a(), l1.b(), l2.a(), l2.b(), l3.a(), l3.b());
+    if !fast(&[a1, b1, a2, b2, a3, b3]) {
+        return reference::side_of_intersection(l3, l1, l2);
+    }
+    let (d1x, d1y) = (b1.x - a1.x, b1.y - a1.y);
+    let (d2x, d2y) = (b2.x - a2.x, b2.y - a2.y);
+    let (d3x, d3y) = (b3.x - a3.x, b3.y - a3.y);
+    let den = cross(d1x, d1y, d2x, d2y);
+    if den == 0 {
+        return None;
+    }
+    let num = cross(a2.x - a1.x, a2.y - a1.y, d2x, d2y);
+    // I = a1 + (num/den) d1;  d3 × (I - a3) = [d3 × (a1 - a3) · den + num · (d3 × d1)] / den.
+    let s = cross(d3x, d3y, a1.x - a3.x, a1.y - a3.y) * den + num * cross(d3x, d3y, d1x, d1y);
+    Some(Side::from_sign(s.cmp(&0)).flip_if(den < 0))
+}
+
+/// The order along the directed line `l0` of its meeting points with `l1`
+/// and with `l2` (`Less`: the meeting with `l1` comes first); `None` if `l0`
+/// is parallel to `l1` or to `l2`.
+pub fn compare_intersections_along(l0: &Line, l1: &Line, l2: &Line) -> Option<Ordering> {
+    let (a0, b0, a1, b1, a2, b2) = (l0.a(), l0.b(), l1.a(), l1.b(), l2.a(), l2.b());
+    if !fast(&[a0, b0, a1, b1, a2, b2]) {
+        return reference::compare_intersections_along(l0, l1, l2);
+    }
+    let (d0x, d0y) = (b0.x - a0.x, b0.y - a0.y);
+    let (d1x, d1y) = (b1.x - a1.x, b1.y - a1.y);
+    let (d2x, d2y) = (b2.x - a2.x, b2.y - a2.y);
+    let e1 = cross(d0x, d0y, d1x, d1y);
+    let e2 = cross(d0x, d0y, d2x, d2y);
+    if e1 == 0 || e2 == 0 {
+        return None;
+    }
+    // t_k = n_k / e_k is the parameter of the meeting point on l0.
+    let n1 = cross(a1.x - a0.x, a1.y - a0.y, d1x, d1y);
+    let n2 = cross(a2.x - a0.x, a2.y - a0.y, d2x, d2y);
+    let s = n1 * e2 - n2 * e1;
+    let ord = s.cmp(&0);
+    Some(if (e1 < 0) != (e2 < 0) { ord.reverse() } else { ord })
+}
+
+impl Side {
+    pub(crate) fn flip_if(self, flip: bool) -> Side {
+        match (self, flip) {
+            (Side::Left, true) => Side::Right,
+            (Side::Right, true) => Side::Left,
+            (s, _) => s,
+        }
+    }
+}

@@ -1,0 +1,155 @@
+//! Orientation, side of a line and order along a line, for input points.
+
+use crate::line::Line;
+use crate::point::{fits_bits, Point, RatPoint};
+use crate::reference;
+use rug::Integer;
+use std::cmp::Ordering;
+
+/// The orientation of an ordered triple of points.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Orientation {
+    /// A left turn: `c` is to the left of the directed line `ab`.
+    CounterClockwise,
+    /// The three points lie on one line (including coincident points).
+    Collinear,
+    /// A right turn.
+    Clockwise,
+}
+
+impl Orientation {
+    pub(crate) fn from_sign(s: Ordering) -> Self {
+        match s {
+            Ordering::Greater => Orientation::CounterClockwise,
+            Ordering::Equal => Orientation::Collinear,
+            Ordering::Less => Orientation::Clockwise,
+        }
+    }
+
+    /// The orientation of the reversed triple.
+    pub fn reverse(self) -> Self {
+        match self {
+            Orientation::CounterClockwise => Orientation::Clockwise,
+            Orientation::Collinear => Orientation::Collinear,
+            Orientation::Clockwise => Orientation::CounterClockwise,
+        }
+    }
+}
+
+/// The side of a directed line a point lies on.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Side {
+    Left,
+    On,
+    Right,
+}
+
+impl Side {
+    pub(crate) fn from_sign(s: Ordering) -> Self {
+        match s {
+            Ordering::Greater => Side::Left,
+            Ordering::Equal => Side::On,
+            Ordering::Less => Side::Right,
+        }
+    }
+}
+
+impl From<Orientation> for Side {
+    fn from(o: Orientation) -> Self {
+        match o {
+            Orientation::CounterClockwise => Side::Left,
+            Orientation::Collinear => Side::On,
+            Orientation::Clockwise => Side::Right,
+        }
+    }
+}
+
+/// Coordinates below `2^ORIENTATION_FAST_BITS` in magnitude take the `i128`
+/// fast path of [`orientation`] and [`compare_along`].
+///
+/// Implementation note: with `|c| < 2^62` every difference of coordinates
+/// has `|d| <= 2^63 - 2`, every product of two differences is below `2^126`
+/// and the sum or difference of two such products is below `2^127`, which an
+/// `i128` holds (its maximum is `2^127 - 1`). `tests/it/bounds.rs` recomputes
+/// the worst case with GMP.
+pub const ORIENTATION_FAST_BITS: u32 = 62;
+
+#[inline]
+fn fast(p: &Point) -> bool {
+    fits_bits(p.x, ORIENTATION_FAST_BITS) && fits_bits(p.y, ORIENTATION_FAST_BITS)
+}
+
+/// The orientation of `(a, b, c)`: the sign of `(b - a) × (c - a)`.
+///
+/// # Edge cases
+/// Coincident points are [`Orientation::Collinear`].
+/// ```
+/// use wai_exact::{orientation, Orientation, Point};
+/// let (a, b) = (Point::new(0, 0), Point::new(4, 0));
+/// assert_eq!(orientation(a, b, Point::new(9, 1)), Orientation::CounterClockwise);
+/// assert_eq!(orientation(a, b, Point::new(-7, 0)), Orientation::Collinear);
+/// assert_eq!(orientation(a, a, Point::new(1, 1)), Orientation::Collinear);
+/// ```
+#[inline]
+pub fn orientation(a: Point, b: Point, c: Point) -> Orientation {
+    if fast(&a) && fast(&b) && fast(&c) {
+        let d = (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x);
+        Orientation::from_sign(d.cmp(&0))
+    } else {
+        reference::orientation(a, b, c)
+    }
+}
+
+/// The side of the directed line `l` that `p` lies on.
+#[inline]
+pub fn side_of_line(l: &Line, p: Point) -> Side {
+    orientation(l.a(), l.b(), p).into()
+}
+
+/// The order of `p` and `q` along the direction of `l` (`Less`: `p` comes
+/// first). Points need not lie on `l`: they are compared by their orthogonal
+/// projections onto it.
+#[inline]
+pub fn compare_along(l: &Line, p: Point, q: Point) -> Ordering {
+    let (a, b) = (l.a(), l.b());
+    if fast(&a) && fast(&b) && fast(&p) && fast(&q) {
+        // Same bound as orientation: a sum of two products of differences.
+        let d = (q.x - p.x) * (b.x - a.x) + (q.y - p.y) * (b.y - a.y);
+        0.cmp(&d)
+    } else {
+        reference::compare_along(l, p, q)
+    }
+}
+
+/// The orientation of three rational points (always on the GMP path).
+pub fn orientation_rat(a: &RatPoint, b: &RatPoint, c: &RatPoint) -> Orientation {
+    // Homogeneous rows (X, Y, W) with W > 0: the determinant has the sign of
+    // the affine orientation determinant.
+    let det = |r0: [&Integer; 3], r1: [&Integer; 3], r2: [&Integer; 3]| {
+        let m0 = Integer::from(r1[1] * r2[2]) - Integer::from(r1[2] * r2[1]);
+        let m1 = Integer::from(r1[0] * r2[2]) - Integer::from(r1[2] * r2[0]);
+        let m2 = Integer::from(r1[0] * r2[1]) - Integer::from(r1[1] * r2[0]);
+        Integer::from(r0[0] * &m0) - Integer::from(r0[1] * &m1) + Integer::from(r0[2] * &m2)
+    };
+    let d = det(
+        [a.hx(), a.hy(), a.hw()],
+        [b.hx(), b.hy(), b.hw()],
+        [c.hx(), c.hy(), c.hw()],
+    );
+    Orientation::from_sign(d.cmp0())
+}
+
+/// The side of the directed line `l` that the rational point `p` lies on.
+pub fn side_of_line_rat(l: &Line, p: &RatPoint) -> Side {
+    if let Some(q) = p.to_point() {
+        return side_of_line(l, q);
+    }
+    let (a, b) = (l.a(), l.b());
+    // sign((b - a) × (p - a)) with p = (X/W, Y/W), W > 0, scaled by W.
+    let dx = Integer::from(b.x - a.x);
+    let dy = Integer::from(b.y - a.y);
+    let px = Integer::from(p.hx() - Integer::from(p.hw() * a.x));
+    let py = Integer::from(p.hy() - Integer::from(p.hw() * a.y));
+    let d = dx * py - dy * px;
+    Side::from_sign(d.cmp0())
+}
