@@ -1,1 +1,99 @@
-fn main() {}
+//! `wai`: the workspace's one binary.
+//!
+//! Subcommands: `demo` (the main job on the built-in default map), `gen`
+//! (generate a map of a thesis family or a random kind), `info` (validate a
+//! map and print its numbers), `render` (draw it as SVG).
+//!
+//! Exit codes: 0 success; 1 the map is invalid; 2 bad usage; 3 the file
+//! could not be read or written. Errors say what and where, never panic.
+
+mod commands;
+mod input;
+
+use clap::{Parser, Subcommand};
+use std::path::PathBuf;
+use std::process::ExitCode;
+
+#[derive(Parser, Debug)]
+#[command(name = "wai", version, about = "Where am I? Exact visibility and localization in polygonal maps")]
+struct Cli {
+    #[command(subcommand)]
+    command: Command,
+}
+
+#[derive(Subcommand, Debug)]
+enum Command {
+    /// Run the main job on the built-in default map (an office floor):
+    /// validate it, print its numbers and write its JSON and SVG.
+    Demo {
+        /// Folder for the output files.
+        #[arg(long, default_value = "target/wai-demo")]
+        out: PathBuf,
+    },
+    /// Generate a map: a thesis family (`--family`) or a random kind (`--random`).
+    Gen(commands::GenArgs),
+    /// Validate a map and print n, r, area, orthogonality and scale.
+    Info {
+        /// Map file (JSON map format or GeoJSON); `-` reads standard input.
+        map: PathBuf,
+        /// Print JSON instead of text.
+        #[arg(long)]
+        json: bool,
+        #[command(flatten)]
+        format: input::FormatArg,
+    },
+    /// Draw a map as SVG, reflex vertices marked.
+    Render {
+        /// Map file (JSON map format or GeoJSON); `-` reads standard input.
+        map: PathBuf,
+        /// Output SVG file; standard output if absent.
+        #[arg(long)]
+        out: Option<PathBuf>,
+        /// Number the vertices.
+        #[arg(long)]
+        labels: bool,
+        /// Pixels along the longer side.
+        #[arg(long, default_value_t = 800)]
+        size: u32,
+        #[command(flatten)]
+        format: input::FormatArg,
+    },
+}
+
+/// A failure with its exit code.
+#[derive(Debug)]
+pub struct Failure {
+    pub code: u8,
+    pub message: String,
+}
+
+impl Failure {
+    pub fn invalid(message: impl Into<String>) -> Self {
+        Failure { code: 1, message: message.into() }
+    }
+    pub fn usage(message: impl Into<String>) -> Self {
+        Failure { code: 2, message: message.into() }
+    }
+    pub fn io(message: impl Into<String>) -> Self {
+        Failure { code: 3, message: message.into() }
+    }
+}
+
+fn main() -> ExitCode {
+    let cli = Cli::parse();
+    let result = match cli.command {
+        Command::Demo { out } => commands::demo(&out),
+        Command::Gen(args) => commands::gen(&args),
+        Command::Info { map, json, format } => commands::info(&map, json, format.format),
+        Command::Render { map, out, labels, size, format } => {
+            commands::render(&map, out.as_deref(), labels, size, format.format)
+        }
+    };
+    match result {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(f) => {
+            eprintln!("error: {}", f.message);
+            ExitCode::from(f.code)
+        }
+    }
+}

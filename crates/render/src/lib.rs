@@ -1,1 +1,184 @@
-//! placeholder
+//! SVG pictures (output only).
+//!
+//! The principal type is [`Canvas`]: it maps the exact integer coordinates
+//! of a map onto an SVG view box (y up, as in the thesis's figures) and
+//! collects layers. [`map_svg`] draws a map with its reflex vertices marked;
+//! later issues add layers for visibility polygons, skeletons and cells.
+//!
+//! # Invariant
+//! Floating point appears only here, in the pixel coordinates written to
+//! the SVG text; nothing read back from a picture decides anything.
+#![allow(
+    clippy::float_arithmetic,
+    reason = "pixel coordinates of pictures are output only (STYLE.md 1)"
+)]
+
+use rug::Integer;
+use std::fmt::Write;
+use wai_exact::Point;
+use wai_map::Map;
+
+/// An SVG drawing in the coordinate frame of one map.
+#[derive(Debug)]
+pub struct Canvas {
+    min: (f64, f64),
+    unit: f64,
+    width: f64,
+    height: f64,
+    margin: f64,
+    body: String,
+}
+
+/// Convert an integer coordinate to `f64` for drawing.
+fn approx(c: i128) -> f64 {
+    // i128 -> f64 rounds to nearest; pictures need no more.
+    c as f64
+}
+
+impl Canvas {
+    /// A canvas showing the box `lo`–`hi` (integer map units) scaled to
+    /// `size` pixels along its longer side.
+    pub fn new(lo: Point, hi: Point, size: f64) -> Canvas {
+        let w = approx(hi.x - lo.x).max(1.0);
+        let h = approx(hi.y - lo.y).max(1.0);
+        let unit = size / w.max(h);
+        Canvas {
+            min: (approx(lo.x), approx(lo.y)),
+            unit,
+            width: w * unit,
+            height: h * unit,
+            margin: 0.05 * size,
+            body: String::new(),
+        }
+    }
+
+    /// A canvas fitted to `map`.
+    pub fn for_map(map: &Map, size: f64) -> Canvas {
+        let (lo, hi) = map.bounding_box();
+        Canvas::new(lo, hi, size)
+    }
+
+    fn px(&self, p: Point) -> (f64, f64) {
+        let x = (approx(p.x) - self.min.0) * self.unit + self.margin;
+        let y = self.height - (approx(p.y) - self.min.1) * self.unit + self.margin;
+        (x, y)
+    }
+
+    /// A closed polygon.
+    pub fn polygon(&mut self, ring: &[Point], fill: &str, stroke: &str, stroke_width: f64) {
+        let pts: Vec<String> = ring
+            .iter()
+            .map(|&p| {
+                let (x, y) = self.px(p);
+                format!("{x:.2},{y:.2}")
+            })
+            .collect();
+        let _ = writeln!(
+            self.body,
+            r#"<polygon points="{}" fill="{fill}" stroke="{stroke}" stroke-width="{stroke_width}" stroke-linejoin="round"/>"#,
+            pts.join(" ")
+        );
+    }
+
+    /// A dot of radius `r` pixels.
+    pub fn dot(&mut self, p: Point, r: f64, fill: &str, title: &str) {
+        let (x, y) = self.px(p);
+        let _ = writeln!(
+            self.body,
+            r#"<circle cx="{x:.2}" cy="{y:.2}" r="{r}" fill="{fill}"><title>{}</title></circle>"#,
+            escape(title)
+        );
+    }
+
+    /// A text label at `p`, offset by a few pixels.
+    pub fn label(&mut self, p: Point, text: &str, size: f64) {
+        let (x, y) = self.px(p);
+        let _ = writeln!(
+            self.body,
+            r##"<text x="{:.2}" y="{:.2}" font-size="{size}" font-family="sans-serif" fill="#333">{}</text>"##,
+            x + 3.0,
+            y - 3.0,
+            escape(text)
+        );
+    }
+
+    /// The finished SVG document, with `title` and a caption line.
+    pub fn finish(self, title: &str, caption: &str) -> String {
+        let (w, h) = (self.width + 2.0 * self.margin, self.height + 2.0 * self.margin + 18.0);
+        format!(
+            concat!(
+                r#"<svg xmlns="http://www.w3.org/2000/svg" width="{w:.0}" height="{h:.0}" viewBox="0 0 {w:.2} {h:.2}">"#,
+                "\n<title>{title}</title>\n",
+                r#"<rect width="100%" height="100%" fill="white"/>"#,
+                "\n{body}",
+                r##"<text x="4" y="{cy:.2}" font-size="12" font-family="sans-serif" fill="#555">{caption}</text>"##,
+                "\n</svg>\n"
+            ),
+            w = w,
+            h = h,
+            title = escape(title),
+            body = self.body,
+            cy = h - 5.0,
+            caption = escape(caption),
+        )
+    }
+}
+
+fn escape(s: &str) -> String {
+    s.replace('&', "&amp;").replace('<', "&lt;").replace('>', "&gt;").replace('"', "&quot;")
+}
+
+/// What [`map_svg`] draws.
+#[derive(Clone, Debug)]
+pub struct MapStyle {
+    /// Pixels along the longer side of the map.
+    pub size: f64,
+    /// Number every vertex.
+    pub vertex_labels: bool,
+}
+
+impl Default for MapStyle {
+    fn default() -> Self {
+        MapStyle {
+            size: 800.0,
+            vertex_labels: false,
+        }
+    }
+}
+
+/// Draw `map`: its polygon, its vertices, its reflex vertices marked in red,
+/// and a caption with n, r and the scale.
+pub fn map_svg(map: &Map, style: &MapStyle) -> String {
+    let mut c = Canvas::for_map(map, style.size);
+    c.polygon(map.vertices(), "#eef3fb", "#1f3b73", 1.5);
+    let dot = (style.size / 250.0).clamp(1.5, 4.0);
+    for (i, &p) in map.vertices().iter().enumerate() {
+        let (fill, kind) = if map.is_reflex(i) {
+            ("#d62728", "reflex")
+        } else {
+            ("#1f3b73", "convex")
+        };
+        let r = if map.is_reflex(i) { dot * 1.6 } else { dot };
+        c.dot(p, r, fill, &format!("vertex {i} {} ({kind})", coordinate_text(p, map.scale())));
+        if style.vertex_labels {
+            c.label(p, &i.to_string(), 10.0);
+        }
+    }
+    let name = map.name().unwrap_or("map");
+    let caption = format!(
+        "{name}: n = {}, r = {} (reflex vertices in red){}",
+        map.n(),
+        map.r(),
+        if *map.scale() == 1 {
+            String::new()
+        } else {
+            format!(", coordinates in units of 1/{}", map.scale())
+        }
+    );
+    c.finish(name, &caption)
+}
+
+fn coordinate_text(p: Point, scale: &Integer) -> String {
+    let q = |v: i128| wai_map::format_exact(&rug::Rational::from((Integer::from(v), scale.clone())));
+    format!("({}, {})", q(p.x), q(p.y))
+}

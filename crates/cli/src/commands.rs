@@ -1,0 +1,158 @@
+//! The subcommands.
+
+use crate::input::{load, note_normalisation, Format};
+use crate::Failure;
+use rug::{Integer, Rational};
+use std::path::{Path, PathBuf};
+use wai_map::json::{from_json, to_json};
+use wai_map::{format_exact, Loaded, Map};
+use wai_render::{map_svg, MapStyle};
+
+/// The built-in default map: an office floor, a corridor with five rooms.
+pub const DEFAULT_MAP: &str = include_str!("../maps/office-floor.json");
+
+#[derive(clap::Args, Debug)]
+pub struct GenArgs {
+    /// A thesis family by id (see --list).
+    #[arg(long, conflicts_with = "random", required_unless_present_any = ["random", "list"])]
+    pub family: Option<String>,
+    /// A family parameter; repeat for families with several.
+    #[arg(long = "param")]
+    pub params: Vec<u32>,
+    /// A random kind by id (see --list).
+    #[arg(long)]
+    pub random: Option<String>,
+    /// Vertex count target for random kinds.
+    #[arg(long, default_value_t = 20)]
+    pub n: usize,
+    /// Seed for random kinds (the same seed gives the same map).
+    #[arg(long, default_value_t = 0)]
+    pub seed: u64,
+    /// Output file; standard output if absent.
+    #[arg(long)]
+    pub out: Option<PathBuf>,
+    /// List the families and random kinds.
+    #[arg(long)]
+    pub list: bool,
+}
+
+fn write_file(path: &Path, text: &str) -> Result<(), Failure> {
+    if let Some(dir) = path.parent().filter(|d| !d.as_os_str().is_empty()) {
+        std::fs::create_dir_all(dir).map_err(|e| Failure::io(format!("{}: {e}", dir.display())))?;
+    }
+    std::fs::write(path, text).map_err(|e| Failure::io(format!("{}: {e}", path.display())))
+}
+
+fn output(out: Option<&Path>, text: &str) -> Result<(), Failure> {
+    match out {
+        Some(path) => write_file(path, text),
+        None => {
+            print!("{text}");
+            Ok(())
+        }
+    }
+}
+
+/// The exact area in input units.
+fn area(map: &Map) -> Rational {
+    let scale2 = Integer::from(map.scale() * map.scale());
+    Rational::from((map.area_twice(), scale2 * 2u32))
+}
+
+fn unit(map: &Map, c: i128) -> String {
+    format_exact(&Rational::from((Integer::from(c), map.scale().clone())))
+}
+
+fn info_text(map: &Map) -> String {
+    let (lo, hi) = map.bounding_box();
+    let reflex: Vec<String> = map.reflex_vertices().iter().map(usize::to_string).collect();
+    format!(
+        "name:         {}\nvertices n:   {}\nreflex r:     {}  [{}]\narea:         {}\northogonal:   {}\nscale:        1/{} (coordinates are integers over this denominator)\nbounding box: ({}, {}) – ({}, {})\n",
+        map.name().unwrap_or("-"),
+        map.n(),
+        map.r(),
+        reflex.join(", "),
+        format_exact(&area(map)),
+        if map.is_orthogonal() { "yes" } else { "no" },
+        map.scale(),
+        unit(map, lo.x),
+        unit(map, lo.y),
+        unit(map, hi.x),
+        unit(map, hi.y),
+    )
+}
+
+fn info_json(loaded: &Loaded) -> String {
+    let map = &loaded.map;
+    let (lo, hi) = map.bounding_box();
+    let v = serde_json::json!({
+        "name": map.name(),
+        "n": map.n(),
+        "r": map.r(),
+        "reflex_vertices": map.reflex_vertices(),
+        "area": format_exact(&area(map)),
+        "orthogonal": map.is_orthogonal(),
+        "scale": map.scale().to_string(),
+        "bounding_box": [[unit(map, lo.x), unit(map, lo.y)], [unit(map, hi.x), unit(map, hi.y)]],
+        "normalisation": {
+            "reversed": loaded.normalisation.reversed,
+            "removed_collinear": loaded.normalisation.removed_collinear,
+        },
+    });
+    format!("{}\n", serde_json::to_string_pretty(&v).expect("plain JSON values"))
+}
+
+pub fn info(path: &Path, json: bool, format: Format) -> Result<(), Failure> {
+    let loaded = load(path, format)?;
+    if json {
+        print!("{}", info_json(&loaded));
+    } else {
+        print!("{}", info_text(&loaded.map));
+    }
+    Ok(())
+}
+
+pub fn render(path: &Path, out: Option<&Path>, labels: bool, size: u32, format: Format) -> Result<(), Failure> {
+    let loaded = load(path, format)?;
+    let style = MapStyle {
+        size: f64::from(size.clamp(50, 20_000)),
+        vertex_labels: labels,
+    };
+    output(out, &map_svg(&loaded.map, &style))
+}
+
+pub fn demo(out: &Path) -> Result<(), Failure> {
+    let loaded = from_json(DEFAULT_MAP.as_bytes())
+        .map_err(|e| Failure::invalid(format!("built-in map: {e}")))?;
+    let builtin = Path::new("<built-in office-floor>");
+    note_normalisation(builtin, &loaded);
+    let map = &loaded.map;
+    println!("The built-in default map (wai demo):\n");
+    print!("{}", info_text(map));
+    let json_path = out.join("office-floor.json");
+    let svg_path = out.join("office-floor.svg");
+    write_file(&json_path, &to_json(map))?;
+    let style = MapStyle { vertex_labels: true, ..MapStyle::default() };
+    write_file(&svg_path, &map_svg(map, &style))?;
+    println!("\nwrote {} and {}", json_path.display(), svg_path.display());
+    println!("(visibility, cells and localization join this job as later issues land)");
+    Ok(())
+}
+
+pub fn gen(args: &GenArgs) -> Result<(), Failure> {
+    if args.list {
+        print!("{}", wai_gen::catalogue());
+        return Ok(());
+    }
+    let map = match (&args.family, &args.random) {
+        (Some(family), _) => wai_gen::family(family, &args.params),
+        (None, Some(kind)) => wai_gen::random(kind, args.n, args.seed),
+        (None, None) => return Err(Failure::usage("give --family ID or --random KIND (see --list)")),
+    }
+    .map_err(|e| Failure::usage(e.to_string()))?;
+    output(args.out.as_deref(), &to_json(&map))?;
+    if let Some(out) = &args.out {
+        eprintln!("wrote {} (n = {}, r = {})", out.display(), map.n(), map.r());
+    }
+    Ok(())
+}
