@@ -99,7 +99,10 @@ fn info_json(loaded: &Loaded) -> String {
             "removed_collinear": loaded.normalisation.removed_collinear,
         },
     });
-    format!("{}\n", serde_json::to_string_pretty(&v).expect("plain JSON values"))
+    format!(
+        "{}\n",
+        serde_json::to_string_pretty(&v).expect("plain JSON values")
+    )
 }
 
 pub fn info(path: &Path, json: bool, format: Format) -> Result<(), Failure> {
@@ -112,7 +115,13 @@ pub fn info(path: &Path, json: bool, format: Format) -> Result<(), Failure> {
     Ok(())
 }
 
-pub fn render(path: &Path, out: Option<&Path>, labels: bool, size: u32, format: Format) -> Result<(), Failure> {
+pub fn render(
+    path: &Path,
+    out: Option<&Path>,
+    labels: bool,
+    size: u32,
+    format: Format,
+) -> Result<(), Failure> {
     let loaded = load(path, format)?;
     let style = MapStyle {
         size: f64::from(size.clamp(50, 20_000)),
@@ -132,7 +141,10 @@ pub fn demo(out: &Path) -> Result<(), Failure> {
     let json_path = out.join("office-floor.json");
     let svg_path = out.join("office-floor.svg");
     write_file(&json_path, &to_json(map))?;
-    let style = MapStyle { vertex_labels: true, ..MapStyle::default() };
+    let style = MapStyle {
+        vertex_labels: true,
+        ..MapStyle::default()
+    };
     write_file(&svg_path, &map_svg(map, &style))?;
     println!("\nwrote {} and {}", json_path.display(), svg_path.display());
     println!("(visibility, cells and localization join this job as later issues land)");
@@ -141,13 +153,17 @@ pub fn demo(out: &Path) -> Result<(), Failure> {
 
 pub fn gen(args: &GenArgs) -> Result<(), Failure> {
     if args.list {
-        print!("{}", wai_gen::catalogue());
+        print!("{}", catalogue());
         return Ok(());
     }
     let map = match (&args.family, &args.random) {
         (Some(family), _) => wai_gen::family(family, &args.params),
         (None, Some(kind)) => wai_gen::random(kind, args.n, args.seed),
-        (None, None) => return Err(Failure::usage("give --family ID or --random KIND (see --list)")),
+        (None, None) => {
+            return Err(Failure::usage(
+                "give --family ID or --random KIND (see --list)",
+            ))
+        }
     }
     .map_err(|e| Failure::usage(e.to_string()))?;
     output(args.out.as_deref(), &to_json(&map))?;
@@ -155,4 +171,29 @@ pub fn gen(args: &GenArgs) -> Result<(), Failure> {
         eprintln!("wrote {} (n = {}, r = {})", out.display(), map.n(), map.r());
     }
     Ok(())
+}
+
+/// The families and random kinds, for `gen --list`.
+fn catalogue() -> String {
+    let mut s = String::from("Thesis families (gen --family ID --param P ...):\n");
+    for f in wai_gen::FAMILIES {
+        s.push_str(&format!(
+            "  {:<20} {}\n  {:<20} n = {}, r = {}; {} [{}]\n",
+            f.id,
+            f.params,
+            "",
+            f.n,
+            f.r,
+            f.reference,
+            f.claims.join(", ")
+        ));
+    }
+    s.push_str("\nRandom kinds (gen --random KIND --n N --seed S):\n");
+    for k in wai_gen::RANDOM_KINDS {
+        s.push_str(&format!(
+            "  {:<20} {} (n from {} to {}; vertices: {})\n",
+            k.id, k.method, k.min_n, k.max_n, k.vertices
+        ));
+    }
+    s
 }

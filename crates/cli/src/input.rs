@@ -37,13 +37,17 @@ fn read_bytes(path: &Path) -> Result<Vec<u8>, Failure> {
             .read_to_end(&mut buf)
             .map_err(|e| Failure::io(format!("standard input: {e}")))?;
         if buf.len() as u64 > MAX_FILE_BYTES {
-            return Err(Failure::invalid(format!("standard input: larger than {MAX_FILE_BYTES} bytes")));
+            return Err(Failure::invalid(format!(
+                "standard input: larger than {MAX_FILE_BYTES} bytes"
+            )));
         }
         return Ok(buf);
     }
     let meta = std::fs::metadata(path).map_err(|e| Failure::io(format!("{shown}: {e}")))?;
     if meta.is_dir() {
-        return Err(Failure::io(format!("{shown}: is a directory, expected a map file")));
+        return Err(Failure::io(format!(
+            "{shown}: is a directory, expected a map file"
+        )));
     }
     if meta.len() > MAX_FILE_BYTES {
         return Err(Failure::invalid(format!(
@@ -70,7 +74,11 @@ pub fn load(path: &Path, format: Format) -> Result<Loaded, Failure> {
         Format::Json => false,
         Format::Geojson => true,
     };
-    let parsed = if geo { from_geojson(&bytes) } else { from_json(&bytes) };
+    let parsed = if geo {
+        from_geojson(&bytes)
+    } else {
+        from_json(&bytes)
+    };
     let loaded = parsed.map_err(|errors| {
         let shown = path.display();
         let mut msg = match errors.0.as_slice() {
@@ -101,7 +109,11 @@ pub fn note_normalisation(path: &Path, loaded: &Loaded) {
         eprintln!("note: {shown}: the ring was clockwise; reversed to counter-clockwise (first vertex kept)");
     }
     if !norm.removed_collinear.is_empty() {
-        let list: Vec<String> = norm.removed_collinear.iter().map(usize::to_string).collect();
+        let list: Vec<String> = norm
+            .removed_collinear
+            .iter()
+            .map(usize::to_string)
+            .collect();
         eprintln!(
             "note: {shown}: removed {} vertex(es) with a straight (180°) angle, at input positions {} (Alg 3.14 step 1)",
             list.len(),

@@ -15,7 +15,11 @@ use std::path::PathBuf;
 use std::process::ExitCode;
 
 #[derive(Parser, Debug)]
-#[command(name = "wai", version, about = "Where am I? Exact visibility and localization in polygonal maps")]
+#[command(
+    name = "wai",
+    version,
+    about = "Where am I? Exact visibility and localization in polygonal maps"
+)]
 struct Cli {
     #[command(subcommand)]
     command: Command,
@@ -69,13 +73,22 @@ pub struct Failure {
 
 impl Failure {
     pub fn invalid(message: impl Into<String>) -> Self {
-        Failure { code: 1, message: message.into() }
+        Failure {
+            code: 1,
+            message: message.into(),
+        }
     }
     pub fn usage(message: impl Into<String>) -> Self {
-        Failure { code: 2, message: message.into() }
+        Failure {
+            code: 2,
+            message: message.into(),
+        }
     }
     pub fn io(message: impl Into<String>) -> Self {
-        Failure { code: 3, message: message.into() }
+        Failure {
+            code: 3,
+            message: message.into(),
+        }
     }
 }
 
@@ -85,9 +98,13 @@ fn main() -> ExitCode {
         Command::Demo { out } => commands::demo(&out),
         Command::Gen(args) => commands::gen(&args),
         Command::Info { map, json, format } => commands::info(&map, json, format.format),
-        Command::Render { map, out, labels, size, format } => {
-            commands::render(&map, out.as_deref(), labels, size, format.format)
-        }
+        Command::Render {
+            map,
+            out,
+            labels,
+            size,
+            format,
+        } => commands::render(&map, out.as_deref(), labels, size, format.format),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,

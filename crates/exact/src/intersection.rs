@@ -30,9 +30,8 @@ pub const INTERSECTION_FAST_BITS: u32 = 30;
 
 #[inline]
 fn fast(ps: &[Point]) -> bool {
-    ps.iter().all(|p| {
-        fits_bits(p.x, INTERSECTION_FAST_BITS) && fits_bits(p.y, INTERSECTION_FAST_BITS)
-    })
+    ps.iter()
+        .all(|p| fits_bits(p.x, INTERSECTION_FAST_BITS) && fits_bits(p.y, INTERSECTION_FAST_BITS))
 }
 
 #[inline]
@@ -112,7 +111,11 @@ pub fn compare_intersections_along(l0: &Line, l1: &Line, l2: &Line) -> Option<Or
     let n2 = cross(a2.x - a0.x, a2.y - a0.y, d2x, d2y);
     let s = n1 * e2 - n2 * e1;
     let ord = s.cmp(&0);
-    Some(if (e1 < 0) != (e2 < 0) { ord.reverse() } else { ord })
+    Some(if (e1 < 0) != (e2 < 0) {
+        ord.reverse()
+    } else {
+        ord
+    })
 }
 
 impl Side {

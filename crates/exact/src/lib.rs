@@ -35,8 +35,8 @@ pub use line::Line;
 pub use point::{Point, RatPoint, MAX_COORD_BITS};
 pub use polygon::{locate, locate_rat, signed_area_twice, Containment};
 pub use predicates::{
-    compare_along, orientation, orientation_rat, side_of_line, side_of_line_rat, Orientation,
-    Side, ORIENTATION_FAST_BITS,
+    compare_along, orientation, orientation_rat, side_of_line, side_of_line_rat, Orientation, Side,
+    ORIENTATION_FAST_BITS,
 };
 pub use segment::{classify_segments, Segment, SegmentIntersection};
 pub use visibility::{sees, Sight};

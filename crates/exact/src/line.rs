@@ -30,7 +30,10 @@ impl Line {
 
     /// The same line, directed the other way.
     pub fn reversed(&self) -> Line {
-        Line { a: self.b, b: self.a }
+        Line {
+            a: self.b,
+            b: self.a,
+        }
     }
 
     pub fn contains(&self, p: Point) -> bool {

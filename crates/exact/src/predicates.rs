@@ -145,11 +145,12 @@ pub fn side_of_line_rat(l: &Line, p: &RatPoint) -> Side {
         return side_of_line(l, q);
     }
     let (a, b) = (l.a(), l.b());
-    // sign((b - a) × (p - a)) with p = (X/W, Y/W), W > 0, scaled by W.
-    let dx = Integer::from(b.x - a.x);
-    let dy = Integer::from(b.y - a.y);
-    let px = Integer::from(p.hx() - Integer::from(p.hw() * a.x));
-    let py = Integer::from(p.hy() - Integer::from(p.hw() * a.y));
+    // sign((b - a) × (p - a)) with p = (X/W, Y/W), W > 0, scaled by W. The
+    // differences are taken in GMP: in i128 they overflow beyond 2^126.
+    let dx = Integer::from(b.x) - a.x;
+    let dy = Integer::from(b.y) - a.y;
+    let px = p.hx() - Integer::from(p.hw() * a.x);
+    let py = p.hy() - Integer::from(p.hw() * a.y);
     let d = dx * py - dy * px;
     Side::from_sign(d.cmp0())
 }

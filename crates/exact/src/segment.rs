@@ -1,8 +1,8 @@
 //! Closed segments between input points and their classified intersection.
 
 use crate::line::Line;
-use crate::predicates::{compare_along, orientation, Orientation};
 use crate::point::Point;
+use crate::predicates::{compare_along, orientation, Orientation};
 use std::cmp::Ordering;
 
 /// The closed segment from `a` to `b`, `a != b`.
@@ -88,14 +88,9 @@ pub fn classify_segments(s: &Segment, t: &Segment) -> SegmentIntersection {
         };
     }
     // Not all collinear: at most one common point, an endpoint on the other.
-    let touching = [
-        (o1, t.a, s),
-        (o2, t.b, s),
-        (o3, s.a, t),
-        (o4, s.b, t),
-    ]
-    .into_iter()
-    .find(|(o, p, seg)| *o == Collinear && seg.contains_collinear(*p));
+    let touching = [(o1, t.a, s), (o2, t.b, s), (o3, s.a, t), (o4, s.b, t)]
+        .into_iter()
+        .find(|(o, p, seg)| *o == Collinear && seg.contains_collinear(*p));
     match touching {
         Some((_, at, _)) => SegmentIntersection::Touching { at },
         None => SegmentIntersection::None,
@@ -110,8 +105,16 @@ fn collinear_overlap(s: &Segment, t: &Segment) -> SegmentIntersection {
     } else {
         (t.a, t.b)
     };
-    let start = if cmp(s.a, t_lo) == Ordering::Less { t_lo } else { s.a };
-    let end = if cmp(s.b, t_hi) == Ordering::Greater { t_hi } else { s.b };
+    let start = if cmp(s.a, t_lo) == Ordering::Less {
+        t_lo
+    } else {
+        s.a
+    };
+    let end = if cmp(s.b, t_hi) == Ordering::Greater {
+        t_hi
+    } else {
+        s.b
+    };
     match cmp(start, end) {
         Ordering::Less => SegmentIntersection::Overlap { start, end },
         Ordering::Equal => SegmentIntersection::Touching { at: start },

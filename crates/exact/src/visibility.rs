@@ -75,7 +75,9 @@ pub fn sees(ring: &[Point], p: &RatPoint, q: &RatPoint) -> Sight {
     }
     for i in 0..ring.len() {
         let (a, b) = (ring[i], ring[(i + 1) % ring.len()]);
-        let Some(edge) = Line::new(a, b) else { continue };
+        let Some(edge) = Line::new(a, b) else {
+            continue;
+        };
         if meets_beyond_endpoints(&edge, p, q) {
             return Sight::Blocked { edge: i };
         }
@@ -124,7 +126,10 @@ fn meets_beyond_endpoints(edge: &Line, p: &RatPoint, q: &RatPoint) -> bool {
         return true; // a vertex of the edge lies on pq and is neither p nor q
     }
     let opposite = |x: Side, y: Side| {
-        matches!((x, y), (Side::Left, Side::Right) | (Side::Right, Side::Left))
+        matches!(
+            (x, y),
+            (Side::Left, Side::Right) | (Side::Right, Side::Left)
+        )
     };
     let opposite_o = |x: Orientation, y: Orientation| {
         matches!(

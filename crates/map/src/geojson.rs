@@ -65,7 +65,10 @@ fn find_polygon<'a>(
             }
             Value::Array(polys) => Err(structure(
                 path,
-                &format!("expected one polygon, found a MultiPolygon of {}", polys.len()),
+                &format!(
+                    "expected one polygon, found a MultiPolygon of {}",
+                    polys.len()
+                ),
             )),
             _ => Err(structure(path, "expected an array of polygons")),
         },

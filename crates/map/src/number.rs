@@ -91,7 +91,7 @@ pub fn format_exact(v: &Rational) -> String {
     let fives = d.remove_factor_mut(&Integer::from(5));
     if d == 1 {
         let k = twos.max(fives);
-        let scaled = Integer::from(v.numer() * Integer::from(Integer::u_pow_u(10, k))) / den;
+        let scaled = v.numer() * Integer::from(Integer::u_pow_u(10, k)) / den;
         let sign = if scaled < 0 { "-" } else { "" };
         let digits = scaled.abs().to_string();
         let k = k as usize;
@@ -112,9 +112,14 @@ pub(crate) struct RawCoord {
 ///
 /// Returns the integer points (pairs of consecutive coordinates) and the
 /// scale, or every coordinate that ends up beyond [`MAX_COORD_BITS`].
-pub(crate) fn scale_to_integers(coords: &[RawCoord]) -> Result<(Vec<Point>, Integer), Vec<MapError>> {
+pub(crate) fn scale_to_integers(
+    coords: &[RawCoord],
+) -> Result<(Vec<Point>, Integer), Vec<MapError>> {
     let mut lcm = Integer::from(1);
-    let max_den_bits = coords.iter().map(|c| c.value.denom().significant_bits()).max();
+    let max_den_bits = coords
+        .iter()
+        .map(|c| c.value.denom().significant_bits())
+        .max();
     // Any non-zero coordinate scales to at least lcm / its denominator, so a
     // common denominator beyond 2^(MAX + max denominator bits) cannot fit.
     let lcm_cap = u64::from(MAX_COORD_BITS) + u64::from(max_den_bits.unwrap_or(0)) + 1;
@@ -131,7 +136,7 @@ pub(crate) fn scale_to_integers(coords: &[RawCoord]) -> Result<(Vec<Point>, Inte
     let mut errors = Vec::new();
     let mut ints = Vec::with_capacity(coords.len());
     for c in coords {
-        let v = Integer::from(c.value.numer() * Integer::from(&lcm / c.value.denom()));
+        let v = c.value.numer() * Integer::from(&lcm / c.value.denom());
         let bits = v.significant_bits();
         if bits > MAX_COORD_BITS {
             errors.push(MapError::CoordinateTooLarge {

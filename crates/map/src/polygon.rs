@@ -82,7 +82,11 @@ impl Map {
         loop {
             let m = index.len();
             let straight = (0..m).find(|&k| {
-                let (a, b, c) = (ring[index[(k + m - 1) % m]], ring[index[k]], ring[index[(k + 1) % m]]);
+                let (a, b, c) = (
+                    ring[index[(k + m - 1) % m]],
+                    ring[index[k]],
+                    ring[index[(k + 1) % m]],
+                );
                 orientation(a, b, c) == Orientation::Collinear
             });
             match straight {
@@ -124,8 +128,11 @@ impl Map {
         let n = vertices.len();
         let reflex = (0..n)
             .filter(|&i| {
-                orientation(vertices[(i + n - 1) % n], vertices[i], vertices[(i + 1) % n])
-                    == Orientation::Clockwise
+                orientation(
+                    vertices[(i + n - 1) % n],
+                    vertices[i],
+                    vertices[(i + 1) % n],
+                ) == Orientation::Clockwise
             })
             .collect();
         Map {
@@ -201,7 +208,8 @@ impl Map {
 
     /// Whether every edge is horizontal or vertical.
     pub fn is_orthogonal(&self) -> bool {
-        self.edges().all(|e| e.a().x == e.b().x || e.a().y == e.b().y)
+        self.edges()
+            .all(|e| e.a().x == e.b().x || e.a().y == e.b().y)
     }
 
     /// The least and greatest corner of the bounding box.

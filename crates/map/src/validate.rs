@@ -4,8 +4,8 @@ use crate::error::{IntersectionKind, MapError, Position};
 use rug::{Integer, Rational};
 use std::collections::HashMap;
 use wai_exact::{
-    classify_segments, construct_intersection, orientation, Orientation, Point, RatPoint,
-    Segment, SegmentIntersection,
+    classify_segments, construct_intersection, orientation, Orientation, Point, RatPoint, Segment,
+    SegmentIntersection,
 };
 
 /// Every problem of `ring` as the boundary of a map (coordinates in input

@@ -104,7 +104,10 @@ impl Canvas {
 
     /// The finished SVG document, with `title` and a caption line.
     pub fn finish(self, title: &str, caption: &str) -> String {
-        let (w, h) = (self.width + 2.0 * self.margin, self.height + 2.0 * self.margin + 18.0);
+        let (w, h) = (
+            self.width + 2.0 * self.margin,
+            self.height + 2.0 * self.margin + 18.0,
+        );
         format!(
             concat!(
                 r#"<svg xmlns="http://www.w3.org/2000/svg" width="{w:.0}" height="{h:.0}" viewBox="0 0 {w:.2} {h:.2}">"#,
@@ -125,7 +128,10 @@ impl Canvas {
 }
 
 fn escape(s: &str) -> String {
-    s.replace('&', "&amp;").replace('<', "&lt;").replace('>', "&gt;").replace('"', "&quot;")
+    s.replace('&', "&amp;")
+        .replace('<', "&lt;")
+        .replace('>', "&gt;")
+        .replace('"', "&quot;")
 }
 
 /// What [`map_svg`] draws.
@@ -159,7 +165,12 @@ pub fn map_svg(map: &Map, style: &MapStyle) -> String {
             ("#1f3b73", "convex")
         };
         let r = if map.is_reflex(i) { dot * 1.6 } else { dot };
-        c.dot(p, r, fill, &format!("vertex {i} {} ({kind})", coordinate_text(p, map.scale())));
+        c.dot(
+            p,
+            r,
+            fill,
+            &format!("vertex {i} {} ({kind})", coordinate_text(p, map.scale())),
+        );
         if style.vertex_labels {
             c.label(p, &i.to_string(), 10.0);
         }
@@ -179,6 +190,7 @@ pub fn map_svg(map: &Map, style: &MapStyle) -> String {
 }
 
 fn coordinate_text(p: Point, scale: &Integer) -> String {
-    let q = |v: i128| wai_map::format_exact(&rug::Rational::from((Integer::from(v), scale.clone())));
+    let q =
+        |v: i128| wai_map::format_exact(&rug::Rational::from((Integer::from(v), scale.clone())));
     format!("({}, {})", q(p.x), q(p.y))
 }

@@ -1,1 +1,265 @@
+//! End-to-end tests of the `wai` binary: every bad input gives one clear
+//! message naming what and where, a non-zero exit and no panic.
 
+use std::io::Write;
+use std::process::{Command, Output, Stdio};
+
+fn wai(args: &[&str], stdin: &[u8]) -> Output {
+    let mut child = Command::new(env!("CARGO_BIN_EXE_wai"))
+        .args(args)
+        .stdin(Stdio::piped())
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .expect("the wai binary runs");
+    child.stdin.take().unwrap().write_all(stdin).unwrap();
+    child.wait_with_output().unwrap()
+}
+
+fn text(bytes: &[u8]) -> String {
+    String::from_utf8_lossy(bytes).into_owned()
+}
+
+/// `wai info -` on `input` must fail with exit code `code` and a message
+/// containing every one of `needles`.
+fn check_rejected(input: &[u8], code: i32, needles: &[&str]) {
+    let out = wai(&["info", "-"], input);
+    let err = text(&out.stderr);
+    assert_eq!(
+        out.status.code(),
+        Some(code),
+        "input {:?}\nstderr: {err}",
+        text(input)
+    );
+    assert!(!err.contains("panicked"), "{err}");
+    assert!(err.starts_with("error: "), "{err}");
+    for n in needles {
+        assert!(err.contains(n), "missing {n:?} in: {err}");
+    }
+    assert!(out.stdout.is_empty(), "nothing on stdout when failing");
+}
+
+fn map(vertices: &str) -> Vec<u8> {
+    format!(r#"{{"name": "t", "outer": {vertices}}}"#).into_bytes()
+}
+
+#[test]
+fn self_intersecting_map() {
+    check_rejected(
+        &map(r#"[["0","0"],["2","2"],["2","0"],["0","2"]]"#),
+        1,
+        &["not simple", "edges 0 and 2 cross at (1, 1)"],
+    );
+}
+
+#[test]
+fn map_touching_itself_at_a_vertex() {
+    check_rejected(
+        &map(r#"[["0","0"],["4","0"],["4","4"],["3","4"],["2","0"],["1","4"],["0","4"]]"#),
+        1,
+        &[
+            "edges 0 and 3 touch at (2, 0)",
+            "edges 0 and 4 touch at (2, 0)",
+        ],
+    );
+}
+
+#[test]
+fn repeated_vertices() {
+    check_rejected(
+        &map(r#"[["0","0"],["4","0"],["4","4"],["4","0"],["0","4"]]"#),
+        1,
+        &["vertex 3 repeats vertex 1 at (4, 0)"],
+    );
+}
+
+#[test]
+fn fewer_than_three_vertices() {
+    check_rejected(
+        &map(r#"[["0","0"],["4","0"]]"#),
+        1,
+        &["at least 3 distinct vertices; found 2"],
+    );
+}
+
+#[test]
+fn all_vertices_on_one_line() {
+    check_rejected(
+        &map(r#"[["0","0"],["1","1"],["2","2"],["5","5"]]"#),
+        1,
+        &["zero area", "one line"],
+    );
+}
+
+#[test]
+fn malformed_json() {
+    check_rejected(
+        b"{\"outer\": [[\"0\", \"0\"],\n  [1 2]]}",
+        1,
+        &["malformed JSON at line 2, column"],
+    );
+}
+
+#[test]
+fn empty_input() {
+    check_rejected(b"", 1, &["empty input"]);
+}
+
+#[test]
+fn binary_input() {
+    check_rejected(
+        &[0x1f, 0x8b, 0x08, 0x00, 0xff, 0xfe, 0xfd],
+        1,
+        &["not UTF-8", "offset 1"],
+    );
+}
+
+#[test]
+fn not_a_number() {
+    check_rejected(
+        &map(r#"[["0","0"],["NaN","0"],["0","1"]]"#),
+        1,
+        &["outer[1][0]", "\"NaN\" is not an exact number"],
+    );
+}
+
+#[test]
+fn zero_denominator() {
+    check_rejected(
+        &map(r#"[["0","0"],["1","0"],["0","1/0"]]"#),
+        1,
+        &["outer[2][1]", "zero denominator"],
+    );
+}
+
+#[test]
+fn absurdly_large_coordinates() {
+    let big = "9".repeat(200);
+    check_rejected(
+        &map(&format!(r#"[["0","0"],["{big}","0"],["0","1"]]"#)),
+        1,
+        &["outer[1][0]", "coordinate too large", "at most 100"],
+    );
+    let huge = "9".repeat(5000);
+    check_rejected(
+        &map(&format!(r#"[["0","0"],["{huge}","0"],["0","1"]]"#)),
+        1,
+        &["outer[1][0]", "longer than 1000"],
+    );
+}
+
+#[test]
+fn exponents_and_floats_are_refused() {
+    check_rejected(
+        &map(r#"[[0,0],[1e2,0],[0,1]]"#),
+        1,
+        &["outer[1][0]", "exponent notation"],
+    );
+}
+
+#[test]
+fn holes_are_a_clear_error() {
+    check_rejected(
+        br#"{"outer": [["0","0"],["9","0"],["0","9"]], "holes": [[["1","1"],["1","2"],["2","1"]]]}"#,
+        1,
+        &["holes are not supported yet"],
+    );
+}
+
+#[test]
+fn missing_file() {
+    let out = wai(&["info", "/nonexistent/map.json"], b"");
+    assert_eq!(out.status.code(), Some(3));
+    assert!(text(&out.stderr).contains("/nonexistent/map.json"));
+}
+
+#[test]
+fn clockwise_map_is_accepted_and_normalised() {
+    let out = wai(
+        &["info", "-"],
+        &map(r#"[["0","0"],["0","3"],["4","3"],["4","0"]]"#),
+    );
+    assert!(out.status.success());
+    let err = text(&out.stderr);
+    assert!(
+        err.contains("clockwise; reversed to counter-clockwise"),
+        "{err}"
+    );
+    assert!(text(&out.stdout).contains("vertices n:   4"));
+}
+
+#[test]
+fn collinear_vertices_are_removed_with_a_note() {
+    let out = wai(
+        &["info", "-"],
+        &map(r#"[["0","0"],["2","0"],["4","0"],["4","3"],["0","3"]]"#),
+    );
+    assert!(out.status.success());
+    let err = text(&out.stderr);
+    assert!(
+        err.contains("removed 1 vertex(es) with a straight (180°) angle, at input positions 1"),
+        "{err}"
+    );
+    assert!(text(&out.stdout).contains("vertices n:   4"));
+}
+
+#[test]
+fn info_json_is_exact() {
+    let out = wai(
+        &["info", "--json", "-"],
+        &map(r#"[["0","0"],["1.5","0"],["1.5","1/3"],["0","1/3"]]"#),
+    );
+    assert!(out.status.success(), "{}", text(&out.stderr));
+    let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    assert_eq!(v["n"], 4);
+    assert_eq!(v["r"], 0);
+    assert_eq!(v["area"], "0.5");
+    assert_eq!(v["scale"], "6");
+    assert_eq!(v["orthogonal"], true);
+}
+
+#[test]
+fn geojson_is_detected() {
+    let gj =
+        br#"{"type": "Polygon", "coordinates": [[[0,0],[4,0],[4,2],[2,2],[2,4],[0,4],[0,0]]]}"#;
+    let out = wai(&["info", "-"], gj);
+    assert!(out.status.success(), "{}", text(&out.stderr));
+    assert!(text(&out.stdout).contains("reflex r:     1  [3]"));
+}
+
+#[test]
+fn render_writes_svg() {
+    let out = wai(
+        &["render", "--labels", "-"],
+        &map(r#"[["0","0"],["4","0"],["4","2"],["2","2"],["2","4"],["0","4"]]"#),
+    );
+    assert!(out.status.success());
+    let svg = text(&out.stdout);
+    assert!(svg.starts_with("<svg") && svg.contains("(reflex)"));
+}
+
+#[test]
+fn demo_runs_on_the_built_in_map() {
+    let dir = std::env::temp_dir().join(format!("wai-demo-test-{}", std::process::id()));
+    let out = wai(&["demo", "--out", dir.to_str().unwrap()], b"");
+    assert!(out.status.success(), "{}", text(&out.stderr));
+    let stdout = text(&out.stdout);
+    assert!(
+        stdout.contains("vertices n:   44") && stdout.contains("reflex r:     20"),
+        "{stdout}"
+    );
+    let written = std::fs::read(dir.join("office-floor.json")).unwrap();
+    let back = wai(&["info", "-"], &written);
+    assert!(back.status.success());
+    assert!(dir.join("office-floor.svg").exists());
+    std::fs::remove_dir_all(dir).ok();
+}
+
+#[test]
+fn gen_usage_errors_are_clear() {
+    let out = wai(&["gen", "--family", "no-such-family"], b"");
+    assert_eq!(out.status.code(), Some(2));
+    assert!(text(&out.stderr).contains("no-such-family"));
+    let out = wai(&["info"], b"");
+    assert_eq!(out.status.code(), Some(2));
+}

@@ -1,1 +1,7 @@
+//! Integration tests of `wai-gen`: one binary (STYLE.md 11).
 
+mod common;
+mod exhaustive;
+mod families;
+mod random;
+mod strategies;

@@ -8,8 +8,14 @@ use wai_map::json::from_json;
 use wai_map::{parse_exact, MapError};
 
 fn dataset_dir(sub: &str) -> PathBuf {
-    let dir = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../../../shared/datasets").join(sub);
-    assert!(dir.is_dir(), "dataset folder {} is missing: the tests need shared/ beside the checkout", dir.display());
+    let dir = PathBuf::from(env!("CARGO_MANIFEST_DIR"))
+        .join("../../../shared/datasets")
+        .join(sub);
+    assert!(
+        dir.is_dir(),
+        "dataset folder {} is missing: the tests need shared/ beside the checkout",
+        dir.display()
+    );
     dir
 }
 
@@ -34,9 +40,24 @@ fn check_exact(sub: &str, expected_files: usize) {
         let meta = &raw["meta"];
         let (map, norm) = (&loaded.map, &loaded.normalisation);
         assert!(norm.is_identity(), "{}: {norm:?}", path.display());
-        assert_eq!(map.n() as u64, meta["vertices_outer"].as_u64().unwrap(), "{}", path.display());
-        assert_eq!(map.r() as u64, meta["reflex_outer"].as_u64().unwrap(), "{}", path.display());
-        assert_eq!(map.is_orthogonal(), meta["orthogonal"].as_bool().unwrap(), "{}", path.display());
+        assert_eq!(
+            map.n() as u64,
+            meta["vertices_outer"].as_u64().unwrap(),
+            "{}",
+            path.display()
+        );
+        assert_eq!(
+            map.r() as u64,
+            meta["reflex_outer"].as_u64().unwrap(),
+            "{}",
+            path.display()
+        );
+        assert_eq!(
+            map.is_orthogonal(),
+            meta["orthogonal"].as_bool().unwrap(),
+            "{}",
+            path.display()
+        );
         // Every vertex equals the source's exact value.
         let outer = raw["outer"].as_array().unwrap();
         for (p, src) in map.vertices().iter().zip(outer) {

@@ -46,7 +46,9 @@ fn structure_errors_name_the_path() {
             message: "expected an object with an \"outer\" ring".into()
         }]
     );
-    assert!(matches!(&errors_of("{\"name\": \"x\"}")[..], [MapError::Structure { path, .. }] if path == "$"));
+    assert!(
+        matches!(&errors_of("{\"name\": \"x\"}")[..], [MapError::Structure { path, .. }] if path == "$")
+    );
     assert!(matches!(
         &errors_of("{\"outer\": [[\"0\", \"0\"], [\"1\"], [\"0\", \"1\"]]}")[..],
         [MapError::Structure { path, .. }] if path == "outer[1]"
@@ -81,30 +83,47 @@ fn every_bad_number_is_reported_with_its_path() {
 #[test]
 fn absurdly_large_coordinates() {
     let big = format!("1{}", "0".repeat(40));
-    let e = errors_of(&format!(r#"{{"outer": [["0", "0"], ["{big}", "0"], ["0", "1"]]}}"#));
+    let e = errors_of(&format!(
+        r#"{{"outer": [["0", "0"], ["{big}", "0"], ["0", "1"]]}}"#
+    ));
     assert!(matches!(
         &e[..],
         [MapError::CoordinateTooLarge { path, bits: 133, max: 100 }] if path == "outer[1][0]"
     ));
     // Small values with a common denominator too large to scale to 100 bits.
-    let e = errors_of(r#"{"outer": [["1/3", "0"], ["1", "1/1267650600228229401496703205376"], ["0", "1"]]}"#);
-    assert!(!e.is_empty() && e.iter().all(|e| matches!(e, MapError::CoordinateTooLarge { .. })), "{e:?}");
+    let e = errors_of(
+        r#"{"outer": [["1/3", "0"], ["1", "1/1267650600228229401496703205376"], ["0", "1"]]}"#,
+    );
+    assert!(
+        !e.is_empty()
+            && e.iter()
+                .all(|e| matches!(e, MapError::CoordinateTooLarge { .. })),
+        "{e:?}"
+    );
 }
 
 #[test]
 fn holes_are_not_supported_yet() {
-    let e = errors_of(r#"{"outer": [["0","0"],["9","0"],["0","9"]], "holes": [[["1","1"],["1","2"],["2","1"]]]}"#);
+    let e = errors_of(
+        r#"{"outer": [["0","0"],["9","0"],["0","9"]], "holes": [[["1","1"],["1","2"],["2","1"]]]}"#,
+    );
     assert_eq!(e, vec![MapError::HolesNotSupported { count: 1 }]);
 }
 
 #[test]
 fn fewer_than_three_distinct_vertices() {
-    assert_eq!(validate_all(&ring(&[(0, 0), (1, 1)])), vec![MapError::TooFewVertices { found: 2 }]);
+    assert_eq!(
+        validate_all(&ring(&[(0, 0), (1, 1)])),
+        vec![MapError::TooFewVertices { found: 2 }]
+    );
     assert_eq!(
         validate_all(&ring(&[(0, 0), (1, 1), (0, 0)])),
         vec![MapError::TooFewVertices { found: 2 }]
     );
-    assert_eq!(errors_of(r#"{"outer": []}"#), vec![MapError::TooFewVertices { found: 0 }]);
+    assert_eq!(
+        errors_of(r#"{"outer": []}"#),
+        vec![MapError::TooFewVertices { found: 0 }]
+    );
 }
 
 #[test]
@@ -123,7 +142,12 @@ fn repeated_vertices() {
     let e = errors_of(r#"{"outer": [["0","0"],["1","0"],["0","1"],["0","0"]]}"#);
     assert_eq!(
         e,
-        vec![MapError::RepeatedVertex { first: 0, second: 3, at: pos((0, 1), (0, 1)), closing: true }]
+        vec![MapError::RepeatedVertex {
+            first: 0,
+            second: 3,
+            at: pos((0, 1), (0, 1)),
+            closing: true
+        }]
     );
     assert!(e[0].to_string().contains("rings are open"));
 }
@@ -141,18 +165,39 @@ fn self_intersection_names_both_edges_and_the_point() {
             at: pos((1, 2), (1, 2))
         }]
     );
-    assert_eq!(e[0].to_string(), "the map is not simple: edges 0 and 2 cross at (0.5, 0.5)");
+    assert_eq!(
+        e[0].to_string(),
+        "the map is not simple: edges 0 and 2 cross at (0.5, 0.5)"
+    );
 }
 
 #[test]
 fn touching_itself_at_a_vertex() {
     // Vertex 4 = (2, 0) lies on edge 0 from (0, 0) to (4, 0).
-    let e = validate_all(&ring(&[(0, 0), (4, 0), (4, 4), (3, 4), (2, 0), (1, 4), (0, 4)]));
+    let e = validate_all(&ring(&[
+        (0, 0),
+        (4, 0),
+        (4, 4),
+        (3, 4),
+        (2, 0),
+        (1, 4),
+        (0, 4),
+    ]));
     assert_eq!(
         e,
         vec![
-            MapError::SelfIntersection { edge_a: 0, edge_b: 3, kind: IntersectionKind::Touching, at: pos((2, 1), (0, 1)) },
-            MapError::SelfIntersection { edge_a: 0, edge_b: 4, kind: IntersectionKind::Touching, at: pos((2, 1), (0, 1)) },
+            MapError::SelfIntersection {
+                edge_a: 0,
+                edge_b: 3,
+                kind: IntersectionKind::Touching,
+                at: pos((2, 1), (0, 1))
+            },
+            MapError::SelfIntersection {
+                edge_a: 0,
+                edge_b: 4,
+                kind: IntersectionKind::Touching,
+                at: pos((2, 1), (0, 1))
+            },
         ]
     );
 }
@@ -161,17 +206,23 @@ fn touching_itself_at_a_vertex() {
 fn edges_folding_back_overlap() {
     // A spike: (4, 0) -> (6, 0) -> (5, 0) runs back along itself.
     let e = validate_all(&ring(&[(0, 0), (6, 0), (5, 0), (5, 3), (0, 3)]));
-    assert!(e.contains(&MapError::SelfIntersection {
-        edge_a: 0,
-        edge_b: 1,
-        kind: IntersectionKind::Overlap,
-        at: pos((5, 1), (0, 1))
-    }), "{e:?}");
+    assert!(
+        e.contains(&MapError::SelfIntersection {
+            edge_a: 0,
+            edge_b: 1,
+            kind: IntersectionKind::Overlap,
+            at: pos((5, 1), (0, 1))
+        }),
+        "{e:?}"
+    );
 }
 
 #[test]
 fn all_vertices_on_one_line() {
-    assert_eq!(validate_all(&ring(&[(0, 0), (1, 1), (3, 3), (2, 2)])), vec![MapError::ZeroArea { n: 4 }]);
+    assert_eq!(
+        validate_all(&ring(&[(0, 0), (1, 1), (3, 3), (2, 2)])),
+        vec![MapError::ZeroArea { n: 4 }]
+    );
     assert_eq!(
         errors_of(r#"{"outer": [["0","0"],["1","0"],["2","0"]]}"#),
         vec![MapError::ZeroArea { n: 3 }]
@@ -181,14 +232,43 @@ fn all_vertices_on_one_line() {
 #[test]
 fn validate_all_reports_every_problem() {
     // Two separate crossings and a repeated vertex in one ring.
-    let e = validate_all(&ring(&[(0, 0), (2, 2), (2, 0), (0, 2), (0, 5), (2, 7), (2, 5), (0, 7), (-3, 7), (-3, 0), (2, 2)]));
-    let crossings = e.iter().filter(|e| matches!(e, MapError::SelfIntersection { kind: IntersectionKind::Crossing, .. })).count();
-    let repeats = e.iter().filter(|e| matches!(e, MapError::RepeatedVertex { .. })).count();
+    let e = validate_all(&ring(&[
+        (0, 0),
+        (2, 2),
+        (2, 0),
+        (0, 2),
+        (0, 5),
+        (2, 7),
+        (2, 5),
+        (0, 7),
+        (-3, 7),
+        (-3, 0),
+        (2, 2),
+    ]));
+    let crossings = e
+        .iter()
+        .filter(|e| {
+            matches!(
+                e,
+                MapError::SelfIntersection {
+                    kind: IntersectionKind::Crossing,
+                    ..
+                }
+            )
+        })
+        .count();
+    let repeats = e
+        .iter()
+        .filter(|e| matches!(e, MapError::RepeatedVertex { .. }))
+        .count();
     assert!(crossings >= 2 && repeats == 1, "{e:?}");
 }
 
 #[test]
 fn from_ring_rejects_what_validate_all_reports() {
     let bad = ring(&[(0, 0), (1, 1), (1, 0), (0, 1)]);
-    assert_eq!(Map::from_ring(bad.clone()).unwrap_err().0, validate_all(&bad));
+    assert_eq!(
+        Map::from_ring(bad.clone()).unwrap_err().0,
+        validate_all(&bad)
+    );
 }

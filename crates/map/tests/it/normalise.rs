@@ -30,7 +30,16 @@ fn straight_vertices_are_removed() {
 #[test]
 fn straight_first_vertex_and_chains_are_removed() {
     // Vertex 0 is straight, and so is a chain of three on the top edge.
-    let input = ring(&[(2, 0), (4, 0), (4, 4), (3, 4), (2, 4), (1, 4), (0, 4), (0, 0)]);
+    let input = ring(&[
+        (2, 0),
+        (4, 0),
+        (4, 4),
+        (3, 4),
+        (2, 4),
+        (1, 4),
+        (0, 4),
+        (0, 0),
+    ]);
     let (map, norm) = Map::from_ring(input).unwrap();
     assert_eq!(norm.removed_collinear, vec![0, 3, 4, 5]);
     assert_eq!(map.n(), 4);

@@ -29,13 +29,49 @@ fn rejected_syntax() {
     check("-inf", Err(NumberError::NotFinite));
     check("Infinity", Err(NumberError::NotFinite));
     check("1/0", Err(NumberError::ZeroDenominator));
-    check("1/-2", Err(NumberError::Unexpected { found: '-', position: 2 }));
-    check(" 1", Err(NumberError::Unexpected { found: ' ', position: 0 }));
+    check(
+        "1/-2",
+        Err(NumberError::Unexpected {
+            found: '-',
+            position: 2,
+        }),
+    );
+    check(
+        " 1",
+        Err(NumberError::Unexpected {
+            found: ' ',
+            position: 0,
+        }),
+    );
     check("1.", Err(NumberError::Empty));
-    check(".5", Err(NumberError::Unexpected { found: '.', position: 0 }));
-    check("0x10", Err(NumberError::Unexpected { found: 'x', position: 1 }));
-    check("1.2.3", Err(NumberError::Unexpected { found: '.', position: 3 }));
-    check("--1", Err(NumberError::Unexpected { found: '-', position: 1 }));
+    check(
+        ".5",
+        Err(NumberError::Unexpected {
+            found: '.',
+            position: 0,
+        }),
+    );
+    check(
+        "0x10",
+        Err(NumberError::Unexpected {
+            found: 'x',
+            position: 1,
+        }),
+    );
+    check(
+        "1.2.3",
+        Err(NumberError::Unexpected {
+            found: '.',
+            position: 3,
+        }),
+    );
+    check(
+        "--1",
+        Err(NumberError::Unexpected {
+            found: '-',
+            position: 1,
+        }),
+    );
     check(&"9".repeat(1001), Err(NumberError::TooLong { max: 1000 }));
 }
 

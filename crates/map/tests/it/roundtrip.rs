@@ -13,12 +13,19 @@ fn round_trip(map: &Map) {
 
 #[test]
 fn exact_decimals_and_fractions_survive() {
-    let text = r#"{"name": "mixed", "outer": [["0.1", "0"], ["7/3", "0"], [2, "1.25"], ["-1/7", "3"]]}"#;
+    let text =
+        r#"{"name": "mixed", "outer": [["0.1", "0"], ["7/3", "0"], [2, "1.25"], ["-1/7", "3"]]}"#;
     let loaded = from_json(text.as_bytes()).unwrap();
     assert_eq!(*loaded.map.scale(), 420); // lcm(10, 3, 4, 7)
     let written = to_json(&loaded.map);
-    assert!(written.contains(r#"["0.1", "0"]"#) && written.contains(r#"["7/3", "0"]"#), "{written}");
-    assert!(written.contains(r#"["-1/7", "3"]"#) && written.contains(r#"["2", "1.25"]"#), "{written}");
+    assert!(
+        written.contains(r#"["0.1", "0"]"#) && written.contains(r#"["7/3", "0"]"#),
+        "{written}"
+    );
+    assert!(
+        written.contains(r#"["-1/7", "3"]"#) && written.contains(r#"["2", "1.25"]"#),
+        "{written}"
+    );
     round_trip(&loaded.map);
 }
 
@@ -33,7 +40,10 @@ fn json_numbers_are_read_exactly() {
     let text = r#"{"outer": [[0, 0], [0.1, 0], [0.1, 0.30000000000000004]]}"#;
     let m = from_json(text.as_bytes()).unwrap().map;
     // The least common denominator of 1/10 and 30000000000000004/10^17.
-    assert_eq!(*m.scale(), rug::Integer::from(25) * rug::Integer::from(rug::Integer::u_pow_u(10, 15)));
+    assert_eq!(
+        *m.scale(),
+        rug::Integer::from(25) * rug::Integer::from(rug::Integer::u_pow_u(10, 15))
+    );
     round_trip(&m);
 }
 

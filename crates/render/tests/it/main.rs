@@ -6,12 +6,21 @@ use wai_render::{map_svg, MapStyle};
 
 fn l_shape() -> Map {
     let ring = [(0, 0), (4, 0), (4, 2), (2, 2), (2, 4), (0, 4)].map(|(x, y)| Point::new(x, y));
-    Map::from_ring(ring.to_vec()).unwrap().0.with_name("L <room>")
+    Map::from_ring(ring.to_vec())
+        .unwrap()
+        .0
+        .with_name("L <room>")
 }
 
 #[test]
 fn map_picture_marks_reflex_vertices() {
-    let svg = map_svg(&l_shape(), &MapStyle { vertex_labels: true, ..MapStyle::default() });
+    let svg = map_svg(
+        &l_shape(),
+        &MapStyle {
+            vertex_labels: true,
+            ..MapStyle::default()
+        },
+    );
     assert!(svg.starts_with("<svg") && svg.trim_end().ends_with("</svg>"));
     assert_eq!(svg.matches("<circle").count(), 6);
     assert_eq!(svg.matches("(reflex)").count(), 1);

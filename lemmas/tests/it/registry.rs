@@ -1,0 +1,225 @@
+//! The `CLAIMS` table against `shared/CLAIMS.md` (STYLE.md 15).
+
+use std::collections::{BTreeMap, BTreeSet};
+
+use wai_lemmas::{claim, claims_without_checker, Kind, Status, CLAIMS};
+
+/// Claims whose checker module has landed. Add an id here when its row in
+/// `CLAIMS` becomes `Status::Checker`.
+const WITH_CHECKER: &[&str] = &[];
+
+/// The (id, kind) of every row of every table of `CLAIMS.md` whose header's
+/// first cell is `id`, in file order.
+fn catalogue() -> Vec<(String, String)> {
+    let text = crate::read_shared("CLAIMS.md");
+    let mut rows = Vec::new();
+    let mut in_claims_table = false;
+    for line in text.lines() {
+        let line = line.trim();
+        if !line.starts_with('|') {
+            in_claims_table = false;
+            continue;
+        }
+        let cells: Vec<&str> = line.trim_matches('|').split('|').map(str::trim).collect();
+        if cells
+            .iter()
+            .all(|c| !c.is_empty() && c.chars().all(|ch| "-: ".contains(ch)))
+        {
+            continue; // the separator row
+        }
+        if cells.first() == Some(&"id") {
+            assert_eq!(cells.get(1), Some(&"kind"), "claims table header: {line}");
+            in_claims_table = true;
+            continue;
+        }
+        assert!(
+            in_claims_table,
+            "a table row outside a claims table: {line}"
+        );
+        assert!(
+            cells.len() >= 2,
+            "a claims row with fewer than 2 cells: {line}"
+        );
+        rows.push((cells[0].to_owned(), cells[1].to_owned()));
+    }
+    rows
+}
+
+#[test]
+fn claims_md_has_the_expected_tables() {
+    let rows = catalogue();
+    // 16 claims in chapter 3, 18 in chapter 4, 18 in chapter 5 when this was
+    // written; the exact set is compared below, this only guards the parser.
+    assert!(
+        rows.len() >= 50,
+        "parsed only {} rows of CLAIMS.md",
+        rows.len()
+    );
+    for (id, _) in &rows {
+        assert!(
+            id.len() >= 3 && id.starts_with(|c: char| c.is_ascii_uppercase()),
+            "not an id: {id:?}"
+        );
+    }
+}
+
+#[test]
+fn claims_md_ids_are_unique() {
+    let mut seen = BTreeSet::new();
+    for (id, _) in catalogue() {
+        assert!(seen.insert(id.clone()), "{id} appears twice in CLAIMS.md");
+    }
+}
+
+#[test]
+fn registry_ids_are_unique() {
+    let mut seen = BTreeSet::new();
+    for c in CLAIMS {
+        assert!(seen.insert(c.id), "{} appears twice in CLAIMS", c.id);
+    }
+}
+
+#[test]
+fn registry_and_claims_md_have_the_same_ids_and_kinds() {
+    let md: BTreeMap<String, String> = catalogue().into_iter().collect();
+    let missing: Vec<&String> = md.keys().filter(|id| claim(id).is_none()).collect();
+    let extra: Vec<&str> = CLAIMS
+        .iter()
+        .map(|c| c.id)
+        .filter(|id| !md.contains_key(*id))
+        .collect();
+    assert!(
+        missing.is_empty(),
+        "ids of CLAIMS.md missing from CLAIMS: {missing:?}"
+    );
+    assert!(
+        extra.is_empty(),
+        "ids of CLAIMS not in CLAIMS.md: {extra:?}"
+    );
+    for (id, kind) in &md {
+        let parsed = Kind::from_catalogue_str(kind)
+            .unwrap_or_else(|| panic!("{id}: unknown kind {kind:?} in CLAIMS.md"));
+        let row = claim(id).expect("checked above");
+        assert_eq!(
+            row.kind, parsed,
+            "{id}: CLAIMS says {}, CLAIMS.md says {kind}",
+            row.kind
+        );
+    }
+}
+
+#[test]
+fn registry_follows_the_order_of_claims_md() {
+    let md: Vec<String> = catalogue().into_iter().map(|(id, _)| id).collect();
+    let ours: Vec<&str> = CLAIMS.iter().map(|c| c.id).collect();
+    assert_eq!(ours, md);
+}
+
+/// The reference names the statement the id's letter stands for and
+/// contains the id's number, and that statement exists in the thesis.
+#[test]
+fn references_match_the_ids_and_the_thesis() {
+    let thesis = crate::read_shared("thesis.md");
+    for c in CLAIMS {
+        assert!(!c.statement.trim().is_empty(), "{}: empty statement", c.id);
+        let number: String = c.id[1..]
+            .trim_end_matches(|ch: char| ch.is_ascii_lowercase())
+            .to_owned();
+        assert!(
+            c.reference.contains(&number),
+            "{}: reference {:?} does not contain {number}",
+            c.id,
+            c.reference
+        );
+        let word = match &c.id[..1] {
+            "L" => "Lemma",
+            "T" => "Theorem",
+            "C" => "Corollary",
+            "D" => "Definition",
+            "R" => "Remark",
+            "O" => "Observation",
+            "E" => "Fig",
+            other => panic!("{}: unknown id prefix {other}", c.id),
+        };
+        assert!(
+            c.reference.contains(word),
+            "{}: reference {:?} does not name a {word}",
+            c.id,
+            c.reference
+        );
+        if word != "Fig" {
+            let heading = format!("**{word} {number}");
+            assert!(
+                thesis.contains(&heading),
+                "{}: the thesis has no {heading:?}",
+                c.id
+            );
+        }
+    }
+}
+
+#[test]
+fn statuses_match_the_list_of_landed_checkers() {
+    for c in CLAIMS {
+        let listed = WITH_CHECKER.contains(&c.id);
+        assert_eq!(
+            c.status.has_checker(),
+            listed,
+            "{}: status and WITH_CHECKER disagree",
+            c.id
+        );
+        if let Status::Checker(make) = c.status {
+            assert_eq!(make().id(), c.id, "the checker of {} has another id", c.id);
+        }
+    }
+}
+
+/// Names every claim that no checker tests yet. Today that is all of them;
+/// the list shrinks as claim modules land.
+#[test]
+fn untested_claims_are_named() {
+    let untested = claims_without_checker();
+    println!(
+        "claims without a checker ({} of {}): {}",
+        untested.len(),
+        CLAIMS.len(),
+        untested.join(", ")
+    );
+    let expected: Vec<&str> = CLAIMS
+        .iter()
+        .map(|c| c.id)
+        .filter(|id| !WITH_CHECKER.contains(id))
+        .collect();
+    assert_eq!(untested, expected);
+    assert_eq!(untested.len(), CLAIMS.len(), "today no claim has a checker");
+}
+
+/// Every module file of `lemmas/src` other than the crate's own is a claim's
+/// module, and every claim with a checker has its module (STYLE.md 15).
+#[test]
+fn claim_modules_and_ids_correspond() {
+    const INFRASTRUCTURE: &[&str] = &["lib", "driver"];
+    let src = concat!(env!("CARGO_MANIFEST_DIR"), "/src");
+    let modules: BTreeSet<String> = std::fs::read_dir(src)
+        .expect("lemmas/src is readable")
+        .map(|e| e.expect("directory entry").path())
+        .filter(|p| p.extension().is_some_and(|x| x == "rs"))
+        .filter_map(|p| p.file_stem().map(|s| s.to_string_lossy().into_owned()))
+        .filter(|m| !INFRASTRUCTURE.contains(&m.as_str()))
+        .collect();
+    let names: BTreeSet<String> = CLAIMS.iter().map(|c| c.module_name()).collect();
+    for m in &modules {
+        assert!(
+            names.contains(m),
+            "lemmas/src/{m}.rs is not the module of any claim"
+        );
+    }
+    for c in CLAIMS.iter().filter(|c| c.status.has_checker()) {
+        assert!(
+            modules.contains(&c.module_name()),
+            "{} has a checker but no module {}.rs",
+            c.id,
+            c.module_name()
+        );
+    }
+}
