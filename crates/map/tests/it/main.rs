@@ -6,6 +6,7 @@ mod geojson;
 mod normalise;
 mod numbers;
 mod roundtrip;
+mod sweep;
 
 use wai_exact::Point;
 

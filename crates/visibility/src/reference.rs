@@ -1,0 +1,200 @@
+//! The reference algorithm for V_p: exact, simple, O(n²).
+//!
+//! It defines what the production algorithms must compute. Sort the map
+//! vertices by their direction from p; between two consecutive directions
+//! no vertex is in view, so one map edge is nearest along every ray of the
+//! open angular interval — found by testing every edge against a ray
+//! strictly inside it. At each vertex direction the boundary of V_p jumps
+//! along the ray from the nearest edge before to the nearest edge after (a
+//! spurious edge, Def 3.4), or passes a corner where the two meet, or goes
+//! straight on when they are the same edge.
+
+use crate::angle::{compare_angle, cross, Dir};
+use crate::classify::{classify, Along, RawVertex};
+use crate::polygon::{OnMap, VisibilityError, VisibilityPolygon};
+use rug::Integer;
+use std::cmp::Ordering;
+use wai_exact::{locate_rat, Containment, RatPoint};
+use wai_map::Map;
+
+/// The map seen from p, translated to p and scaled by p's denominator so
+/// that every coordinate is an integer.
+struct Frame {
+    /// `W·v_i − (X, Y)` for every map vertex `v_i`, with `p = (X, Y) / W`.
+    rel: Vec<Dir>,
+}
+
+/// A fraction `num / den` with `den != 0`: the parameter of a point on a
+/// ray from p.
+#[derive(Clone, Debug)]
+struct Param {
+    num: Integer,
+    den: Integer,
+}
+
+impl Param {
+    fn cmp(&self, other: &Param) -> Ordering {
+        let lhs = Integer::from(&self.num * &other.den);
+        let rhs = Integer::from(&other.num * &self.den);
+        let ord = lhs.cmp(&rhs);
+        if (self.den < 0) != (other.den < 0) {
+            ord.reverse()
+        } else {
+            ord
+        }
+    }
+}
+
+impl Frame {
+    fn new(map: &Map, p: &RatPoint) -> Frame {
+        let rel = map
+            .vertices()
+            .iter()
+            .map(|v| {
+                (
+                    Integer::from(p.hw() * v.x) - p.hx(),
+                    Integer::from(p.hw() * v.y) - p.hy(),
+                )
+            })
+            .collect();
+        Frame { rel }
+    }
+
+    fn edge(&self, i: usize) -> (&Dir, &Dir) {
+        (&self.rel[i], &self.rel[(i + 1) % self.rel.len()])
+    }
+
+    /// Where the ray in direction `d` meets the line of edge `i`:
+    /// the parameter `s` with the point at `s·d`. `None` if parallel.
+    fn hit_line(&self, d: &Dir, i: usize) -> Option<Param> {
+        let (a, b) = self.edge(i);
+        let e = (Integer::from(&b.0 - &a.0), Integer::from(&b.1 - &a.1));
+        let den = cross(d, &e);
+        (den != 0).then(|| Param {
+            num: cross(a, b),
+            den,
+        })
+    }
+
+    /// Whether the ray in direction `r` crosses edge `i` in its interior, in
+    /// front of p, given that no vertex lies on the ray.
+    fn proper_hit(&self, r: &Dir, i: usize) -> Option<Param> {
+        let (a, b) = self.edge(i);
+        let (sa, sb) = (cross(r, a).cmp0(), cross(r, b).cmp0());
+        let straddles = matches!(
+            (sa, sb),
+            (Ordering::Less, Ordering::Greater) | (Ordering::Greater, Ordering::Less)
+        );
+        if !straddles {
+            return None;
+        }
+        let s = self.hit_line(r, i)?;
+        (s.num.cmp0() == s.den.cmp0()).then_some(s)
+    }
+
+    /// The edge nearest to p along the ray in direction `r`.
+    fn nearest(&self, r: &Dir) -> Option<usize> {
+        let mut best: Option<(usize, Param)> = None;
+        for i in 0..self.rel.len() {
+            if let Some(s) = self.proper_hit(r, i) {
+                if best
+                    .as_ref()
+                    .is_none_or(|(_, b)| s.cmp(b) == Ordering::Less)
+                {
+                    best = Some((i, s));
+                }
+            }
+        }
+        best.map(|(i, _)| i)
+    }
+}
+
+/// The point `p + s·d / W` as an exact rational point.
+fn point_at(p: &RatPoint, d: &Dir, s: &Param) -> RatPoint {
+    let x = Integer::from(p.hx() * &s.den) + Integer::from(&s.num * &d.0);
+    let y = Integer::from(p.hy() * &s.den) + Integer::from(&s.num * &d.1);
+    let w = Integer::from(p.hw() * &s.den);
+    RatPoint::new(x, y, w).expect("a ray parameter has a non-zero denominator")
+}
+
+/// Locate `q`, a point of the closed map edge `e`, on the map boundary.
+fn on_edge(map: &Map, e: usize, q: &RatPoint) -> OnMap {
+    let n = map.n();
+    for v in [e, (e + 1) % n] {
+        if *q == RatPoint::from(map.vertices()[v]) {
+            return OnMap::Vertex(v);
+        }
+    }
+    OnMap::Edge(e)
+}
+
+/// V_p of an interior point p of `map`, by the reference algorithm.
+pub fn visibility_polygon(map: &Map, p: &RatPoint) -> Result<VisibilityPolygon, VisibilityError> {
+    match locate_rat(map.vertices(), p) {
+        Containment::Inside => {}
+        Containment::OnBoundary => return Err(VisibilityError::OnBoundary(p.clone())),
+        Containment::Outside => return Err(VisibilityError::Outside(p.clone())),
+    }
+    let frame = Frame::new(map, p);
+    // Distinct vertex directions, counter-clockwise.
+    let mut order: Vec<usize> = (0..map.n()).collect();
+    order.sort_by(|&i, &j| compare_angle(&frame.rel[i], &frame.rel[j]));
+    let mut dirs: Vec<Dir> = Vec::new();
+    for &i in &order {
+        let d = &frame.rel[i];
+        if dirs
+            .last()
+            .is_none_or(|last| compare_angle(last, d) != Ordering::Equal)
+        {
+            dirs.push(d.clone());
+        }
+    }
+    let g = dirs.len();
+    // The nearest edge in the open interval after each direction. For an
+    // interior p consecutive directions are less than π apart, so their sum
+    // lies strictly between them.
+    let nearest: Vec<usize> = (0..g)
+        .map(|k| {
+            let (a, b) = (&dirs[k], &dirs[(k + 1) % g]);
+            debug_assert!(cross(a, b) > 0, "gap of π or more around an interior point");
+            let r = (Integer::from(&a.0 + &b.0), Integer::from(&a.1 + &b.1));
+            frame
+                .nearest(&r)
+                .expect("every ray from an interior point leaves the map")
+        })
+        .collect();
+    let mut raw = Vec::new();
+    for k in 0..g {
+        let (before, after) = (nearest[(k + g - 1) % g], nearest[k]);
+        if before == after {
+            continue; // the boundary goes straight through this direction
+        }
+        let d = &dirs[k];
+        let sa = frame.hit_line(d, before).expect("limit of hits is finite");
+        let sb = frame.hit_line(d, after).expect("limit of hits is finite");
+        let (pa, pb) = (point_at(p, d, &sa), point_at(p, d, &sb));
+        if pa == pb {
+            raw.push(RawVertex {
+                on_map: on_edge(map, after, &pb),
+                point: pb,
+                far_end_of_ray: false,
+                after: Along::MapEdge(after),
+            });
+        } else {
+            let a_far = sa.cmp(&sb) == Ordering::Greater;
+            raw.push(RawVertex {
+                on_map: on_edge(map, before, &pa),
+                point: pa,
+                far_end_of_ray: a_far,
+                after: Along::Ray,
+            });
+            raw.push(RawVertex {
+                on_map: on_edge(map, after, &pb),
+                point: pb,
+                far_end_of_ray: !a_far,
+                after: Along::MapEdge(after),
+            });
+        }
+    }
+    Ok(classify(p.clone(), raw))
+}

@@ -1,0 +1,6 @@
+//! Tests of wai-visibility: hand-checked polygons, laws on generated maps
+//! with degenerate viewpoints, skeleton encoding and reconstruction.
+
+mod cases;
+mod common;
+mod laws;
