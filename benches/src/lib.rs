@@ -1,1 +1,6 @@
-//! placeholder
+//! Benchmarks of the workspace and their peers.
+//!
+//! - [`cgal`]: CGAL's visibility polygon (an external process built by
+//!   `benches/peers/build.sh`) as an independent exact oracle and speed peer.
+
+pub mod cgal;

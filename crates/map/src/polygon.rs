@@ -1,6 +1,6 @@
 //! The validated map polygon.
 
-use crate::error::{MapError, MapErrors};
+use crate::error::MapErrors;
 use crate::validate::validate_scaled;
 use rug::Integer;
 use wai_exact::{orientation, signed_area_twice, Orientation, Point, Segment};
@@ -60,13 +60,6 @@ impl Map {
         scale: Integer,
     ) -> Result<(Map, Normalisation), MapErrors> {
         assert!(scale > 0, "the scale is a positive denominator");
-        if let Some(p) = ring.iter().find(|p| !p.is_supported()) {
-            return Err(MapErrors::one(MapError::CoordinateTooLarge {
-                path: format!("vertex {}", ring.iter().position(|q| q == p).unwrap_or(0)),
-                bits: u64::from(p.magnitude_bits()),
-                max: wai_exact::MAX_COORD_BITS,
-            }));
-        }
         let errors = validate_scaled(&ring, &scale);
         if !errors.is_empty() {
             return Err(MapErrors(errors));

@@ -11,7 +11,8 @@ use wai_exact::{
 /// Every problem of `ring` as the boundary of a map (coordinates in input
 /// units, scale 1); empty if and only if [`crate::Map::from_ring`] accepts it.
 ///
-/// Checks, in order: at least 3 distinct vertices; no repeated vertex; not
+/// Checks, in order: every coordinate below `2^MAX_COORD_BITS`; at least 3
+/// distinct vertices; no repeated vertex; not
 /// all on one line; no two edges meeting except consecutive edges at their
 /// common vertex (a vertex touching another edge, crossing edges and edges
 /// folding back onto each other are all reported, each pair once).
@@ -35,6 +36,20 @@ fn rat_position(p: &RatPoint, scale: &Integer) -> Position {
 }
 
 pub(crate) fn validate_scaled(ring: &[Point], scale: &Integer) -> Vec<MapError> {
+    // Coordinates beyond the supported size make every later check moot.
+    let too_large: Vec<MapError> = ring
+        .iter()
+        .enumerate()
+        .filter(|(_, p)| !p.is_supported())
+        .map(|(i, p)| MapError::CoordinateTooLarge {
+            path: format!("vertex {i}"),
+            bits: u64::from(p.magnitude_bits()),
+            max: wai_exact::MAX_COORD_BITS,
+        })
+        .collect();
+    if !too_large.is_empty() {
+        return too_large;
+    }
     let mut errors = Vec::new();
     let mut first_at: HashMap<Point, usize> = HashMap::new();
     for (i, &p) in ring.iter().enumerate() {

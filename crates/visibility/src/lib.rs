@@ -17,12 +17,17 @@
 //! no floating point is used.
 
 mod angle;
+mod assemble;
 mod classify;
+mod expansion;
 mod kernel;
 mod polygon;
 pub mod reference;
 mod skeleton;
+mod triangulation;
 
+pub use expansion::VisibilityIndex;
 pub use kernel::{kernel_of_ring, ConvexRegion};
 pub use polygon::{EdgeKind, OnMap, VisEdge, VisVertex, VisibilityError, VisibilityPolygon};
-pub use skeleton::{reconstruct, LineLabel, Skeleton, SkeletonEdge, SkeletonKey};
+pub use skeleton::{reconstruct, LineLabel, Skeleton, SkeletonEdge, SkeletonError, SkeletonKey};
+pub use triangulation::{Across, Triangulation};

@@ -10,8 +10,8 @@
 //! straight on when they are the same edge.
 
 use crate::angle::{compare_angle, cross, Dir};
-use crate::classify::{classify, Along, RawVertex};
-use crate::polygon::{OnMap, VisibilityError, VisibilityPolygon};
+use crate::assemble::assemble;
+use crate::polygon::{VisibilityError, VisibilityPolygon};
 use rug::Integer;
 use std::cmp::Ordering;
 use wai_exact::{locate_rat, Containment, RatPoint};
@@ -109,25 +109,6 @@ impl Frame {
     }
 }
 
-/// The point `p + s·d / W` as an exact rational point.
-fn point_at(p: &RatPoint, d: &Dir, s: &Param) -> RatPoint {
-    let x = Integer::from(p.hx() * &s.den) + Integer::from(&s.num * &d.0);
-    let y = Integer::from(p.hy() * &s.den) + Integer::from(&s.num * &d.1);
-    let w = Integer::from(p.hw() * &s.den);
-    RatPoint::new(x, y, w).expect("a ray parameter has a non-zero denominator")
-}
-
-/// Locate `q`, a point of the closed map edge `e`, on the map boundary.
-fn on_edge(map: &Map, e: usize, q: &RatPoint) -> OnMap {
-    let n = map.n();
-    for v in [e, (e + 1) % n] {
-        if *q == RatPoint::from(map.vertices()[v]) {
-            return OnMap::Vertex(v);
-        }
-    }
-    OnMap::Edge(e)
-}
-
 /// V_p of an interior point p of `map`, by the reference algorithm.
 pub fn visibility_polygon(map: &Map, p: &RatPoint) -> Result<VisibilityPolygon, VisibilityError> {
     match locate_rat(map.vertices(), p) {
@@ -136,65 +117,32 @@ pub fn visibility_polygon(map: &Map, p: &RatPoint) -> Result<VisibilityPolygon, 
         Containment::Outside => return Err(VisibilityError::Outside(p.clone())),
     }
     let frame = Frame::new(map, p);
-    // Distinct vertex directions, counter-clockwise.
+    // Distinct vertex directions, counter-clockwise, each with one vertex.
     let mut order: Vec<usize> = (0..map.n()).collect();
     order.sort_by(|&i, &j| compare_angle(&frame.rel[i], &frame.rel[j]));
-    let mut dirs: Vec<Dir> = Vec::new();
+    let mut dirs: Vec<usize> = Vec::new();
     for &i in &order {
-        let d = &frame.rel[i];
-        if dirs
+        let new = dirs
             .last()
-            .is_none_or(|last| compare_angle(last, d) != Ordering::Equal)
-        {
-            dirs.push(d.clone());
+            .is_none_or(|&last| compare_angle(&frame.rel[last], &frame.rel[i]) != Ordering::Equal);
+        if new {
+            dirs.push(i);
         }
     }
     let g = dirs.len();
-    // The nearest edge in the open interval after each direction. For an
+    // The nearest edge on the open interval after each direction. For an
     // interior p consecutive directions are less than π apart, so their sum
     // lies strictly between them.
-    let nearest: Vec<usize> = (0..g)
+    let leaves: Vec<(usize, usize)> = (0..g)
         .map(|k| {
-            let (a, b) = (&dirs[k], &dirs[(k + 1) % g]);
+            let (a, b) = (&frame.rel[dirs[k]], &frame.rel[dirs[(k + 1) % g]]);
             debug_assert!(cross(a, b) > 0, "gap of π or more around an interior point");
             let r = (Integer::from(&a.0 + &b.0), Integer::from(&a.1 + &b.1));
-            frame
+            let edge = frame
                 .nearest(&r)
-                .expect("every ray from an interior point leaves the map")
+                .expect("every ray from an interior point leaves the map");
+            (dirs[k], edge)
         })
         .collect();
-    let mut raw = Vec::new();
-    for k in 0..g {
-        let (before, after) = (nearest[(k + g - 1) % g], nearest[k]);
-        if before == after {
-            continue; // the boundary goes straight through this direction
-        }
-        let d = &dirs[k];
-        let sa = frame.hit_line(d, before).expect("limit of hits is finite");
-        let sb = frame.hit_line(d, after).expect("limit of hits is finite");
-        let (pa, pb) = (point_at(p, d, &sa), point_at(p, d, &sb));
-        if pa == pb {
-            raw.push(RawVertex {
-                on_map: on_edge(map, after, &pb),
-                point: pb,
-                far_end_of_ray: false,
-                after: Along::MapEdge(after),
-            });
-        } else {
-            let a_far = sa.cmp(&sb) == Ordering::Greater;
-            raw.push(RawVertex {
-                on_map: on_edge(map, before, &pa),
-                point: pa,
-                far_end_of_ray: a_far,
-                after: Along::Ray,
-            });
-            raw.push(RawVertex {
-                on_map: on_edge(map, after, &pb),
-                point: pb,
-                far_end_of_ray: !a_far,
-                after: Along::MapEdge(after),
-            });
-        }
-    }
-    Ok(classify(p.clone(), raw))
+    Ok(assemble(map, p, &leaves))
 }

@@ -272,3 +272,20 @@ fn from_ring_rejects_what_validate_all_reports() {
         validate_all(&bad)
     );
 }
+
+#[test]
+fn validate_all_checks_the_coordinate_bound() {
+    // Found by the `ring` fuzz target: validate_all must refuse what from_ring refuses.
+    let big = 1i128 << 112;
+    let r = vec![
+        wai_exact::Point::new(-big, -big),
+        wai_exact::Point::new(45 * big, -big),
+        wai_exact::Point::new(0, 0),
+    ];
+    let e = validate_all(&r);
+    assert!(
+        matches!(&e[..], [MapError::CoordinateTooLarge { path: a, bits: 113, max: 100 }, MapError::CoordinateTooLarge { path: b, .. }] if a == "vertex 0" && b == "vertex 1"),
+        "{e:?}"
+    );
+    assert_eq!(Map::from_ring(r).unwrap_err().0, e);
+}

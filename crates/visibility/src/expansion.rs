@@ -1,0 +1,252 @@
+//! The production algorithm for V_p: triangular expansion over a
+//! triangulation of the map (as in CGAL's `Triangular_expansion_visibility_2`).
+//!
+//! Preprocess once per map ([`VisibilityIndex::new`]); per query, find the
+//! triangle holding p and push the view cone through every triangle side
+//! that is not a map edge, narrowing it at each third vertex strictly inside
+//! it. Every map edge the cone reaches is the nearest edge on that cone,
+//! which is what [`crate::assemble`] needs.
+
+use crate::assemble::assemble;
+use crate::polygon::{VisibilityError, VisibilityPolygon};
+use crate::triangulation::{Across, Triangulation};
+use rug::Integer;
+use std::cmp::Ordering;
+use wai_exact::{Point, RatPoint};
+use wai_map::Map;
+
+/// A map prepared for many visibility queries.
+#[derive(Debug)]
+pub struct VisibilityIndex<'m> {
+    map: &'m Map,
+    triangulation: Triangulation,
+    /// Bits of the largest map coordinate (for the fast path).
+    coord_bits: u32,
+}
+
+/// Directions from p to map vertices, compared exactly.
+///
+/// Implementation note: with `p = (X, Y) / W` the direction to vertex `v`
+/// is `W·v − (X, Y)`. If `|W|·|v| < 2^61` and `|X|, |Y| < 2^61`, every
+/// direction is below `2^62` per coordinate, a cross product of two
+/// directions is below `2 · 2^124 = 2^125` and fits an `i128`: the fast
+/// path. Otherwise the same formula runs on GMP integers.
+enum Frame<'a> {
+    Fast {
+        x: i128,
+        y: i128,
+        w: i128,
+        v: &'a [Point],
+    },
+    Exact {
+        x: Integer,
+        y: Integer,
+        w: Integer,
+        v: &'a [Point],
+    },
+}
+
+const FAST_BITS: u32 = 61;
+
+impl<'a> Frame<'a> {
+    fn new(p: &RatPoint, v: &'a [Point], coord_bits: u32) -> Frame<'a> {
+        let small = |i: &Integer| i.significant_bits() <= FAST_BITS;
+        let fits =
+            small(p.hx()) && small(p.hy()) && p.hw().significant_bits() + coord_bits <= FAST_BITS;
+        if fits {
+            Frame::Fast {
+                x: p.hx().to_i128().expect("fits"),
+                y: p.hy().to_i128().expect("fits"),
+                w: p.hw().to_i128().expect("fits"),
+                v,
+            }
+        } else {
+            Frame::Exact {
+                x: p.hx().clone(),
+                y: p.hy().clone(),
+                w: p.hw().clone(),
+                v,
+            }
+        }
+    }
+
+    /// The sign of `dir(i) × dir(j)`: `Greater` if vertex j is
+    /// counter-clockwise from vertex i as seen from p. Equivalently the
+    /// orientation of `(v_i, v_j, p)`.
+    #[inline]
+    fn turn(&self, i: usize, j: usize) -> Ordering {
+        match self {
+            Frame::Fast { x, y, w, v } => {
+                let (ax, ay) = (w * v[i].x - x, w * v[i].y - y);
+                let (bx, by) = (w * v[j].x - x, w * v[j].y - y);
+                (ax * by - ay * bx).cmp(&0)
+            }
+            Frame::Exact { x, y, w, v } => {
+                let d = |k: usize| (Integer::from(w * v[k].x) - x, Integer::from(w * v[k].y) - y);
+                let (a, b) = (d(i), d(j));
+                (a.0 * &b.1 - a.1 * &b.0).cmp0()
+            }
+        }
+    }
+}
+
+/// A step of the expansion, with its cone: open between the directions of
+/// vertices `lo` and `hi`, counter-clockwise.
+enum Step {
+    /// Leave triangle `tri` through its side `side` (corner `side` to
+    /// corner `side + 1`).
+    Leave {
+        tri: u32,
+        side: u8,
+        lo: u32,
+        hi: u32,
+    },
+    /// Enter triangle `tri` through its side `side`.
+    Enter {
+        tri: u32,
+        side: u8,
+        lo: u32,
+        hi: u32,
+    },
+}
+
+impl<'m> VisibilityIndex<'m> {
+    /// Triangulate `map` for queries.
+    pub fn new(map: &'m Map) -> VisibilityIndex<'m> {
+        let coord_bits = map
+            .vertices()
+            .iter()
+            .map(Point::magnitude_bits)
+            .max()
+            .unwrap_or(0);
+        VisibilityIndex {
+            map,
+            triangulation: Triangulation::new(map),
+            coord_bits,
+        }
+    }
+
+    pub fn map(&self) -> &'m Map {
+        self.map
+    }
+
+    pub fn triangulation(&self) -> &Triangulation {
+        &self.triangulation
+    }
+
+    /// V_p of an interior point p.
+    ///
+    /// # Edge cases
+    /// p may lie on lines through map vertices, on diagonals of the
+    /// triangulation, on the extension of a map edge: all decisions are exact
+    /// and cones are split only at vertices strictly inside them, so the
+    /// result equals [`crate::reference::visibility_polygon`]'s.
+    pub fn visibility_polygon(&self, p: &RatPoint) -> Result<VisibilityPolygon, VisibilityError> {
+        let v = self.map.vertices();
+        let frame = Frame::new(p, v, self.coord_bits);
+        let tri = &self.triangulation;
+        // Locate p: a triangle with p in its closed interior.
+        let mut start = None;
+        for t in 0..tri.len() {
+            let c = tri.triangle(t);
+            let s = [0, 1, 2].map(|k| frame.turn(c[k], c[(k + 1) % 3]));
+            if s.iter().all(|&o| o != Ordering::Less) {
+                start = Some((t, s));
+                break;
+            }
+        }
+        let Some((t0, signs)) = start else {
+            return Err(VisibilityError::Outside(p.clone()));
+        };
+        let c0 = tri.triangle(t0);
+        let zeros = signs.iter().filter(|&&o| o == Ordering::Equal).count();
+        let on_map_edge = (0..3).any(|k| {
+            signs[k] == Ordering::Equal && matches!(tri.across(t0, k), Across::MapEdge(_))
+        });
+        if zeros >= 2 || on_map_edge {
+            return Err(VisibilityError::OnBoundary(p.clone()));
+        }
+        let mut leaves: Vec<(usize, usize)> = Vec::new();
+        // Depth first, counter-clockwise: the stack holds later cones below
+        // earlier ones, so leaves come out in angular order.
+        let mut stack: Vec<Step> = (0..3)
+            .rev()
+            .map(|k| Step::Leave {
+                tri: t0 as u32,
+                side: k as u8,
+                lo: c0[k] as u32,
+                hi: c0[(k + 1) % 3] as u32,
+            })
+            .collect();
+        while let Some(step) = stack.pop() {
+            match step {
+                Step::Leave {
+                    tri: t,
+                    side: k,
+                    lo,
+                    hi,
+                } => match tri.across(t as usize, k as usize) {
+                    Across::MapEdge(e) => leaves.push((lo as usize, e as usize)),
+                    Across::Triangle(u) => {
+                        let c = tri.triangle(t as usize);
+                        let (a, b) = (c[k as usize], c[(k as usize + 1) % 3]);
+                        let cu = tri.triangle(u as usize);
+                        let j = (0..3)
+                            .find(|&j| cu[j] == b && cu[(j + 1) % 3] == a)
+                            .expect("symmetric adjacency");
+                        stack.push(Step::Enter {
+                            tri: u,
+                            side: j as u8,
+                            lo,
+                            hi,
+                        });
+                    }
+                },
+                Step::Enter {
+                    tri: t,
+                    side: k,
+                    lo,
+                    hi,
+                } => {
+                    // Entered through side k: corner k is the hi end, corner
+                    // k + 1 the lo end, and the third corner may split the cone.
+                    let k = k as usize;
+                    let third = tri.triangle(t as usize)[(k + 2) % 3];
+                    let after_lo = frame.turn(lo as usize, third) == Ordering::Greater;
+                    let before_hi = frame.turn(third, hi as usize) == Ordering::Greater;
+                    let (side_lo, side_hi) = (((k + 1) % 3) as u8, ((k + 2) % 3) as u8);
+                    if after_lo && before_hi {
+                        let c = third as u32;
+                        stack.push(Step::Leave {
+                            tri: t,
+                            side: side_hi,
+                            lo: c,
+                            hi,
+                        });
+                        stack.push(Step::Leave {
+                            tri: t,
+                            side: side_lo,
+                            lo,
+                            hi: c,
+                        });
+                    } else if after_lo {
+                        stack.push(Step::Leave {
+                            tri: t,
+                            side: side_lo,
+                            lo,
+                            hi,
+                        });
+                    } else {
+                        stack.push(Step::Leave {
+                            tri: t,
+                            side: side_hi,
+                            lo,
+                            hi,
+                        });
+                    }
+                }
+            }
+        }
+        Ok(assemble(self.map, p, &leaves))
+    }
+}
