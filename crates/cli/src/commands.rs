@@ -146,8 +146,44 @@ pub fn demo(out: &Path) -> Result<(), Failure> {
         ..MapStyle::default()
     };
     write_file(&svg_path, &map_svg(map, &style))?;
-    println!("\nwrote {} and {}", json_path.display(), svg_path.display());
-    println!("(visibility, cells and localization join this job as later issues land)");
+    // The visibility polygon and skeleton of a viewpoint in the corridor.
+    let index = wai_visibility::VisibilityIndex::new(map);
+    let p = wai_exact::RatPoint::from(wai_exact::Point::new(9, 2));
+    let vp = index
+        .visibility_polygon(&p)
+        .map_err(|e| Failure::invalid(format!("built-in map: {e}")))?;
+    let sk = wai_visibility::Skeleton::of(map, &vp)
+        .map_err(|e| Failure::invalid(format!("built-in map: skeleton: {e}")))?;
+    let count = |k: wai_visibility::EdgeKind| vp.edges().iter().filter(|e| e.kind == k).count();
+    use wai_visibility::EdgeKind::{Full, Half, Partial, Spurious};
+    println!(
+        "\nV_p of viewpoint (9, 2): {} vertices; edges {} full, {} half, {} partial, {} spurious",
+        vp.len(),
+        count(Full),
+        count(Half),
+        count(Partial),
+        count(Spurious)
+    );
+    println!(
+        "V*_p: origin v0 = {} (map vertex {}), {} vertices, {} artificial edges, kernel with {} vertices",
+        sk.origin(),
+        sk.map_vertices()[0],
+        sk.vertices().len(),
+        sk.artificial_count(),
+        sk.kernel().vertices().len()
+    );
+    let vis_path = out.join("office-floor-vis.svg");
+    write_file(
+        &vis_path,
+        &wai_render::visibility_svg(map, &vp, Some(&sk), &MapStyle::default()),
+    )?;
+    println!(
+        "\nwrote {}, {} and {}",
+        json_path.display(),
+        svg_path.display(),
+        vis_path.display()
+    );
+    println!("(`wai vis MAP --at x,y` for any viewpoint; cells and localization join this job as later issues land)");
     Ok(())
 }
 

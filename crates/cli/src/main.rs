@@ -2,13 +2,15 @@
 //!
 //! Subcommands: `demo` (the main job on the built-in default map), `gen`
 //! (generate a map of a thesis family or a random kind), `info` (validate a
-//! map and print its numbers), `render` (draw it as SVG).
+//! map and print its numbers), `vis` (V_p and V*_p of a viewpoint), `render`
+//! (draw a map as SVG).
 //!
 //! Exit codes: 0 success; 1 the map is invalid; 2 bad usage; 3 the file
 //! could not be read or written. Errors say what and where, never panic.
 
 mod commands;
 mod input;
+mod vis;
 
 use clap::{Parser, Subcommand};
 use std::path::PathBuf;
@@ -43,6 +45,23 @@ enum Command {
         /// Print JSON instead of text.
         #[arg(long)]
         json: bool,
+        #[command(flatten)]
+        format: input::FormatArg,
+    },
+    /// The visibility polygon V_p of a viewpoint (edge kinds, blocking
+    /// vertices) and its skeleton V*_p (origin, labels, kernel).
+    Vis {
+        /// Map file (JSON map format or GeoJSON); `-` reads standard input.
+        map: PathBuf,
+        /// The viewpoint `x,y`, exact numbers in the map's units (e.g. `3/2,0.25`).
+        #[arg(long, allow_hyphen_values = true)]
+        at: String,
+        /// Print JSON instead of text.
+        #[arg(long)]
+        json: bool,
+        /// Also draw V_p, its spurious edges and the skeleton into this SVG file.
+        #[arg(long)]
+        svg: Option<PathBuf>,
         #[command(flatten)]
         format: input::FormatArg,
     },
@@ -98,6 +117,13 @@ fn main() -> ExitCode {
         Command::Demo { out } => commands::demo(&out),
         Command::Gen(args) => commands::gen(&args),
         Command::Info { map, json, format } => commands::info(&map, json, format.format),
+        Command::Vis {
+            map,
+            at,
+            json,
+            svg,
+            format,
+        } => vis::vis(&map, &at, json, svg.as_deref(), format.format),
         Command::Render {
             map,
             out,

@@ -15,7 +15,7 @@
 
 use rug::Integer;
 use std::fmt::Write;
-use wai_exact::Point;
+use wai_exact::{Point, RatPoint};
 use wai_map::Map;
 
 /// An SVG drawing in the coordinate frame of one map.
@@ -59,9 +59,62 @@ impl Canvas {
     }
 
     fn px(&self, p: Point) -> (f64, f64) {
-        let x = (approx(p.x) - self.min.0) * self.unit + self.margin;
-        let y = self.height - (approx(p.y) - self.min.1) * self.unit + self.margin;
-        (x, y)
+        self.px_approx(approx(p.x), approx(p.y))
+    }
+
+    fn px_approx(&self, x: f64, y: f64) -> (f64, f64) {
+        let sx = (x - self.min.0) * self.unit + self.margin;
+        let sy = self.height - (y - self.min.1) * self.unit + self.margin;
+        (sx, sy)
+    }
+
+    fn px_rat(&self, p: &RatPoint) -> (f64, f64) {
+        let w = p.hw().to_f64();
+        self.px_approx(p.hx().to_f64() / w, p.hy().to_f64() / w)
+    }
+
+    /// A closed polygon with exact rational vertices.
+    pub fn polygon_rat(&mut self, ring: &[RatPoint], fill: &str, stroke: &str, stroke_width: f64) {
+        let pts: Vec<String> = ring
+            .iter()
+            .map(|p| {
+                let (x, y) = self.px_rat(p);
+                format!("{x:.2},{y:.2}")
+            })
+            .collect();
+        let _ = writeln!(
+            self.body,
+            r#"<polygon points="{}" fill="{fill}" fill-opacity="0.55" stroke="{stroke}" stroke-width="{stroke_width}"/>"#,
+            pts.join(" ")
+        );
+    }
+
+    /// A segment between exact points; `dash` is an SVG dash array or "".
+    pub fn segment_rat(
+        &mut self,
+        a: &RatPoint,
+        b: &RatPoint,
+        stroke: &str,
+        width: f64,
+        dash: &str,
+        title: &str,
+    ) {
+        let ((x1, y1), (x2, y2)) = (self.px_rat(a), self.px_rat(b));
+        let _ = writeln!(
+            self.body,
+            r#"<line x1="{x1:.2}" y1="{y1:.2}" x2="{x2:.2}" y2="{y2:.2}" stroke="{stroke}" stroke-width="{width}" stroke-dasharray="{dash}"><title>{}</title></line>"#,
+            escape(title)
+        );
+    }
+
+    /// A dot at an exact point.
+    pub fn dot_rat(&mut self, p: &RatPoint, r: f64, fill: &str, title: &str) {
+        let (x, y) = self.px_rat(p);
+        let _ = writeln!(
+            self.body,
+            r#"<circle cx="{x:.2}" cy="{y:.2}" r="{r}" fill="{fill}"><title>{}</title></circle>"#,
+            escape(title)
+        );
     }
 
     /// A closed polygon.
@@ -193,4 +246,118 @@ fn coordinate_text(p: Point, scale: &Integer) -> String {
     let q =
         |v: i128| wai_map::format_exact(&rug::Rational::from((Integer::from(v), scale.clone())));
     format!("({}, {})", q(p.x), q(p.y))
+}
+
+/// Draw V_p over its map: the visible region, its spurious edges dashed,
+/// the skeleton's artificial edges dotted with their label lines faint, the
+/// viewpoint, and a caption with the counts.
+pub fn visibility_svg(
+    map: &Map,
+    vp: &wai_visibility::VisibilityPolygon,
+    skeleton: Option<&wai_visibility::Skeleton>,
+    style: &MapStyle,
+) -> String {
+    use wai_visibility::{EdgeKind, SkeletonEdge};
+    let mut c = Canvas::for_map(map, style.size);
+    c.polygon(map.vertices(), "#f4f4f4", "#1f3b73", 1.5);
+    c.polygon_rat(&vp.points(), "#ffe9a8", "none", 0.0);
+    let n = vp.len();
+    for (i, e) in vp.edges().iter().enumerate() {
+        let (a, b) = (&vp.vertices()[i].point, &vp.vertices()[(i + 1) % n].point);
+        let (color, dash, what) = match e.kind {
+            EdgeKind::Spurious => ("#d62728", "5,4", "spurious"),
+            EdgeKind::Full => ("#2ca02c", "", "full"),
+            EdgeKind::Half => ("#ff7f0e", "", "half"),
+            EdgeKind::Partial => ("#9467bd", "", "partial"),
+        };
+        c.segment_rat(a, b, color, 2.5, dash, &format!("V_p edge {i}: {what}"));
+    }
+    for (i, v) in vp.vertices().iter().enumerate() {
+        let fill = if v.spurious { "#d62728" } else { "#111" };
+        c.dot_rat(
+            &v.point,
+            2.5,
+            fill,
+            &format!(
+                "V_p vertex {i}{}",
+                if v.spurious { " (spurious)" } else { "" }
+            ),
+        );
+    }
+    if let Some(sk) = skeleton {
+        let k = sk.vertices().len();
+        let (lo, hi) = map.bounding_box();
+        for (i, e) in sk.edges().iter().enumerate() {
+            if let SkeletonEdge::Artificial { map_edge, .. } = e {
+                let (a, b) = (
+                    RatPoint::from(sk.vertices()[i]),
+                    RatPoint::from(sk.vertices()[(i + 1) % k]),
+                );
+                c.segment_rat(&a, &b, "#111", 1.5, "2,3", &format!("artificial edge {i}"));
+                // The label's line, drawn across the map's box.
+                let (p, q) = (
+                    map.vertices()[*map_edge],
+                    map.vertices()[(*map_edge + 1) % map.n()],
+                );
+                if let Some((s, t)) = line_across_box(p, q, lo, hi) {
+                    c.segment_rat(
+                        &s,
+                        &t,
+                        "#9467bd",
+                        0.7,
+                        "1,3",
+                        &format!("label line of artificial edge {i}"),
+                    );
+                }
+            }
+        }
+        c.dot(sk.origin(), 4.0, "#1f77b4", "skeleton origin v0");
+    }
+    c.dot_rat(
+        vp.viewpoint(),
+        4.0,
+        "#000",
+        &format!("viewpoint {}", vp.viewpoint()),
+    );
+    let count = |k: EdgeKind| vp.edges().iter().filter(|e| e.kind == k).count();
+    let caption = format!(
+        "V_p of {}: {} vertices; edges {} full, {} half, {} partial, {} spurious (dashed red){}",
+        vp.viewpoint(),
+        n,
+        count(EdgeKind::Full),
+        count(EdgeKind::Half),
+        count(EdgeKind::Partial),
+        count(EdgeKind::Spurious),
+        skeleton.map_or(String::new(), |s| format!(
+            "; skeleton: {} vertices, {} artificial (dotted)",
+            s.vertices().len(),
+            s.artificial_count()
+        )),
+    );
+    c.finish(map.name().unwrap_or("map"), &caption)
+}
+
+/// The part of the line through `p` and `q` inside the box `lo`–`hi`, for
+/// drawing (exact clipping against the four box lines).
+fn line_across_box(p: Point, q: Point, lo: Point, hi: Point) -> Option<(RatPoint, RatPoint)> {
+    use wai_exact::{construct_intersection, Line};
+    let l = Line::new(p, q)?;
+    let corners = [lo, Point::new(hi.x, lo.y), hi, Point::new(lo.x, hi.y)];
+    let inside = |r: &RatPoint| {
+        let (x, y, w) = (r.hx(), r.hy(), r.hw());
+        Integer::from(w * lo.x) <= *x
+            && *x <= Integer::from(w * hi.x)
+            && Integer::from(w * lo.y) <= *y
+            && *y <= Integer::from(w * hi.y)
+    };
+    let hits: Vec<RatPoint> = (0..4)
+        .filter_map(|k| {
+            Line::new(corners[k], corners[(k + 1) % 4])
+                .and_then(|side| construct_intersection(&l, &side))
+        })
+        .filter(inside)
+        .collect();
+    let a = hits.first()?.clone();
+    let b = hits.iter().find(|h| **h != a)?.clone();
+    Some((a, b))
 }

@@ -263,3 +263,68 @@ fn gen_usage_errors_are_clear() {
     let out = wai(&["info"], b"");
     assert_eq!(out.status.code(), Some(2));
 }
+
+const L_ROOM: &str = r#"{"outer": [["0","0"],["4","0"],["4","2"],["2","2"],["2","4"],["0","4"]]}"#;
+
+#[test]
+fn vis_prints_polygon_and_skeleton() {
+    let out = wai(&["vis", "-", "--at", "1,3"], L_ROOM.as_bytes());
+    assert!(out.status.success(), "{}", text(&out.stderr));
+    let s = text(&out.stdout);
+    assert!(s.contains("V_p: 5 vertices"), "{s}");
+    assert!(
+        s.contains("(4, 0)                       map vertex 1, spurious"),
+        "{s}"
+    );
+    assert!(
+        s.contains("half on map edge 0, blocked by V_p vertex 2"),
+        "{s}"
+    );
+    assert!(s.contains("origin v0 = (2, 2) (map vertex 3)"), "{s}");
+    assert!(
+        s.contains("artificial, label 0·x + 1·y = -2 relative to v0"),
+        "{s}"
+    );
+}
+
+#[test]
+fn vis_json_and_svg() {
+    let svg = std::env::temp_dir().join(format!("wai-vis-{}.svg", std::process::id()));
+    let out = wai(
+        &[
+            "vis",
+            "-",
+            "--at",
+            "1/2,7/2",
+            "--json",
+            "--svg",
+            svg.to_str().unwrap(),
+        ],
+        L_ROOM.as_bytes(),
+    );
+    assert!(out.status.success(), "{}", text(&out.stderr));
+    let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    assert_eq!(v["viewpoint"], serde_json::json!(["0.5", "3.5"]));
+    assert_eq!(v["skeleton"]["origin"], serde_json::json!(["2", "2"]));
+    let picture = std::fs::read_to_string(&svg).unwrap();
+    assert!(picture.contains("spurious") && picture.contains("artificial edge"));
+    std::fs::remove_file(svg).ok();
+}
+
+#[test]
+fn vis_rejects_bad_viewpoints() {
+    for (at, code, needle) in [
+        ("9,9", 1, "lies outside the map"),
+        ("4,1", 1, "lies on the boundary"),
+        ("2,2", 1, "lies on the boundary"),
+        ("1", 2, "expected x,y"),
+        ("1,NaN", 2, "not an exact number"),
+        ("-1,1", 1, "outside"),
+    ] {
+        let out = wai(&["vis", "-", "--at", at], L_ROOM.as_bytes());
+        let err = text(&out.stderr);
+        assert_eq!(out.status.code(), Some(code), "--at {at}: {err}");
+        assert!(err.contains(needle), "--at {at}: {err}");
+        assert!(!err.contains("panicked"));
+    }
+}
