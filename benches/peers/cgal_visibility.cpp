@@ -34,6 +34,7 @@
 //                               of every vertex coordinate: the time to obtain
 //                               the exact polygon.
 //   quit                        exit 0 (end of input does the same).
+//   # ...                       a comment, to the end of the line (no reply).
 // Errors: `error <message>`. Semantic errors (non-simple or clockwise
 // polygon, q not strictly inside, no polygon yet) keep the program running;
 // a malformed token (unknown command, bad number) desynchronises the token
@@ -49,22 +50,25 @@
 // oracle. (In CGAL 5.5.1 Tag_true simply never collects needles; see
 // Triangular_expansion_visibility_2.h, `if(!Regularization_category::value)`.)
 //
-// OBSERVED CONVENTIONS (CGAL 5.5.1, Tag_true; tests in benches/peers/README.md,
-// "Conventions", reproduced by benches/peers/conventions.txt):
-//  * The output face's outer CCB is counter-clockwise (arrangement
-//    convention; we check the sign of the area and report an error if not).
-//  * Collinear consecutive vertices DO occur: CGAL reports every polygon
-//    vertex it sees, including vertices lying in the interior of a straight
-//    stretch of the visibility polygon's boundary, namely a vertex v of the
-//    map where q lies on the line of one of v's edges (the edge is seen
-//    edge-on), and a reflex vertex hit by a window that continues to a
-//    farther point (q, r1, r2 collinear). The map itself has no 180 degree
-//    vertices, so these come only from the viewpoint.
-//  * No duplicate vertices were observed (the output arrangement would reject
-//    zero-length edges).
-//  * No needles (Tag_true) even when q is collinear with a map edge or with two
-//    map vertices.
-// See README.md for the exact polygons observed.
+// OBSERVED CONVENTIONS (CGAL 5.5.1, Tag_true; inputs benches/peers/conventions.txt,
+// replies conventions.expected, discussion README.md):
+//  * Orientation: the output face's outer CCB is counter-clockwise (the
+//    arrangement convention); reply_vis checks the sign of the area exactly.
+//  * Collinear consecutive vertices DO occur. Every map vertex that the
+//    expansion meets on a straight stretch of the boundary of V(q) is
+//    reported: (a) q on the line of map edges: comb, q = (1/2, 2) gives
+//    (10,2) (9,2) (7,2) (6,2) (4,2) (3,2) (1,2) in a row; (b) a window that
+//    passes through several reflex vertices: spikes with tips (2,2), (3,3),
+//    q = (1,1) gives (10,10) (3,3) (2,2) in a row. Points of V(q) that are
+//    not map vertices (ray hits) are reported only where the boundary turns.
+//  * No duplicates: no vertex is repeated (consecutively or not) on any test
+//    or on the AGPLIB / generated maps we ran (a window ending exactly at a
+//    map vertex, L room q = (3,1) -> (2,2) (0,4), reports that vertex once).
+//  * No needles: none with Tag_true, also when q is on the line of a map edge
+//    or of two map vertices. (Tag_false gave byte-identical replies on every
+//    test of conventions.txt, including two where the closed visible set has
+//    a needle, so CGAL 5.5.1's Tag_false does not report those either.)
+//  * Start vertex: chosen here (lexicographically smallest), not by CGAL.
 
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/Arr_segment_traits_2.h>
@@ -345,7 +349,10 @@ int main() {
   std::string cmd;
   while (std::cin >> cmd) {
     try {
-      if (cmd == "quit") {
+      if (cmd[0] == '#') {
+        std::string rest;
+        std::getline(std::cin, rest);  // a comment, to the end of the line
+      } else if (cmd == "quit") {
         return 0;
       } else if (cmd == "polygon") {
         long long n = parse_count(next_token(std::cin, "N"), "vertex count");

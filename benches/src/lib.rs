@@ -2,5 +2,7 @@
 //!
 //! - [`cgal`]: CGAL's visibility polygon (an external process built by
 //!   `benches/peers/build.sh`) as an independent exact oracle and speed peer.
+//! - [`viewpoints`]: seeded interior viewpoints.
 
 pub mod cgal;
+pub mod viewpoints;

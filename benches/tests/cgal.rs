@@ -305,6 +305,27 @@ fn queries(m: &Map, count: usize) -> Vec<RatPoint> {
     out
 }
 
+/// `count` random interior points with integer coordinates in the map's
+/// bounding box (rejection sampling, seeded).
+fn random_queries(m: &Map, count: usize, seed: u64) -> Vec<RatPoint> {
+    let mut rng = ChaCha8Rng::seed_from_u64(seed);
+    let (lo, hi) = m.bounding_box();
+    let mut out = Vec::new();
+    for _ in 0..100_000 {
+        if out.len() == count {
+            break;
+        }
+        let q = RatPoint::from(pt(
+            rng.random_range(lo.x..=hi.x),
+            rng.random_range(lo.y..=hi.y),
+        ));
+        if locate_rat(m.vertices(), &q) == Containment::Inside {
+            out.push(q);
+        }
+    }
+    out
+}
+
 /// Angular order around the origin, exactly (no point is the origin).
 fn angle_cmp(a: Point, b: Point) -> Ordering {
     let half = |p: Point| p.y < 0 || (p.y == 0 && p.x < 0);
@@ -328,10 +349,17 @@ fn star(n: usize, seed: u64) -> Map {
 }
 
 /// A random skyline: columns `[i, i+1] x [0, h_i]`, `h_i` random in
-/// `1..=1000`: an orthogonal polygon with up to `2k + 2` vertices.
+/// `1..=1000`, neighbours different: an orthogonal polygon with `2k + 2`
+/// vertices.
 fn skyline(k: usize, seed: u64) -> Map {
     let mut rng = ChaCha8Rng::seed_from_u64(seed);
-    let h: Vec<i128> = (0..k).map(|_| rng.random_range(1..=1000)).collect();
+    let mut h: Vec<i128> = Vec::with_capacity(k);
+    while h.len() < k {
+        let v = rng.random_range(1..=1000);
+        if h.last() != Some(&v) {
+            h.push(v);
+        }
+    }
     let mut ring = vec![pt(0, 0), pt(k as i128, 0)];
     for i in (0..k).rev() {
         ring.push(pt(i as i128 + 1, h[i]));
@@ -383,39 +411,53 @@ fn query_times() {
     maps.push(("star 10000 seed=1".to_owned(), star(10_000, 1)));
     maps.push(("skyline 4999 columns seed=1".to_owned(), skyline(4999, 1)));
 
-    say("map | n | r | queries | |V(q)| median | collinear/dup vertices | median ns (lazy) | median ns (exact) | preprocessing ms");
+    say(
+        "query sets: `corner` = centroids of 3 consecutive vertices (5 spread over the ring), \
+         `random` = 5 random interior points, `origin` = the star's centre (sees all)",
+    );
+    say("map | n | r | set | |V(q)| median | collinear/dup vertices | median ns (lazy) | median ns (exact) | preprocessing ms");
     for (name, m) in &maps {
         let t0 = std::time::Instant::now();
         cgal.set_polygon(m.vertices(), m.scale()).unwrap();
         let pre_ms = t0.elapsed().as_millis();
-        let qs = queries(m, 5);
-        assert!(!qs.is_empty(), "{name}: no query point");
-        let reps = if m.n() <= 1000 { 201 } else { 51 };
-        let (mut lazy, mut exact, mut sizes) = (Vec::new(), Vec::new(), Vec::new());
-        let mut extra = 0usize;
-        for q in &qs {
-            let v = cgal.visibility(q).unwrap();
-            // Every vertex of a visibility polygon lies on the map boundary.
-            for p in &v {
-                assert_eq!(
-                    locate_rat(m.vertices(), p),
-                    Containment::OnBoundary,
-                    "{name}: {p} from {q}"
-                );
-            }
-            extra += v.len() - drop_collinear(&v).len();
-            sizes.push(v.len() as u64);
-            lazy.push(cgal.bench(q, reps).unwrap());
-            exact.push(cgal.bench_exact(q, reps).unwrap());
+        let mut sets = vec![
+            ("corner", queries(m, 5)),
+            ("random", random_queries(m, 5, 7)),
+        ];
+        if name.starts_with("star") {
+            sets.push(("origin", vec![RatPoint::from(pt(0, 0))]));
         }
-        say(&format!(
-            "{name} | {} | {} | {} | {} | {extra} | {} | {} | {pre_ms}",
-            m.n(),
-            m.r(),
-            qs.len(),
-            median(sizes),
-            median(lazy),
-            median(exact),
-        ));
+        for (set, qs) in sets {
+            assert!(!qs.is_empty(), "{name}: no {set} query point");
+            let reps = if m.n() <= 1000 { 201 } else { 51 };
+            let (mut lazy, mut exact, mut sizes) = (Vec::new(), Vec::new(), Vec::new());
+            let mut extra = 0usize;
+            for q in &qs {
+                let v = cgal.visibility(q).unwrap();
+                // Every vertex of a visibility polygon lies on the map boundary.
+                for p in &v {
+                    assert_eq!(
+                        locate_rat(m.vertices(), p),
+                        Containment::OnBoundary,
+                        "{name}: {p} from {q}"
+                    );
+                }
+                let distinct: std::collections::HashSet<&RatPoint> = v.iter().collect();
+                assert_eq!(distinct.len(), v.len(), "{name}: repeated vertex from {q}");
+                extra += v.len() - drop_collinear(&v).len();
+                sizes.push(v.len() as u64);
+                lazy.push(cgal.bench(q, reps).unwrap());
+                exact.push(cgal.bench_exact(q, reps).unwrap());
+            }
+            say(&format!(
+                "{name} | {} | {} | {set} x{} | {} | {extra} | {} | {} | {pre_ms}",
+                m.n(),
+                m.r(),
+                qs.len(),
+                median(sizes),
+                median(lazy),
+                median(exact),
+            ));
+        }
     }
 }

@@ -12,9 +12,13 @@
 //!
 //! - `lib.rs` (this file): the [`CLAIMS`] table, [`Kind`], [`Status`].
 //! - [`driver`]: [`Checker`], [`Report`], [`Violation`], [`run`], [`Summary`].
-//! - One module per claim, still to come, named after the claim's id in lower
-//!   case with `.` replaced by `_` ([`Claim::module_name`]): `l3_1a.rs`,
-//!   `t4_2.rs`, `t5_17.rs`, `l3_7t.rs`, …. Each module
+//! - [`sample`]: the viewpoints and visibility polygons the chapter 3
+//!   checkers examine, and Def 3.4 read off a polygon's geometry. Like
+//!   `driver`, not a claim's module.
+//! - One module per claim, named after the claim's id in lower case with `.`
+//!   replaced by `_` ([`Claim::module_name`]): [`l3_1a`], [`l3_1b`],
+//!   [`l3_1c`], [`d3_5`], [`t3_2`] so far; `t4_2.rs`, `t5_17.rs`,
+//!   `l3_7t.rs`, … to come. Each module
 //!   - opens with a doc comment that states the claim in our own words and
 //!     cites the thesis (`/// Claim T4.2 (Theorem 4.2).`),
 //!   - has a `## Trust` paragraph: exhaustive or sampled, and what the verdict
@@ -36,7 +40,13 @@
 //! [`Summary::not_run`]. The integration tests fail if this table and
 //! `shared/CLAIMS.md` disagree, in either direction.
 
+pub mod d3_5;
 pub mod driver;
+pub mod l3_1a;
+pub mod l3_1b;
+pub mod l3_1c;
+pub mod sample;
+pub mod t3_2;
 
 pub use driver::{run, Checker, ClaimTally, FoundViolation, Report, Summary, Violation};
 
@@ -160,6 +170,16 @@ const fn c(
     }
 }
 
+impl Claim {
+    /// The same row with a checker.
+    const fn checked(self, make: fn() -> Box<dyn Checker>) -> Claim {
+        Claim {
+            status: Status::Checker(make),
+            ..self
+        }
+    }
+}
+
 use Kind::{Bound, Exact, ExactTight, Example, Tight};
 
 /// Every claim of `shared/CLAIMS.md`, in its order. A test checks this table
@@ -171,31 +191,36 @@ pub static CLAIMS: &[Claim] = &[
         Exact,
         "Lemma 3.1(a)",
         "A reflex vertex of a visibility polygon is never spurious.",
-    ),
+    )
+    .checked(l3_1a::checker),
     c(
         "L3.1b",
         Exact,
         "Lemma 3.1(b)",
         "Two spurious edges of a visibility polygon are never adjacent.",
-    ),
+    )
+    .checked(l3_1b::checker),
     c(
         "L3.1c",
         Exact,
         "Lemma 3.1(c)",
         "A non-spurious edge of V_p is all of its supporting map edge that p sees.",
-    ),
+    )
+    .checked(l3_1c::checker),
     c(
         "D3.5",
         Exact,
         "Definitions 3.5 and 3.6",
         "Non-spurious edges are exactly one of full/half/partial; spurious vertices of half edges lie on spurious edges; blocking vertices are reflex map vertices.",
-    ),
+    )
+    .checked(d3_5::checker),
     c(
         "T3.2",
         Exact,
         "Theorem 3.2",
         "With the viewpoint fixed relative to the skeleton origin, equal visibility polygons and equal skeletons imply each other.",
-    ),
+    )
+    .checked(t3_2::checker),
     c(
         "T3.3a",
         Exact,

@@ -205,7 +205,7 @@ pub const RANDOM_KINDS: &[KindInfo] = &[
                  the kernel and no three consecutive vertices are collinear",
         vertices: "exactly n",
         min_n: 3,
-        max_n: 4096,
+        max_n: 20_000,
     },
     KindInfo {
         id: "random-simple-2opt",
@@ -221,7 +221,7 @@ pub const RANDOM_KINDS: &[KindInfo] = &[
                  rows stretched by random widths 1..=4",
         vertices: "n' with max(n,4) <= n' <= max(n,4) + 3 (even)",
         min_n: 4,
-        max_n: 4096,
+        max_n: 20_000,
     },
     KindInfo {
         id: "special-orthogonal",
@@ -229,7 +229,7 @@ pub const RANDOM_KINDS: &[KindInfo] = &[
                  collinear edges and vertices on common lines",
         vertices: "n' with max(n,4) <= n' <= max(n,4) + 3 (even)",
         min_n: 4,
-        max_n: 4096,
+        max_n: 20_000,
     },
     KindInfo {
         id: "special-comb",
@@ -237,7 +237,7 @@ pub const RANDOM_KINDS: &[KindInfo] = &[
                  depths 1 or 2: aligned walls and backs",
         vertices: "4 + 4 ceil((n - 4) / 4)",
         min_n: 4,
-        max_n: 4096,
+        max_n: 20_000,
     },
     KindInfo {
         id: "special-chamfer",
@@ -245,7 +245,7 @@ pub const RANDOM_KINDS: &[KindInfo] = &[
                  few axis-parallel and diagonal lines",
         vertices: "exactly n",
         min_n: 4,
-        max_n: 4096,
+        max_n: 20_000,
     },
 ];
 

@@ -1,8 +1,10 @@
 //! The integration tests of `wai-lemmas`: the claims registry against
-//! `shared/CLAIMS.md`, and the stored maps of `counterexamples/`.
+//! `shared/CLAIMS.md`, the stored maps of `counterexamples/`, and the
+//! chapter 3 visibility checkers over generated and real maps.
 
 mod counterexamples;
 mod registry;
+mod visibility_claims;
 
 use std::path::PathBuf;
 

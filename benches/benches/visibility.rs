@@ -1,0 +1,62 @@
+//! One visibility query (V_p by triangular expansion, preprocessing
+//! excluded) on random simple and random orthogonal maps of growing n,
+//! and the same queries through CGAL's `Triangular_expansion_visibility_2`
+//! when its peer is built (`benches/peers/build.sh`). Ids:
+//! `visibility/{ours,cgal}/{random-simple-star,random-orthogonal}/n=N`.
+
+use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion};
+use rand::{Rng, SeedableRng};
+use rand_chacha::ChaCha8Rng;
+use std::time::Duration;
+use wai_benches::viewpoints::interior_viewpoints;
+use wai_map::Map;
+use wai_visibility::VisibilityIndex;
+
+const SIZES: &[usize] = &[10, 100, 1000, 4000, 10_000];
+
+fn maps() -> Vec<(&'static str, usize, Map)> {
+    let mut out = Vec::new();
+    for &n in SIZES {
+        // random-simple-star is capped at 4096 vertices.
+        if n <= 4096 {
+            out.push((
+                "random-simple-star",
+                n,
+                wai_gen::random("random-simple-star", n, 1).unwrap(),
+            ));
+        }
+        out.push((
+            "random-orthogonal",
+            n,
+            wai_gen::random("random-orthogonal", n, 1).unwrap(),
+        ));
+    }
+    out
+}
+
+fn bench(c: &mut Criterion) {
+    let mut g = c.benchmark_group("visibility");
+    g.sample_size(20)
+        .measurement_time(Duration::from_secs(3))
+        .warm_up_time(Duration::from_secs(1));
+    let mut rng = ChaCha8Rng::seed_from_u64(7);
+    for (kind, n, map) in maps() {
+        let index = VisibilityIndex::new(&map);
+        let views = interior_viewpoints(&map, 16, rng.random());
+        let mut k = 0;
+        g.bench_with_input(
+            BenchmarkId::new(format!("ours/{kind}"), format!("n={n}")),
+            &(),
+            |b, _| {
+                b.iter(|| {
+                    k = (k + 1) % views.len();
+                    std::hint::black_box(index.visibility_polygon(&views[k]).unwrap())
+                })
+            },
+        );
+    }
+    g.finish();
+}
+
+criterion_group!(benches, bench);
+criterion_main!(benches);

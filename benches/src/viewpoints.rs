@@ -1,0 +1,30 @@
+//! Seeded interior viewpoints for benchmarks.
+
+use rand::{Rng, SeedableRng};
+use rand_chacha::ChaCha8Rng;
+use rug::Integer;
+use wai_exact::{locate_rat, Containment, RatPoint};
+use wai_map::Map;
+
+/// `count` distinct points strictly inside `map`, each with a denominator of
+/// 1000 in map units (so most lie on no line through two vertices), drawn
+/// from the bounding box with a seeded generator.
+pub fn interior_viewpoints(map: &Map, count: usize, seed: u64) -> Vec<RatPoint> {
+    let mut rng = ChaCha8Rng::seed_from_u64(seed);
+    let (lo, hi) = map.bounding_box();
+    let mut out: Vec<RatPoint> = Vec::new();
+    let mut tries = 0usize;
+    while out.len() < count {
+        tries += 1;
+        assert!(tries < 1_000_000, "no interior points found");
+        let fx: u32 = rng.random_range(1..1000);
+        let fy: u32 = rng.random_range(1..1000);
+        let x = Integer::from(lo.x) * 1000 + Integer::from(hi.x - lo.x) * fx;
+        let y = Integer::from(lo.y) * 1000 + Integer::from(hi.y - lo.y) * fy;
+        let p = RatPoint::new(x, y, Integer::from(1000)).expect("positive denominator");
+        if locate_rat(map.vertices(), &p) == Containment::Inside && !out.contains(&p) {
+            out.push(p);
+        }
+    }
+    out
+}

@@ -1,0 +1,167 @@
+//! Claim L3.1b (Lemma 3.1(2)): no two spurious edges of a visibility
+//! polygon V_p are adjacent.
+//!
+//! A spurious edge (Def 3.4) lies on a ray from p; between two of them the
+//! boundary of V_p always runs along a piece of a map edge that p sees.
+//!
+//! ## Trust
+//! Sampled viewpoints, exact polygons. For each map the checker computes
+//! V_p with the production algorithm for [`crate::sample::viewpoints`] and
+//! examines **every** pair of adjacent edges of every such V_p (edges `i`
+//! and `i + 1`, cyclically, so as many pairs as edges). An edge counts as
+//! spurious if V_p classifies it so *or* it is collinear with p (Def 3.4,
+//! decided exactly), so the verdict does not rest on the stored kinds
+//! alone. What is not covered: viewpoints outside the sample.
+
+use serde_json::json;
+use wai_map::Map;
+use wai_visibility::{EdgeKind, VisibilityPolygon};
+
+use crate::driver::{Checker, Report, Violation};
+use crate::sample::{self, edge_collinear_with_viewpoint};
+
+const ID: &str = "L3.1b";
+
+/// Checks L3.1b on the sampled viewpoints of a map.
+#[derive(Debug, Clone, Copy)]
+pub struct SpuriousNotAdjacent {
+    /// Viewpoints sampled per map.
+    pub viewpoints: usize,
+}
+
+impl Default for SpuriousNotAdjacent {
+    fn default() -> Self {
+        SpuriousNotAdjacent {
+            viewpoints: sample::VIEWPOINTS,
+        }
+    }
+}
+
+/// The registry's constructor.
+pub fn checker() -> Box<dyn Checker> {
+    Box::new(SpuriousNotAdjacent::default())
+}
+
+impl Checker for SpuriousNotAdjacent {
+    fn id(&self) -> &'static str {
+        ID
+    }
+
+    fn check(&self, map: &Map) -> Report {
+        let mut report = Report::new(ID);
+        for vp in sample::visibility_polygons(map, self.viewpoints) {
+            let r = check_polygon(map, &vp);
+            report.examined += r.examined;
+            report.violations.extend(r.violations);
+        }
+        report
+    }
+}
+
+/// L3.1b on one V_p of `map`: every pair of adjacent edges is one instance.
+pub fn check_polygon(map: &Map, vp: &VisibilityPolygon) -> Report {
+    let mut report = Report::new(ID);
+    let n = vp.len();
+    let spurious =
+        |i: usize| vp.edges()[i].kind == EdgeKind::Spurious || edge_collinear_with_viewpoint(vp, i);
+    for i in 0..n {
+        let j = (i + 1) % n;
+        report.record((spurious(i) && spurious(j)).then(|| {
+            let mut data = sample::replay(map, vp);
+            data.insert("edges".into(), json!([i, j]));
+            data.insert(
+                "kinds".into(),
+                json!([
+                    format!("{:?}", vp.edges()[i].kind),
+                    format!("{:?}", vp.edges()[j].kind)
+                ]),
+            );
+            data.insert("shared_vertex".into(), json!(j));
+            Violation::with_data(
+                format!(
+                    "map {}, viewpoint {}: edges {i} and {j} of V_p are both spurious and meet \
+                     at vertex {j} {}",
+                    sample::map_name(map),
+                    vp.viewpoint(),
+                    vp.vertices()[j].point
+                ),
+                data.into(),
+            )
+        }));
+    }
+    report
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use wai_exact::{Point, RatPoint};
+    use wai_visibility::VisibilityIndex;
+
+    /// A room with a door in its north wall leading to a corridor, seen
+    /// from (3, 1): V_p has a partial edge between two spurious edges.
+    fn doorway() -> (Map, VisibilityPolygon) {
+        let ring = [
+            (0, 0),
+            (6, 0),
+            (6, 4),
+            (4, 4),
+            (4, 5),
+            (10, 5),
+            (10, 8),
+            (-4, 8),
+            (-4, 5),
+            (2, 5),
+            (2, 4),
+            (0, 4),
+        ]
+        .map(|(x, y)| Point::new(x, y))
+        .to_vec();
+        let map = Map::from_ring(ring).unwrap().0.with_name("doorway");
+        let vp = VisibilityIndex::new(&map)
+            .visibility_polygon(&RatPoint::from(Point::new(3, 1)))
+            .unwrap();
+        (map, vp)
+    }
+
+    #[test]
+    fn a_correct_polygon_passes() {
+        let (map, vp) = doorway();
+        let r = check_polygon(&map, &vp);
+        assert_eq!(r.examined, vp.len() as u64);
+        assert!(r.violations.is_empty(), "{:?}", r.violations);
+        let r = SpuriousNotAdjacent::default().check(&map);
+        assert!(r.examined > 0);
+        assert!(r.violations.is_empty(), "{:?}", r.violations);
+    }
+
+    #[test]
+    fn two_adjacent_spurious_edges_are_reported() {
+        let (map, vp) = doorway();
+        let n = vp.len();
+        let mut edges = vp.edges().to_vec();
+        // The partial edge and the spurious edge after it.
+        let i = (0..n)
+            .find(|&i| edges[i].kind == EdgeKind::Partial)
+            .expect("a partial edge");
+        assert_eq!(edges[(i + 1) % n].kind, EdgeKind::Spurious);
+        edges[i].kind = EdgeKind::Spurious;
+        edges[i].map_edge = None;
+        edges[i].blocking.clear();
+        let broken =
+            VisibilityPolygon::from_parts(vp.viewpoint().clone(), vp.vertices().to_vec(), edges);
+        let r = check_polygon(&map, &broken);
+        // The pairs (i − 1, i) and (i, i + 1).
+        assert_eq!(r.violations.len(), 2, "{:?}", r.violations);
+        for v in &r.violations {
+            assert_eq!(v.data["map"], "doorway");
+            assert_eq!(v.data["viewpoint"], json!(["3", "1"]));
+        }
+        for pair in [[(i + n - 1) % n, i], [i, (i + 1) % n]] {
+            assert!(
+                r.violations.iter().any(|v| v.data["edges"] == json!(pair)),
+                "{pair:?} not reported"
+            );
+        }
+    }
+}
