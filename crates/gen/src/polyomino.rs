@@ -326,45 +326,81 @@ pub(crate) fn can_add(set: &HashSet<Cell>, c: Cell) -> bool {
     runs == 1
 }
 
+/// Whether the lattice point `(x, y)` is a corner of the boundary: one or
+/// three of the four cells around it are present.
+fn is_corner(set: &HashSet<Cell>, (x, y): Cell) -> bool {
+    let k = [(x, y), (x - 1, y), (x, y - 1), (x - 1, y - 1)]
+        .iter()
+        .filter(|c| set.contains(c))
+        .count();
+    k == 1 || k == 3
+}
+
+/// The four lattice corners of cell `(x, y)`.
+fn cell_corners((x, y): Cell) -> [Cell; 4] {
+    [(x, y), (x + 1, y), (x, y + 1), (x + 1, y + 1)]
+}
+
 /// Grows a random simple polyomino from one cell until its boundary has at
 /// least `min_vertices` vertices or it has `max_cells` cells.
 ///
 /// Each step adds a random empty 4-neighbour that keeps the boundary simple
-/// ([`can_add`]); with probability 3/4 it picks among those touching
-/// exactly one cell, which makes branchy shapes with many vertices. One
-/// added cell changes the vertex count by at most 4, so the result has
-/// fewer than `min_vertices + 4` vertices when it stops on the count.
+/// ([`can_add`]); with probability 3/4 it prefers one touching exactly one
+/// cell, which makes branchy shapes with many vertices. Candidates are drawn
+/// from the frontier by rejection (at most 64 draws, then a deterministic
+/// scan), and the corner count is updated locally, so growth takes about
+/// linear time. One added cell changes the vertex count by at most 4, so the
+/// result has fewer than `min_vertices + 4` vertices when it stops on the
+/// count.
 pub(crate) fn grow(min_vertices: usize, max_cells: usize, rng: &mut ChaCha8Rng) -> Polyomino {
     let mut set: HashSet<Cell> = HashSet::from([(0, 0)]);
     let mut order: Vec<Cell> = vec![(0, 0)];
-    while corner_count(&set) < min_vertices && set.len() < max_cells {
-        // Deterministic candidate order (HashSet iteration is not).
-        let mut cands: BTreeSet<Cell> = BTreeSet::new();
-        for &c in &order {
-            for d in N4 {
-                let nb = add(c, d);
-                if !set.contains(&nb) && can_add(&set, nb) {
-                    cands.insert(nb);
-                }
+    let mut corners = 4usize;
+    // The empty 4-neighbours of the set, in insertion order (deterministic).
+    let mut frontier: Vec<Cell> = N4.iter().map(|&d| add((0, 0), d)).collect();
+    let mut in_frontier: HashMap<Cell, usize> =
+        frontier.iter().enumerate().map(|(i, &c)| (c, i)).collect();
+    let is_leaf = |set: &HashSet<Cell>, c: Cell| N4.iter().filter(|&&d| set.contains(&add(c, d))).count() == 1;
+    while corners < min_vertices && set.len() < max_cells {
+        let want_leaf = rng.random_ratio(3, 4);
+        let mut chosen = None;
+        for attempt in 0..64 {
+            let c = frontier[rng.random_range(0..frontier.len())];
+            if can_add(&set, c) && (!want_leaf || attempt >= 48 || is_leaf(&set, c)) {
+                chosen = Some(c);
+                break;
             }
         }
-        let cands: Vec<Cell> = cands.into_iter().collect();
-        let leaves: Vec<Cell> = cands
-            .iter()
-            .copied()
-            .filter(|&c| N4.iter().filter(|&&d| set.contains(&add(c, d))).count() == 1)
-            .collect();
-        let pool = if !leaves.is_empty() && rng.random_ratio(3, 4) {
-            &leaves
-        } else {
-            &cands
-        };
         // A simple polyomino always has an addable neighbour: a cell next
         // to the lowest cell of the leftmost column is one.
-        let c = pool[rng.random_range(0..pool.len())];
+        let c = chosen.unwrap_or_else(|| {
+            frontier
+                .iter()
+                .copied()
+                .filter(|&c| can_add(&set, c))
+                .min()
+                .expect("a simple polyomino has an addable neighbour")
+        });
+        let before = cell_corners(c).iter().filter(|&&g| is_corner(&set, g)).count();
         set.insert(c);
+        let after = cell_corners(c).iter().filter(|&&g| is_corner(&set, g)).count();
+        corners = corners + after - before;
         order.push(c);
+        // Remove c from the frontier (swap-remove) and add its empty neighbours.
+        let i = in_frontier.remove(&c).expect("c came from the frontier");
+        frontier.swap_remove(i);
+        if i < frontier.len() {
+            in_frontier.insert(frontier[i], i);
+        }
+        for d in N4 {
+            let nb = add(c, d);
+            if !set.contains(&nb) && !in_frontier.contains_key(&nb) {
+                in_frontier.insert(nb, frontier.len());
+                frontier.push(nb);
+            }
+        }
     }
+    debug_assert_eq!(corners, corner_count(&set));
     Polyomino {
         cells: normalise(order),
     }
