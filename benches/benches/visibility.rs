@@ -2,12 +2,20 @@
 //! excluded) on random simple and random orthogonal maps of growing n,
 //! and the same queries through CGAL's `Triangular_expansion_visibility_2`
 //! when its peer is built (`benches/peers/build.sh`). Ids:
-//! `visibility/{ours,cgal}/{random-simple-star,random-orthogonal}/n=N`.
+//! `visibility/{ours,cgal-exact,cgal-lazy}/{random-simple-star,random-orthogonal}/n=N`.
+//!
+//! Ours: point location, expansion and the exact rational vertices of
+//! V_p with their classification. CGAL (timed inside the peer process with
+//! `iter_custom`, so no pipe is timed): `compute_visibility` after point
+//! location (done once per viewpoint, outside the timing); `cgal-exact`
+//! also forces the exact value of every output coordinate, the fair
+//! comparison for exact output; `cgal-lazy` leaves Epeck's lazy values.
 
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion};
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 use std::time::Duration;
+use wai_benches::cgal::CgalPeer;
 use wai_benches::viewpoints::interior_viewpoints;
 use wai_map::Map;
 use wai_visibility::VisibilityIndex;
@@ -40,6 +48,12 @@ fn bench(c: &mut Criterion) {
         .measurement_time(Duration::from_secs(3))
         .warm_up_time(Duration::from_secs(1));
     let mut rng = ChaCha8Rng::seed_from_u64(7);
+    let mut peer = if wai_benches::cgal::available() {
+        CgalPeer::spawn().ok()
+    } else {
+        eprintln!("CGAL peer not built (benches/peers/build.sh): timing ours only");
+        None
+    };
     for (kind, n, map) in maps() {
         let index = VisibilityIndex::new(&map);
         let views = interior_viewpoints(&map, 16, rng.random());
@@ -54,6 +68,33 @@ fn bench(c: &mut Criterion) {
                 })
             },
         );
+        let Some(peer) = peer.as_mut() else { continue };
+        peer.set_polygon(map.vertices(), map.scale())
+            .expect("CGAL accepts the map");
+        for (label, exact) in [("cgal-exact", true), ("cgal-lazy", false)] {
+            let id = BenchmarkId::new(format!("{label}/{kind}"), format!("n={n}"));
+            g.bench_with_input(id, &(), |b, _| {
+                b.iter_custom(|iters| {
+                    // Spread the iterations over the viewpoints; the peer
+                    // reports the median per query of each batch.
+                    let per = u32::try_from(iters.div_ceil(views.len() as u64))
+                        .unwrap_or(u32::MAX)
+                        .max(1);
+                    let total: u64 = views
+                        .iter()
+                        .map(|q| {
+                            let ns = if exact {
+                                peer.bench_exact(q, per)
+                            } else {
+                                peer.bench(q, per)
+                            };
+                            ns.expect("CGAL answers") * u64::from(per)
+                        })
+                        .sum();
+                    Duration::from_nanos(total * iters / (u64::from(per) * views.len() as u64))
+                })
+            });
+        }
     }
     g.finish();
 }

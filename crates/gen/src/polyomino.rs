@@ -360,7 +360,9 @@ pub(crate) fn grow(min_vertices: usize, max_cells: usize, rng: &mut ChaCha8Rng) 
     let mut frontier: Vec<Cell> = N4.iter().map(|&d| add((0, 0), d)).collect();
     let mut in_frontier: HashMap<Cell, usize> =
         frontier.iter().enumerate().map(|(i, &c)| (c, i)).collect();
-    let is_leaf = |set: &HashSet<Cell>, c: Cell| N4.iter().filter(|&&d| set.contains(&add(c, d))).count() == 1;
+    let is_leaf = |set: &HashSet<Cell>, c: Cell| {
+        N4.iter().filter(|&&d| set.contains(&add(c, d))).count() == 1
+    };
     while corners < min_vertices && set.len() < max_cells {
         let want_leaf = rng.random_ratio(3, 4);
         let mut chosen = None;
@@ -381,9 +383,15 @@ pub(crate) fn grow(min_vertices: usize, max_cells: usize, rng: &mut ChaCha8Rng) 
                 .min()
                 .expect("a simple polyomino has an addable neighbour")
         });
-        let before = cell_corners(c).iter().filter(|&&g| is_corner(&set, g)).count();
+        let before = cell_corners(c)
+            .iter()
+            .filter(|&&g| is_corner(&set, g))
+            .count();
         set.insert(c);
-        let after = cell_corners(c).iter().filter(|&&g| is_corner(&set, g)).count();
+        let after = cell_corners(c)
+            .iter()
+            .filter(|&&g| is_corner(&set, g))
+            .count();
         corners = corners + after - before;
         order.push(c);
         // Remove c from the frontier (swap-remove) and add its empty neighbours.

@@ -21,31 +21,74 @@ struct RayPoint {
     den: Integer,
 }
 
+/// Coordinates of directions from p fit the `i128` fast path: with
+/// `p = (X, Y) / W`, `|X|, |Y| < 2^61` and `|W|·|v| < 2^61` for every map
+/// vertex v (`coord_bits` bounds the map's coordinates).
+///
+/// Implementation note: then every direction `W·v − (X, Y)` is below
+/// `2^62` per coordinate, an edge vector below `2^63`, and the cross
+/// products `den = d × e` and `num = a × b` below `2^126`, which an `i128`
+/// holds. The point itself, `(X·den + num·d) / (W·den)`, is built in GMP.
+pub(crate) fn fits_fast(p: &RatPoint, coord_bits: u32) -> bool {
+    const FAST: u32 = 61;
+    p.hx().significant_bits() <= FAST
+        && p.hy().significant_bits() <= FAST
+        && p.hw().significant_bits() + coord_bits <= FAST
+}
+
 /// Where the ray from p through map vertex `through` meets the line of map
 /// edge `edge`, or `None` if they are parallel.
-fn ray_meets_edge_line(map: &Map, p: &RatPoint, through: usize, edge: usize) -> Option<RayPoint> {
+fn ray_meets_edge_line(
+    map: &Map,
+    p: &RatPoint,
+    fast: bool,
+    through: usize,
+    edge: usize,
+) -> Option<RayPoint> {
     let v = map.vertices();
-    let w = p.hw();
-    let rel = |i: usize| {
+    let (a, b) = (edge, (edge + 1) % map.n());
+    let (num, den, dx, dy) = if fast {
+        let (x, y, w) = (
+            p.hx().to_i128().expect("fast"),
+            p.hy().to_i128().expect("fast"),
+            p.hw().to_i128().expect("fast"),
+        );
+        let rel = |i: usize| (w * v[i].x - x, w * v[i].y - y);
+        let (d, ra, rb) = (rel(through), rel(a), rel(b));
+        let e = (rb.0 - ra.0, rb.1 - ra.1);
+        let den = d.0 * e.1 - d.1 * e.0;
+        if den == 0 {
+            return None;
+        }
+        let num = ra.0 * rb.1 - ra.1 * rb.0;
         (
-            Integer::from(w * v[i].x) - p.hx(),
-            Integer::from(w * v[i].y) - p.hy(),
+            Integer::from(num),
+            Integer::from(den),
+            Integer::from(d.0),
+            Integer::from(d.1),
         )
+    } else {
+        let w = p.hw();
+        let rel = |i: usize| {
+            (
+                Integer::from(w * v[i].x) - p.hx(),
+                Integer::from(w * v[i].y) - p.hy(),
+            )
+        };
+        let cross = |a: &(Integer, Integer), b: &(Integer, Integer)| {
+            Integer::from(&a.0 * &b.1) - Integer::from(&a.1 * &b.0)
+        };
+        let (d, ra, rb) = (rel(through), rel(a), rel(b));
+        let e = (Integer::from(&rb.0 - &ra.0), Integer::from(&rb.1 - &ra.1));
+        let den = cross(&d, &e);
+        if den == 0 {
+            return None;
+        }
+        (cross(&ra, &rb), den, d.0, d.1)
     };
-    let cross = |a: &(Integer, Integer), b: &(Integer, Integer)| {
-        Integer::from(&a.0 * &b.1) - Integer::from(&a.1 * &b.0)
-    };
-    let d = rel(through);
-    let (a, b) = (rel(edge), rel((edge + 1) % map.n()));
-    let e = (Integer::from(&b.0 - &a.0), Integer::from(&b.1 - &a.1));
-    let den = cross(&d, &e);
-    if den == 0 {
-        return None;
-    }
-    let num = cross(&a, &b);
-    let x = Integer::from(p.hx() * &den) + Integer::from(&num * &d.0);
-    let y = Integer::from(p.hy() * &den) + Integer::from(&num * &d.1);
-    let point = RatPoint::new(x, y, Integer::from(w * &den)).expect("den != 0");
+    let x = Integer::from(p.hx() * &den) + Integer::from(&num * &dx);
+    let y = Integer::from(p.hy() * &den) + Integer::from(&num * &dy);
+    let point = RatPoint::new(x, y, Integer::from(p.hw() * &den)).expect("den != 0");
     Some(RayPoint { point, num, den })
 }
 
@@ -71,7 +114,13 @@ fn on_edge(map: &Map, e: usize, q: &RatPoint) -> OnMap {
 
 /// Build V_p from `leaves`: for each angular interval, counter-clockwise,
 /// the map vertex whose direction starts it and the nearest map edge on it.
-pub(crate) fn assemble(map: &Map, p: &RatPoint, leaves: &[(usize, usize)]) -> VisibilityPolygon {
+pub(crate) fn assemble(
+    map: &Map,
+    p: &RatPoint,
+    coord_bits: u32,
+    leaves: &[(usize, usize)],
+) -> VisibilityPolygon {
+    let fast = fits_fast(p, coord_bits);
     let g = leaves.len();
     let mut raw = Vec::new();
     for k in 0..g {
@@ -79,8 +128,9 @@ pub(crate) fn assemble(map: &Map, p: &RatPoint, leaves: &[(usize, usize)]) -> Vi
         if before == after {
             continue;
         }
-        let a = ray_meets_edge_line(map, p, dir, before).expect("the limit of hits is finite");
-        let b = ray_meets_edge_line(map, p, dir, after).expect("the limit of hits is finite");
+        let a =
+            ray_meets_edge_line(map, p, fast, dir, before).expect("the limit of hits is finite");
+        let b = ray_meets_edge_line(map, p, fast, dir, after).expect("the limit of hits is finite");
         if a.point == b.point {
             raw.push(RawVertex {
                 on_map: on_edge(map, after, &b.point),

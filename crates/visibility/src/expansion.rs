@@ -7,7 +7,8 @@
 //! it. Every map edge the cone reaches is the nearest edge on that cone,
 //! which is what [`crate::assemble`] needs.
 
-use crate::assemble::assemble;
+use crate::assemble::{assemble, fits_fast};
+use crate::locate::Grid;
 use crate::polygon::{VisibilityError, VisibilityPolygon};
 use crate::triangulation::{Across, Triangulation};
 use rug::Integer;
@@ -20,6 +21,7 @@ use wai_map::Map;
 pub struct VisibilityIndex<'m> {
     map: &'m Map,
     triangulation: Triangulation,
+    grid: Grid,
     /// Bits of the largest map coordinate (for the fast path).
     coord_bits: u32,
 }
@@ -46,14 +48,9 @@ enum Frame<'a> {
     },
 }
 
-const FAST_BITS: u32 = 61;
-
 impl<'a> Frame<'a> {
     fn new(p: &RatPoint, v: &'a [Point], coord_bits: u32) -> Frame<'a> {
-        let small = |i: &Integer| i.significant_bits() <= FAST_BITS;
-        let fits =
-            small(p.hx()) && small(p.hy()) && p.hw().significant_bits() + coord_bits <= FAST_BITS;
-        if fits {
+        if fits_fast(p, coord_bits) {
             Frame::Fast {
                 x: p.hx().to_i128().expect("fits"),
                 y: p.hy().to_i128().expect("fits"),
@@ -119,9 +116,12 @@ impl<'m> VisibilityIndex<'m> {
             .map(Point::magnitude_bits)
             .max()
             .unwrap_or(0);
+        let triangulation = Triangulation::new(map);
+        let grid = Grid::new(map, &triangulation);
         VisibilityIndex {
             map,
-            triangulation: Triangulation::new(map),
+            triangulation,
+            grid,
             coord_bits,
         }
     }
@@ -147,13 +147,17 @@ impl<'m> VisibilityIndex<'m> {
         let tri = &self.triangulation;
         // Locate p: a triangle with p in its closed interior.
         let mut start = None;
-        for t in 0..tri.len() {
-            let c = tri.triangle(t);
-            let s = [0, 1, 2].map(|k| frame.turn(c[k], c[(k + 1) % 3]));
-            if s.iter().all(|&o| o != Ordering::Less) {
-                start = Some((t, s));
-                break;
+        'search: for &t in self.grid.candidates(p) {
+            let c = tri.triangle(t as usize);
+            let mut s = [Ordering::Equal; 3];
+            for k in 0..3 {
+                s[k] = frame.turn(c[k], c[(k + 1) % 3]);
+                if s[k] == Ordering::Less {
+                    continue 'search;
+                }
             }
+            start = Some((t as usize, s));
+            break;
         }
         let Some((t0, signs)) = start else {
             return Err(VisibilityError::Outside(p.clone()));
@@ -247,6 +251,6 @@ impl<'m> VisibilityIndex<'m> {
                 }
             }
         }
-        Ok(assemble(self.map, p, &leaves))
+        Ok(assemble(self.map, p, self.coord_bits, &leaves))
     }
 }

@@ -21,6 +21,7 @@ mod assemble;
 mod classify;
 mod expansion;
 mod kernel;
+mod locate;
 mod polygon;
 pub mod reference;
 mod skeleton;

@@ -144,5 +144,11 @@ pub fn visibility_polygon(map: &Map, p: &RatPoint) -> Result<VisibilityPolygon, 
             (dirs[k], edge)
         })
         .collect();
-    Ok(assemble(map, p, &leaves))
+    let coord_bits = map
+        .vertices()
+        .iter()
+        .map(|v| v.magnitude_bits())
+        .max()
+        .unwrap_or(0);
+    Ok(assemble(map, p, coord_bits, &leaves))
 }
