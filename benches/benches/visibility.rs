@@ -25,14 +25,11 @@ const SIZES: &[usize] = &[10, 100, 1000, 4000, 10_000];
 fn maps() -> Vec<(&'static str, usize, Map)> {
     let mut out = Vec::new();
     for &n in SIZES {
-        // random-simple-star is capped at 4096 vertices.
-        if n <= 4096 {
-            out.push((
-                "random-simple-star",
-                n,
-                wai_gen::random("random-simple-star", n, 1).unwrap(),
-            ));
-        }
+        out.push((
+            "random-simple-star",
+            n,
+            wai_gen::random("random-simple-star", n, 1).unwrap(),
+        ));
         out.push((
             "random-orthogonal",
             n,
@@ -99,5 +96,32 @@ fn bench(c: &mut Criterion) {
     g.finish();
 }
 
-criterion_group!(benches, bench);
+/// V_p and V*_p (with its canonical key) from a viewpoint near every vertex
+/// of a 1 000-vertex map, preprocessing excluded: the loop over all
+/// vertices is one iteration. Id `skeleton/every-vertex/{kind}/n=1000`.
+fn every_vertex(c: &mut Criterion) {
+    let mut g = c.benchmark_group("skeleton");
+    g.sample_size(10).measurement_time(Duration::from_secs(5));
+    for kind in ["random-simple-star", "random-orthogonal"] {
+        let map = wai_gen::random(kind, 1000, 1).unwrap();
+        let index = VisibilityIndex::new(&map);
+        let views = wai_benches::viewpoints::near_vertices(&map);
+        let id = BenchmarkId::new(format!("every-vertex/{kind}"), format!("n={}", map.n()));
+        g.bench_with_input(id, &(), |b, _| {
+            b.iter(|| {
+                views
+                    .iter()
+                    .map(|p| {
+                        let vp = index.visibility_polygon(p).unwrap();
+                        let sk = wai_visibility::Skeleton::of(&map, &vp).unwrap();
+                        std::hint::black_box(sk.key()).offsets.len()
+                    })
+                    .sum::<usize>()
+            })
+        });
+    }
+    g.finish();
+}
+
+criterion_group!(benches, bench, every_vertex);
 criterion_main!(benches);

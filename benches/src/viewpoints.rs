@@ -28,3 +28,38 @@ pub fn interior_viewpoints(map: &Map, count: usize, seed: u64) -> Vec<RatPoint> 
     }
     out
 }
+
+/// For every map vertex v with neighbours u and w, an interior point near
+/// it: `v ± s / K` with `s = (u − v) + (w − v)`, which points into the
+/// interior angle at a convex vertex and out of it at a reflex one (hence
+/// the sign), and the least power of two `K ≥ 64` that puts the point
+/// strictly inside.
+pub fn near_vertices(map: &Map) -> Vec<RatPoint> {
+    let v = map.vertices();
+    let n = v.len();
+    (0..n)
+        .map(|i| {
+            let (a, b, c) = (v[(i + n - 1) % n], v[i], v[(i + 1) % n]);
+            let sign = if map.is_reflex(i) { -1 } else { 1 };
+            let sx = sign * ((a.x - b.x) + (c.x - b.x));
+            let sy = sign * ((a.y - b.y) + (c.y - b.y));
+            let mut k = Integer::from(64);
+            loop {
+                let p = RatPoint::new(
+                    Integer::from(&k * b.x) + sx,
+                    Integer::from(&k * b.y) + sy,
+                    k.clone(),
+                )
+                .expect("positive denominator");
+                if locate_rat(v, &p) == Containment::Inside {
+                    break p;
+                }
+                k *= 2;
+                assert!(
+                    k.significant_bits() < 200,
+                    "no interior point near vertex {i}"
+                );
+            }
+        })
+        .collect()
+}

@@ -17,6 +17,9 @@
 //!   of [`wai_gen::RANDOM_KINDS`] × n ∈ {10, 20, 50, 100, 200, 500} (n = 300
 //!   instead of 500 for `random-simple-2opt`, whose generator stops there),
 //!   seeds 1, 2, …;
+//! - the thesis families of [`wai_gen::FAMILIES`] with the 4 least accepted
+//!   values of their one parameter, whose figure viewpoints
+//!   [`wai_lemmas::sample::viewpoints`] puts first;
 //! - every map of `agplib/{simple,ortho,vonkoch}` and `r2v` under the
 //!   datasets directory (`<repo>/../shared/datasets`, or `--datasets DIR`).
 //!
@@ -35,16 +38,27 @@
 //! - **C2 collinear vertices**: CGAL reports every map vertex it meets in
 //!   the middle of a straight stretch of the boundary of V_p; ours has no
 //!   180° vertex. [`drop_collinear`] reduces CGAL's reply to its corners.
+//!   In every case seen the stretch lies on a line through the viewpoint
+//!   (p on the line of a map edge, or a window grazing several collinear
+//!   reflex vertices) and the dropped point is a map vertex; both are
+//!   counted.
 //! - **C3 duplicates, needles**: neither side repeats a vertex or reports a
-//!   needle; nothing is done for them, but a CGAL reply with a repeated
-//!   vertex is counted (and [`drop_collinear`] would remove the repetition).
+//!   needle; nothing is done for them, and a CGAL reply with a repeated
+//!   vertex is reported as unexplained.
 //!
 //! A comparison is an *exact match* if CGAL's reply equals ours vertex for
 //! vertex, a *match after C2* if `drop_collinear(cgal)` does, and an
-//! *unexplained mismatch* otherwise; production ≠ reference, an error of
-//! either side, a refused map or a 180° vertex in ours are unexplained too.
-//! Each one is printed in full with its replay data, and the exit status is
-//! 1 if there is any.
+//! *unexplained mismatch* otherwise. Also unexplained: production ≠
+//! reference, an error of either side, a map CGAL refuses, a 180° or
+//! repeated vertex in ours, and a failed `sees` cross-check of ours (n ≤ 100:
+//! every vertex on the map boundary, every map vertex that
+//! [`wai_exact::sees`] the viewpoint on the boundary of V_p). Each one is
+//! printed in full with its replay data, and the exit status is 1 if there
+//! is any (2 for bad arguments or a missing peer).
+//!
+//! Other options: `--viewpoints K`, `--no-datasets`, `--datasets DIR`,
+//! `--max-dataset-n N`, `--examples K` (print matches after C2 in full),
+//! `--inject-fault K` (self-test of the harness); see `--help`.
 //!
 //! Progress goes to stderr, the report to stdout.
 
@@ -66,22 +80,25 @@ const DATASET_DIRS: [&str; 4] = ["agplib/simple", "agplib/ortho", "agplib/vonkoc
 const REFERENCE_MAX_N: usize = 100;
 /// Maps from this size on get fewer viewpoints.
 const LARGE_N: usize = 1000;
+/// Thesis family maps per family: the least accepted values of its one parameter.
+const FAMILY_PARAMS: u32 = 4;
 /// A progress line every this many viewpoints.
 const PROGRESS_EVERY: usize = 500;
 
-const USAGE: &str =
-    "usage: compare_cgal [--polygons N] [--quick] [--viewpoints K] [--no-datasets] \
-                     [--datasets DIR] [--max-dataset-n N] [--examples K] [--inject-fault K]\n\
-  --polygons N       random maps (default 2016; 200 with --quick)\n\
-  --quick            200 random maps, r2v, AGPLIB maps with n <= 100\n\
-  --viewpoints K     viewpoints per map with n < 1000, 2/3 sampled, 1/3 random (default 6;\n\
-                     n >= 1000: K/2)\n\
-  --no-datasets      random maps only\n\
-  --datasets DIR     the shared datasets directory (default <repo>/../shared/datasets)\n\
-  --max-dataset-n N  skip AGPLIB maps with more than N vertices (default: none; --quick: 100)\n\
-  --examples K       print the first K matches after C2 in full\n\
-  --inject-fault K   self-test of the harness: drop a vertex from every K-th polygon of ours\n\
-                     before comparing (every one must be reported; exit status 1)";
+const USAGE: &str = concat!(
+    "usage: compare_cgal [--polygons N] [--quick] [--viewpoints K] [--no-datasets]\n",
+    "                    [--datasets DIR] [--max-dataset-n N] [--examples K] [--inject-fault K]\n",
+    "  --polygons N       random maps (default 2016; 200 with --quick)\n",
+    "  --quick            200 random maps, r2v, AGPLIB maps with n <= 100\n",
+    "  --viewpoints K     viewpoints per map with n < 1000, 2/3 sampled, 1/3 random\n",
+    "                     (default 6; n >= 1000: ceil(K/2))\n",
+    "  --no-datasets      random maps only\n",
+    "  --datasets DIR     the shared datasets directory (default <repo>/../shared/datasets)\n",
+    "  --max-dataset-n N  skip AGPLIB maps with more than N vertices (default: none; --quick: 100)\n",
+    "  --examples K       print the first K matches after C2 in full\n",
+    "  --inject-fault K   self-test of the harness: drop a vertex from every K-th polygon of\n",
+    "                     ours before comparing (each must be reported; exit status 1)",
+);
 
 #[derive(Debug)]
 struct Args {
@@ -249,6 +266,8 @@ struct Tally {
     cgal_compared: usize,
     exact: usize,
     after_c2: usize,
+    /// Of `after_c2`, at random (not sampled) viewpoints.
+    after_c2_random: usize,
     /// Collinear vertices CGAL reported (dropped by C2): map vertices, others.
     dropped_map_vertices: usize,
     dropped_other: usize,
@@ -273,6 +292,7 @@ impl Tally {
         self.cgal_compared += o.cgal_compared;
         self.exact += o.exact;
         self.after_c2 += o.after_c2;
+        self.after_c2_random += o.after_c2_random;
         self.dropped_map_vertices += o.dropped_map_vertices;
         self.dropped_other += o.dropped_other;
         self.dropped_through_p += o.dropped_through_p;
@@ -568,11 +588,16 @@ impl Run {
             };
             let t = self.tally(group);
             t.cgal_compared += 1;
-            let mut dedup = theirs.clone();
-            dedup.dedup();
-            if dedup.len() != theirs.len() || (dedup.len() > 1 && dedup.first() == dedup.last()) {
+            let mut distinct = theirs.clone();
+            distinct.sort();
+            distinct.dedup();
+            if distinct.len() != theirs.len() {
+                // Against C3: reported, then compared as usual.
                 t.with_duplicates += 1;
+                let text = format!("{vp_text}  CGAL: {}\n", points_text(&theirs));
+                self.finding(group, "CGAL: repeated vertex", header(&text));
             }
+            let t = self.tally(group);
             if theirs == ours {
                 t.exact += 1;
                 continue;
@@ -589,6 +614,9 @@ impl Run {
                     self.examples.push(header(&text));
                 }
                 let t = self.tally(group);
+                if *how == "random" {
+                    t.after_c2_random += 1;
+                }
                 let k = theirs.len();
                 for (i, q) in theirs.iter().enumerate() {
                     if corners.contains(q) {
@@ -622,10 +650,11 @@ fn main() -> ExitCode {
     let args = match parse_args() {
         Ok(a) => a,
         Err(e) => {
-            if !e.is_empty() {
-                eprintln!("compare_cgal: {e}");
+            if e.is_empty() {
+                println!("{USAGE}");
+                return ExitCode::SUCCESS;
             }
-            eprintln!("{USAGE}");
+            eprintln!("compare_cgal: {e}\n{USAGE}");
             return ExitCode::from(2);
         }
     };
@@ -667,6 +696,28 @@ fn main() -> ExitCode {
             Err(e) => load_errors.push(e),
         }
     }
+    // The thesis families, whose maps `sample::viewpoints` recognises: the
+    // viewpoints of the thesis figures come first.
+    for f in wai_gen::FAMILIES {
+        // The FAMILY_PARAMS least accepted values of the one parameter.
+        let family_maps: Vec<(u32, Map)> = (0..=FAMILY_PARAMS + 2)
+            .filter_map(|k| wai_gen::family(f.id, &[k]).ok().map(|m| (k, m)))
+            .take(FAMILY_PARAMS as usize)
+            .collect();
+        if family_maps.len() < FAMILY_PARAMS as usize {
+            load_errors.push(format!("wai_gen::family({:?}, &[k]): too few maps", f.id));
+        }
+        for (k, map) in family_maps {
+            maps += 1;
+            let input = Input {
+                group: "thesis families".to_owned(),
+                replay: format!("wai_gen::family({:?}, &[{k}])", f.id),
+                map,
+                seed: 5_000_000 + u64::from(k),
+            };
+            run.compare_map(&input, maps);
+        }
+    }
     let random_time = t_random.elapsed();
     let t_data = Instant::now();
     let mut skipped_large = 0usize;
@@ -703,7 +754,7 @@ fn main() -> ExitCode {
     }
     println!("# compare_cgal: wai's V_p (production, reference) against CGAL 5.5 Triangular_expansion_visibility_2 (Epeck)");
     println!(
-        "# {} random maps ({:.1?}), datasets: {} ({:.1?}){}",
+        "# {} random maps and the thesis families ({:.1?}), datasets: {} ({:.1?}){}",
         args.polygons,
         random_time,
         match &args.datasets {
@@ -755,6 +806,10 @@ fn main() -> ExitCode {
         total.dropped_map_vertices + total.dropped_other,
         total.dropped_map_vertices,
         total.dropped_other
+    );
+    println!(
+        "    of these matches, at random viewpoints: {}",
+        total.after_c2_random
     );
     println!(
         "    of the dropped vertices, on a straight stretch through the viewpoint: {}",

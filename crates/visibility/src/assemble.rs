@@ -128,6 +128,17 @@ pub(crate) fn assemble(
         if before == after {
             continue;
         }
+        // The common case, a corner: consecutive edges meeting at the very
+        // vertex that defines the direction. Both hits are that vertex.
+        if after == (before + 1) % map.n() && dir == after {
+            raw.push(RawVertex {
+                point: RatPoint::from(map.vertices()[dir]),
+                on_map: OnMap::Vertex(dir),
+                far_end_of_ray: false,
+                after: Along::MapEdge(after),
+            });
+            continue;
+        }
         let a =
             ray_meets_edge_line(map, p, fast, dir, before).expect("the limit of hits is finite");
         let b = ray_meets_edge_line(map, p, fast, dir, after).expect("the limit of hits is finite");

@@ -1,0 +1,27 @@
+//! The visibility cell decomposition (thesis sec. 3.6, Def 3.8, Thm 3.3).
+//!
+//! This crate is the `cells` stage of the pipeline: map → visibility rays →
+//! exact arrangement of map edges and rays → cells with the boundary
+//! assignment of sec. 3.6. Today it holds the first step.
+//!
+//! The principal type is [`VisibilityRay`] (Def 3.8): the directed segment
+//! inside the map on the line through a vertex `v` and a reflex vertex
+//! `v_r` that `v` is visible from or adjacent to, starting at `v_r`, moving
+//! away from `v` and ending on the map boundary, with its side (left or
+//! right: where the anchor's map edges lie, which is the side the boundary
+//! assignment of sec. 3.6 gives the ray's points to). [`visibility_rays`]
+//! computes all of them exactly; its `# Edge cases` section states the
+//! conventions for rays that would leave the map at once, graze map
+//! vertices, run along collinear map edges or end at a vertex.
+//! [`group_by_line`] groups rays by their supporting line ([`LineKey`]) for
+//! the arrangement, which merges overlapping rays.
+//!
+//! # Invariant
+//! No floating point is read or written: every decision is a `wai_exact`
+//! predicate on integer map vertices, and every constructed point is an
+//! exact [`wai_exact::RatPoint`].
+
+mod rays;
+
+pub use rays::{group_by_line, visibility_rays, LineKey, RayEnd, RaySide, VisibilityRay};
+pub use wai_visibility::OnMap;
