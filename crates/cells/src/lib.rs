@@ -2,9 +2,17 @@
 //!
 //! This crate is the `cells` stage of the pipeline: map → visibility rays →
 //! exact arrangement of map edges and rays → cells with the boundary
-//! assignment of sec. 3.6. Today it holds the first step.
+//! assignment of sec. 3.6. Today it holds the rays, the arrangement and the
+//! assignment; skeletons of cells and equivalence classes come next.
 //!
-//! The principal type is [`VisibilityRay`] (Def 3.8): the directed segment
+//! [`Arrangement`] is the half-edge structure of the map edges and all rays
+//! (topology by indices, exact geometry attached by index; collinear rays
+//! merged; any number of rays through one point give one vertex), with a
+//! layered `sanity_check`. [`BoundaryAssignment`] gives every edge and
+//! vertex of the arrangement its cell by the rule of sec. 3.6 and reports
+//! every [`Conflict`] where rays on one piece disagree.
+//!
+//! [`VisibilityRay`] (Def 3.8) is the directed segment
 //! inside the map on the line through a vertex `v` and a reflex vertex
 //! `v_r` that `v` is visible from or adjacent to, starting at `v_r`, moving
 //! away from `v` and ending on the map boundary, with its side (left or
@@ -21,7 +29,15 @@
 //! predicate on integer map vertices, and every constructed point is an
 //! exact [`wai_exact::RatPoint`].
 
+mod arrangement;
+mod assignment;
 mod rays;
+mod sanity;
 
+pub use arrangement::{
+    Arrangement, EdgeGeometry, EdgeId, Face, FaceId, HalfEdge, HalfEdgeId, RayGroup, Support,
+    Vertex, VertexId,
+};
+pub use assignment::{BoundaryAssignment, Conflict};
 pub use rays::{group_by_line, visibility_rays, LineKey, RayEnd, RaySide, VisibilityRay};
 pub use wai_visibility::OnMap;

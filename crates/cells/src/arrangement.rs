@@ -1,0 +1,597 @@
+//! The exact arrangement of the map edges and the visibility rays (Def 3.8)
+//! as a half-edge structure.
+//!
+//! Topology apart from geometry (STYLE 4): [`Vertex`], [`HalfEdge`] and
+//! [`Face`] hold indices only; each vertex's exact point, each edge's
+//! supporting segment ([`Support`]) and the rays covering it are attached
+//! by index.
+
+use crate::assignment::{assign, BoundaryAssignment, Conflict};
+use crate::rays::{group_by_line, LineKey, VisibilityRay};
+use rug::{Integer, Rational};
+use std::cmp::Ordering;
+use std::collections::HashMap;
+use wai_exact::{construct_intersection, orientation_rat, Line, Orientation, RatPoint};
+use wai_map::Map;
+use wai_visibility::OnMap;
+
+/// Index of a vertex of an [`Arrangement`]; map vertex `i` is vertex `i`.
+pub type VertexId = usize;
+/// Index of a half-edge; the two halves of edge `e` are `2e` and `2e + 1`.
+pub type HalfEdgeId = usize;
+/// Index of an (undirected) edge: half-edges `2e` and `2e + 1`.
+pub type EdgeId = usize;
+/// Index of a face; [`Arrangement::outer_face`] is the exterior of the map.
+pub type FaceId = usize;
+
+/// Topology of a vertex: one outgoing half-edge.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Vertex {
+    pub out: HalfEdgeId,
+}
+
+/// Topology of a half-edge. Its face lies to its left; `next` continues
+/// the boundary of that face counter-clockwise (clockwise for the outer
+/// face, which lies outside the map).
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct HalfEdge {
+    pub origin: VertexId,
+    pub twin: HalfEdgeId,
+    pub next: HalfEdgeId,
+    pub prev: HalfEdgeId,
+    pub face: FaceId,
+}
+
+/// Topology of a face: one half-edge of its (only) boundary cycle.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Face {
+    pub outer: HalfEdgeId,
+}
+
+/// The segment an edge lies on.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Support {
+    /// Map edge `i` (from map vertex `i` to `i + 1`).
+    MapEdge(usize),
+    /// Ray group `g` (see [`Arrangement::ray_group`]): rays on one line.
+    Rays(usize),
+}
+
+/// The visibility rays on one line, merged (edge case (c) of
+/// [`crate::visibility_rays`]).
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct RayGroup {
+    /// The line.
+    pub key: LineKey,
+    /// Indices into the rays, ascending.
+    pub rays: Vec<usize>,
+    /// The group's direction: the primitive integer direction of its first
+    /// ray. Half-edge `2e` of each of its edges points this way.
+    pub dir: (i128, i128),
+}
+
+/// Geometry of an edge, by index.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct EdgeGeometry {
+    pub support: Support,
+    /// The rays (indices into the rays) whose closed segment contains the
+    /// edge; empty for map edges.
+    pub rays: Vec<usize>,
+}
+
+/// The exact arrangement of the map edges and all visibility rays: the
+/// visibility cell decomposition of Def 3.8, with the boundary assignment
+/// of sec. 3.6 ([`Arrangement::owner_of_edge`],
+/// [`Arrangement::owner_of_vertex`]).
+///
+/// Face [`Arrangement::outer_face`] (always 0) is the exterior of the map;
+/// every other face is a visibility cell (Thm 3.3: convex).
+///
+/// # Edge cases
+/// - Any number of rays through one point give one vertex (points are
+///   deduplicated by exact equality).
+/// - Collinear rays are merged per line ([`RayGroup`]): an edge on a line
+///   lists every ray covering it ([`Arrangement::edge_rays`]).
+/// - A vertex splits every segment through it: a ray end in an edge's
+///   relative interior splits that map edge, a grazed map vertex splits the
+///   ray through it.
+///
+/// ```
+/// use wai_cells::{visibility_rays, Arrangement};
+/// use wai_exact::Point;
+/// use wai_map::Map;
+/// // The L room: 4 rays from the reflex corner (2, 2) cut it into 5 cells.
+/// let ring = [(0, 0), (4, 0), (4, 2), (2, 2), (2, 4), (0, 4)];
+/// let map = Map::from_ring(ring.iter().map(|&(x, y)| Point::new(x, y)).collect()).unwrap().0;
+/// let rays = visibility_rays(&map);
+/// let arr = Arrangement::new(&map, &rays);
+/// arr.sanity_check().unwrap();
+/// assert_eq!((arr.vertex_count(), arr.edge_count(), arr.face_count()), (8, 12, 6));
+/// ```
+///
+/// # Complexity
+/// Intersections are found by testing every pair of rays on different
+/// lines (an integer bounding-box filter, then an exact construction): `O(R²)`
+/// for `R` rays, plus `O(k log k)` per supporting segment with `k` points.
+/// Fine for `R` up to a few thousand; a sweep is a later task.
+#[derive(Clone, Debug)]
+pub struct Arrangement {
+    // Topology.
+    pub(crate) vertices: Vec<Vertex>,
+    pub(crate) half_edges: Vec<HalfEdge>,
+    pub(crate) faces: Vec<Face>,
+    // Geometry, by index.
+    pub(crate) points: Vec<RatPoint>,
+    pub(crate) on_boundary: Vec<bool>,
+    pub(crate) edges: Vec<EdgeGeometry>,
+    pub(crate) groups: Vec<RayGroup>,
+    pub(crate) map: Map,
+    pub(crate) rays: Vec<VisibilityRay>,
+    pub(crate) assignment: BoundaryAssignment,
+}
+
+/// The primitive integer direction of `line`.
+pub(crate) fn primitive_dir(line: &Line) -> (i128, i128) {
+    let (a, b) = (line.a(), line.b());
+    let (dx, dy) = (b.x - a.x, b.y - a.y);
+    let g = gcd(dx.unsigned_abs(), dy.unsigned_abs());
+    let g = i128::try_from(g).expect("a coordinate difference fits an i128");
+    (dx / g, dy / g)
+}
+
+fn gcd(mut x: u128, mut y: u128) -> u128 {
+    while y != 0 {
+        (x, y) = (y, x % y);
+    }
+    x
+}
+
+/// The sign of the cross product `u × v`, exactly.
+pub(crate) fn cross_sign(u: (i128, i128), v: (i128, i128)) -> Ordering {
+    match (u.0.checked_mul(v.1), u.1.checked_mul(v.0)) {
+        (Some(p), Some(q)) if p.checked_sub(q).is_some() => (p - q).cmp(&0),
+        _ => (Integer::from(u.0) * v.1 - Integer::from(u.1) * v.0).cmp0(),
+    }
+}
+
+/// The sign of the dot product `u · v`, exactly.
+pub(crate) fn dot_sign(u: (i128, i128), v: (i128, i128)) -> Ordering {
+    (Integer::from(u.0) * v.0 + Integer::from(u.1) * v.1).cmp0()
+}
+
+/// Counter-clockwise angular order of nonzero directions, starting at the
+/// positive x axis.
+pub(crate) fn compare_angle(u: (i128, i128), v: (i128, i128)) -> Ordering {
+    let half = |d: (i128, i128)| u8::from(!(d.1 > 0 || (d.1 == 0 && d.0 > 0)));
+    half(u).cmp(&half(v)).then_with(|| cross_sign(v, u))
+}
+
+/// `d · p` for a rational point, exactly.
+pub(crate) fn along(d: (i128, i128), p: &RatPoint) -> Rational {
+    let num = Integer::from(p.hx() * d.0) + Integer::from(p.hy() * d.1);
+    Rational::from((num, p.hw().clone()))
+}
+
+/// Integer bounding box `(xmin, ymin, xmax, ymax)` of rational points
+/// (floors and ceilings).
+pub(crate) fn bbox<'a>(pts: impl IntoIterator<Item = &'a RatPoint>) -> [i128; 4] {
+    let mut b = [i128::MAX, i128::MAX, i128::MIN, i128::MIN];
+    for p in pts {
+        let fl = |c: &Integer| {
+            let (q, _) = c.clone().div_rem_floor(p.hw().clone());
+            q.to_i128().expect("map coordinates fit an i128")
+        };
+        let ce = |c: &Integer| {
+            let (q, _) = c.clone().div_rem_ceil(p.hw().clone());
+            q.to_i128().expect("map coordinates fit an i128")
+        };
+        b[0] = b[0].min(fl(p.hx()));
+        b[1] = b[1].min(fl(p.hy()));
+        b[2] = b[2].max(ce(p.hx()));
+        b[3] = b[3].max(ce(p.hy()));
+    }
+    b
+}
+
+pub(crate) fn boxes_meet(a: &[i128; 4], b: &[i128; 4]) -> bool {
+    a[0] <= b[2] && b[0] <= a[2] && a[1] <= b[3] && b[1] <= a[3]
+}
+
+struct Points {
+    points: Vec<RatPoint>,
+    index: HashMap<RatPoint, VertexId>,
+}
+
+impl Points {
+    fn intern(&mut self, p: RatPoint) -> VertexId {
+        if let Some(&i) = self.index.get(&p) {
+            return i;
+        }
+        let i = self.points.len();
+        self.points.push(p.clone());
+        self.index.insert(p, i);
+        i
+    }
+
+    fn ray_end(&mut self, r: &VisibilityRay) -> VertexId {
+        match r.end.on_map {
+            OnMap::Vertex(i) => i,
+            OnMap::Edge(_) => self.intern(r.end.point.clone()),
+        }
+    }
+}
+
+/// Sort point ids by `d · p` and drop duplicates.
+fn sort_along(d: (i128, i128), ids: &mut Vec<VertexId>, points: &[RatPoint]) {
+    ids.sort_unstable();
+    ids.dedup();
+    let mut keyed: Vec<(Rational, VertexId)> =
+        ids.iter().map(|&i| (along(d, &points[i]), i)).collect();
+    keyed.sort();
+    *ids = keyed.into_iter().map(|(_, i)| i).collect();
+}
+
+impl Arrangement {
+    /// The arrangement of the edges of `map` and the visibility rays
+    /// `rays` (normally [`crate::visibility_rays`]`(map)`; any subset gives
+    /// a valid subdivision, though its faces need not be convex).
+    pub fn new(map: &Map, rays: &[VisibilityRay]) -> Arrangement {
+        let v = map.vertices();
+        let n = v.len();
+        let mut pts = Points {
+            points: Vec::new(),
+            index: HashMap::new(),
+        };
+        for &p in v {
+            pts.intern(RatPoint::from(p));
+        }
+        // Groups, their directions, and the ray ends.
+        let groups: Vec<RayGroup> = group_by_line(rays)
+            .into_iter()
+            .map(|(key, rs)| {
+                let dir = primitive_dir(&rays[rs[0]].line);
+                RayGroup { key, rays: rs, dir }
+            })
+            .collect();
+        let mut group_of = vec![0; rays.len()];
+        for (g, grp) in groups.iter().enumerate() {
+            for &r in &grp.rays {
+                group_of[r] = g;
+            }
+        }
+        let ends: Vec<VertexId> = rays.iter().map(|r| pts.ray_end(r)).collect();
+        let mut on_line: Vec<Vec<VertexId>> = groups
+            .iter()
+            .map(|grp| {
+                let mut ids = Vec::new();
+                for &r in &grp.rays {
+                    ids.push(rays[r].anchor);
+                    ids.extend(rays[r].grazed.iter().copied());
+                    ids.push(ends[r]);
+                }
+                ids
+            })
+            .collect();
+        // Pairwise intersections of rays on different lines.
+        let boxes: Vec<[i128; 4]> = rays
+            .iter()
+            .zip(&ends)
+            .map(|(r, &e)| bbox([&pts.points[r.anchor], &pts.points[e]]))
+            .collect();
+        let dirs: Vec<(i128, i128)> = rays.iter().map(|r| primitive_dir(&r.line)).collect();
+        let span: Vec<(Rational, Rational)> = rays
+            .iter()
+            .enumerate()
+            .map(|(i, r)| {
+                (
+                    along(dirs[i], &pts.points[r.anchor]),
+                    along(dirs[i], &pts.points[ends[i]]),
+                )
+            })
+            .collect();
+        let within = |i: usize, p: &RatPoint| {
+            let t = along(dirs[i], p);
+            span[i].0 <= t && t <= span[i].1
+        };
+        for i in 0..rays.len() {
+            for j in i + 1..rays.len() {
+                if group_of[i] == group_of[j] || !boxes_meet(&boxes[i], &boxes[j]) {
+                    continue;
+                }
+                let Some(x) = construct_intersection(&rays[i].line, &rays[j].line) else {
+                    continue; // parallel lines
+                };
+                if within(i, &x) && within(j, &x) {
+                    let id = pts.intern(x);
+                    on_line[group_of[i]].push(id);
+                    on_line[group_of[j]].push(id);
+                }
+            }
+        }
+        // Points on map edges: the ends of rays in their relative interior.
+        let mut on_edge: Vec<Vec<VertexId>> = (0..n).map(|i| vec![i, (i + 1) % n]).collect();
+        for (r, &e) in rays.iter().zip(&ends) {
+            if let OnMap::Edge(i) = r.end.on_map {
+                on_edge[i].push(e);
+            }
+        }
+        let points = pts.points;
+        let mut on_boundary = vec![false; points.len()];
+        // Edges: map edges first, then ray groups.
+        let mut edges: Vec<EdgeGeometry> = Vec::new();
+        let mut ends_of: Vec<(VertexId, VertexId)> = Vec::new();
+        let mut dir_of: Vec<(i128, i128)> = Vec::new();
+        for (i, ids) in on_edge.iter_mut().enumerate() {
+            let d = primitive_dir(&Line::new(v[i], v[(i + 1) % n]).expect("distinct"));
+            sort_along(d, ids, &points);
+            for w in ids.windows(2) {
+                on_boundary[w[0]] = true;
+                on_boundary[w[1]] = true;
+                edges.push(EdgeGeometry {
+                    support: Support::MapEdge(i),
+                    rays: Vec::new(),
+                });
+                ends_of.push((w[0], w[1]));
+                dir_of.push(d);
+            }
+        }
+        for (g, ids) in on_line.iter_mut().enumerate() {
+            let d = groups[g].dir;
+            sort_along(d, ids, &points);
+            let pos: HashMap<VertexId, usize> =
+                ids.iter().enumerate().map(|(k, &i)| (i, k)).collect();
+            let mut cover: Vec<Vec<usize>> = vec![Vec::new(); ids.len().saturating_sub(1)];
+            for &r in &groups[g].rays {
+                let (a, b) = (pos[&rays[r].anchor], pos[&ends[r]]);
+                for c in &mut cover[a.min(b)..a.max(b)] {
+                    c.push(r);
+                }
+            }
+            for (k, c) in cover.into_iter().enumerate() {
+                if c.is_empty() {
+                    continue;
+                }
+                edges.push(EdgeGeometry {
+                    support: Support::Rays(g),
+                    rays: c,
+                });
+                ends_of.push((ids[k], ids[k + 1]));
+                dir_of.push(d);
+            }
+        }
+        // Half-edges 2e (along the support's direction) and 2e + 1.
+        let mut half_edges: Vec<HalfEdge> = Vec::with_capacity(2 * edges.len());
+        let mut out: Vec<Vec<HalfEdgeId>> = vec![Vec::new(); points.len()];
+        for (e, &(a, b)) in ends_of.iter().enumerate() {
+            for (h, o) in [(2 * e, a), (2 * e + 1, b)] {
+                half_edges.push(HalfEdge {
+                    origin: o,
+                    twin: h ^ 1,
+                    next: usize::MAX,
+                    prev: usize::MAX,
+                    face: usize::MAX,
+                });
+                out[o].push(h);
+            }
+        }
+        let hdir = |h: HalfEdgeId| {
+            let d = dir_of[h / 2];
+            if h.is_multiple_of(2) {
+                d
+            } else {
+                (-d.0, -d.1)
+            }
+        };
+        let mut vertices = Vec::with_capacity(points.len());
+        for o in &mut out {
+            o.sort_by(|&x, &y| compare_angle(hdir(x), hdir(y)));
+            let k = o.len();
+            for i in 0..k {
+                let h = o[i] ^ 1;
+                let nx = o[(i + k - 1) % k];
+                half_edges[h].next = nx;
+                half_edges[nx].prev = h;
+            }
+            vertices.push(Vertex {
+                out: *o.first().expect("every vertex lies on a segment"),
+            });
+        }
+        // Faces; the first traced is the exterior, left of the reverse of
+        // the first piece of map edge 0 (the map is counter-clockwise).
+        let mut faces = Vec::new();
+        for start in std::iter::once(1).chain(0..half_edges.len()) {
+            if half_edges[start].face != usize::MAX {
+                continue;
+            }
+            let f = faces.len();
+            faces.push(Face { outer: start });
+            let mut h = start;
+            while half_edges[h].face == usize::MAX {
+                half_edges[h].face = f;
+                h = half_edges[h].next;
+            }
+        }
+        let mut arr = Arrangement {
+            vertices,
+            half_edges,
+            faces,
+            points,
+            on_boundary,
+            edges,
+            groups,
+            map: map.clone(),
+            rays: rays.to_vec(),
+            assignment: BoundaryAssignment::default(),
+        };
+        arr.assignment = assign(&arr);
+        arr
+    }
+
+    /// The exterior of the map (always face 0).
+    pub fn outer_face(&self) -> FaceId {
+        0
+    }
+    pub fn vertex_count(&self) -> usize {
+        self.vertices.len()
+    }
+    pub fn half_edge_count(&self) -> usize {
+        self.half_edges.len()
+    }
+    pub fn edge_count(&self) -> usize {
+        self.edges.len()
+    }
+    /// Faces including the outer face.
+    pub fn face_count(&self) -> usize {
+        self.faces.len()
+    }
+    /// The bounded faces: the visibility cells.
+    pub fn cells(&self) -> impl Iterator<Item = FaceId> {
+        1..self.faces.len()
+    }
+    pub fn vertex(&self, v: VertexId) -> &Vertex {
+        &self.vertices[v]
+    }
+    pub fn half_edge(&self, h: HalfEdgeId) -> &HalfEdge {
+        &self.half_edges[h]
+    }
+    pub fn face(&self, f: FaceId) -> &Face {
+        &self.faces[f]
+    }
+    /// The exact point of vertex `v`.
+    pub fn point(&self, v: VertexId) -> &RatPoint {
+        &self.points[v]
+    }
+    /// Whether vertex `v` lies on the map boundary.
+    pub fn is_on_map_boundary(&self, v: VertexId) -> bool {
+        self.on_boundary[v]
+    }
+    /// The destination of half-edge `h`.
+    pub fn dest(&self, h: HalfEdgeId) -> VertexId {
+        self.half_edges[self.half_edges[h].twin].origin
+    }
+    /// The supporting segment of edge `e`.
+    pub fn edge_support(&self, e: EdgeId) -> Support {
+        self.edges[e].support
+    }
+    /// The rays (indices into the rays) covering edge `e`.
+    pub fn edge_rays(&self, e: EdgeId) -> &[usize] {
+        &self.edges[e].rays
+    }
+    /// Ray group `g`.
+    pub fn ray_group(&self, g: usize) -> &RayGroup {
+        &self.groups[g]
+    }
+    pub fn ray_groups(&self) -> &[RayGroup] {
+        &self.groups
+    }
+    /// The rays the arrangement was built from.
+    pub fn rays(&self) -> &[VisibilityRay] {
+        &self.rays
+    }
+    pub fn map(&self) -> &Map {
+        &self.map
+    }
+    /// The primitive integer direction of half-edge `h`.
+    pub fn direction(&self, h: HalfEdgeId) -> (i128, i128) {
+        let d = match self.edges[h / 2].support {
+            Support::MapEdge(i) => {
+                let v = self.map.vertices();
+                primitive_dir(&Line::new(v[i], v[(i + 1) % v.len()]).expect("distinct"))
+            }
+            Support::Rays(g) => self.groups[g].dir,
+        };
+        if h.is_multiple_of(2) {
+            d
+        } else {
+            (-d.0, -d.1)
+        }
+    }
+    /// The half-edges of the boundary cycle of face `f`, from its `outer`.
+    pub fn face_half_edges(&self, f: FaceId) -> Vec<HalfEdgeId> {
+        let start = self.faces[f].outer;
+        let mut out = vec![start];
+        let mut h = self.half_edges[start].next;
+        while h != start && out.len() <= self.half_edges.len() {
+            out.push(h);
+            h = self.half_edges[h].next;
+        }
+        out
+    }
+    /// The vertices of face `f` in boundary order (counter-clockwise for a
+    /// cell).
+    pub fn face_vertices(&self, f: FaceId) -> Vec<VertexId> {
+        self.face_half_edges(f)
+            .into_iter()
+            .map(|h| self.half_edges[h].origin)
+            .collect()
+    }
+    /// The half-edges leaving `v`, counter-clockwise.
+    pub fn outgoing(&self, v: VertexId) -> Vec<HalfEdgeId> {
+        let start = self.vertices[v].out;
+        let mut out = vec![start];
+        let mut h = self.half_edges[self.half_edges[start].prev].twin;
+        while h != start && out.len() <= self.half_edges.len() {
+            out.push(h);
+            h = self.half_edges[self.half_edges[h].prev].twin;
+        }
+        out
+    }
+
+    /// Sec. 3.6: the cell that owns the points of edge `e`'s relative
+    /// interior. See [`BoundaryAssignment`] for the rule.
+    pub fn owner_of_edge(&self, e: EdgeId) -> FaceId {
+        self.assignment.edge_owner[e]
+    }
+    /// Sec. 3.6: the cell that owns vertex `v`; `None` when the rays
+    /// through it assign it to no common cell (a [`Conflict::Vertex`]).
+    pub fn owner_of_vertex(&self, v: VertexId) -> Option<FaceId> {
+        self.assignment.vertex_owner[v]
+    }
+    /// Every boundary piece that two rays assign to different cells.
+    pub fn conflicts(&self) -> &[Conflict] {
+        &self.assignment.conflicts
+    }
+    pub fn assignment(&self) -> &BoundaryAssignment {
+        &self.assignment
+    }
+
+    /// Planted violations for tests: point half-edge `h`'s twin at `t`.
+    #[doc(hidden)]
+    pub fn corrupt_twin_for_tests(&mut self, h: HalfEdgeId, t: HalfEdgeId) {
+        self.half_edges[h].twin = t;
+    }
+    /// Planted violations for tests: move vertex `v` to `p`.
+    #[doc(hidden)]
+    pub fn corrupt_point_for_tests(&mut self, v: VertexId, p: RatPoint) {
+        self.points[v] = p;
+    }
+}
+
+/// Twice the signed area of a ring of rational points, exactly.
+pub(crate) fn area_twice_rat(ring: &[&RatPoint]) -> Rational {
+    let mut s = Rational::new();
+    for (i, p) in ring.iter().enumerate() {
+        let q = ring[(i + 1) % ring.len()];
+        let num = Integer::from(p.hx() * q.hy()) - Integer::from(p.hy() * q.hx());
+        s += Rational::from((num, Integer::from(p.hw() * q.hw())));
+    }
+    s
+}
+
+/// Whether `p` lies on the closed segment `ab` (exactly).
+pub(crate) fn on_closed_segment(a: &RatPoint, b: &RatPoint, p: &RatPoint) -> bool {
+    if orientation_rat(a, b, p) != Orientation::Collinear {
+        return false;
+    }
+    let d = |u: &RatPoint, w: &RatPoint| {
+        (
+            Rational::from((u.hx().clone(), u.hw().clone()))
+                - Rational::from((w.hx().clone(), w.hw().clone())),
+            Rational::from((u.hy().clone(), u.hw().clone()))
+                - Rational::from((w.hy().clone(), w.hw().clone())),
+        )
+    };
+    let (ux, uy) = d(p, a);
+    let (vx, vy) = d(p, b);
+    ux * vx + uy * vy <= 0
+}
