@@ -17,7 +17,8 @@
 //!   `driver`, not a claim's module.
 //! - One module per claim, named after the claim's id in lower case with `.`
 //!   replaced by `_` ([`Claim::module_name`]): [`l3_1a`], [`l3_1b`],
-//!   [`l3_1c`], [`d3_5`], [`t3_2`] so far; `t4_2.rs`, `t5_17.rs`,
+//!   [`l3_1c`], [`d3_5`], [`t3_2`], [`t3_3a`], [`t3_3b`], [`t3_9a`] so
+//!   far; `t4_2.rs`, `t5_17.rs`,
 //!   `l3_7t.rs`, … to come. Each module
 //!   - opens with a doc comment that states the claim in our own words and
 //!     cites the thesis (`/// Claim T4.2 (Theorem 4.2).`),
@@ -47,6 +48,9 @@ pub mod l3_1b;
 pub mod l3_1c;
 pub mod sample;
 pub mod t3_2;
+pub mod t3_3a;
+pub mod t3_3b;
+pub mod t3_9a;
 
 pub use driver::{run, Checker, ClaimTally, FoundViolation, Report, Summary, Violation};
 
@@ -226,13 +230,15 @@ pub static CLAIMS: &[Claim] = &[
         Exact,
         "Theorem 3.3(1)",
         "Every visibility cell is convex.",
-    ),
+    )
+    .checked(t3_3a::checker),
     c(
         "T3.3b",
         Exact,
         "Theorem 3.3(2)",
         "All points of a cell, with the boundary the assignment rule of sec. 3.6 gives it, share one skeleton.",
-    ),
+    )
+    .checked(t3_3b::checker),
     c(
         "L3.5",
         Exact,
@@ -256,7 +262,8 @@ pub static CLAIMS: &[Claim] = &[
         Exact,
         "Theorem 3.9 (proof)",
         "At most 2n decomposition vertices lie on any one visibility ray.",
-    ),
+    )
+    .checked(t3_9a::checker),
     c(
         "T3.9b",
         Bound,

@@ -2,6 +2,7 @@
 //! `shared/CLAIMS.md`, the stored maps of `counterexamples/`, and the
 //! chapter 3 visibility checkers over generated and real maps.
 
+mod cell_claims;
 mod counterexamples;
 mod registry;
 mod visibility_claims;
