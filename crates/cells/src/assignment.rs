@@ -15,7 +15,8 @@ pub enum Conflict {
     /// The rays covering `edge` disagree: `left` assign it to the face of
     /// half-edge `2 · edge`, `right` to the face of `2 · edge + 1`
     /// (indices into the rays). `owner` is the default chosen: the choice
-    /// of the ray with the lowest index.
+    /// of the nearest anchor's ray, or of the lowest index when the rays
+    /// point both ways (see [`BoundaryAssignment`]).
     Edge {
         edge: EdgeId,
         left: Vec<usize>,
@@ -36,7 +37,14 @@ pub enum Conflict {
 ///   where the obstruction determined by the anchor lies — the ray's
 ///   [`RaySide`] — so that v is not visible from it. An edge covered by
 ///   several collinear rays gets the side of each; if they differ, the edge
-///   is a [`Conflict::Edge`] and the ray with the lowest index decides.
+///   is a [`Conflict::Edge`]. If they all point the same way along the edge
+///   (one runs on through another's anchor), the ray whose anchor is
+///   nearest behind the edge decides: the last obstruction passed, which is
+///   the one that hides its vertex from the points beyond. If they point both
+///   ways (a doorway between two anchors on one line), no side is right —
+///   the edge's points have a skeleton of their own, a one-dimensional cell
+///   (`counterexamples/T3.3b-doorway-1d-cell.json`) — and the lowest ray
+///   index decides.
 /// - **Edges on the map boundary**: the thesis assumes viewpoints off ∂M;
 ///   so that every point of the closed map has a cell, such an edge belongs
 ///   to its one incident cell.
@@ -87,6 +95,24 @@ impl BoundaryAssignment {
     }
 }
 
+/// If every ray in `rays` points the same way along `dir` (or against it),
+/// the one whose anchor is nearest behind the edge: the last obstruction
+/// the rays pass before reaching it. `None` if the rays point both ways.
+fn nearest_anchor_ray(arr: &Arrangement, rays: &[usize], dir: (i128, i128)) -> Option<usize> {
+    let first = *rays.first()?;
+    let forward = ray_along(arr, first, dir);
+    if rays.iter().any(|&r| ray_along(arr, r, dir) != forward) {
+        return None;
+    }
+    // All rays share the supporting line and direction: compare anchors
+    // along it; the greatest comes last before the edge.
+    let line = arr.rays[first].line;
+    rays.iter().copied().max_by(|&a, &b| {
+        let (pa, pb) = (arr.rays[a].start(), arr.rays[b].start());
+        wai_exact::compare_along(&line, pa, pb).then(b.cmp(&a))
+    })
+}
+
 /// Whether ray `r` points along `g`'s direction.
 fn ray_along(arr: &Arrangement, r: usize, dir: (i128, i128)) -> bool {
     dot_sign(primitive_dir(&arr.rays[r].line), dir) == Ordering::Greater
@@ -113,10 +139,16 @@ pub(crate) fn assign(arr: &Arrangement) -> BoundaryAssignment {
                         right.push(r);
                     }
                 }
-                let owner = if right.is_empty() || (!left.is_empty() && left[0] < right[0]) {
-                    f0
-                } else {
-                    f1
+                let owner = match nearest_anchor_ray(arr, &geom.rays, dir) {
+                    // One way along the edge: the last obstruction passed
+                    // decides (its anchor is nearest behind the edge).
+                    Some(r) if left.contains(&r) => f0,
+                    Some(_) => f1,
+                    // Both ways (a doorway between two anchors): no side
+                    // is right (a one-dimensional cell); the lowest index
+                    // decides, and the conflict is reported.
+                    None if right.is_empty() || (!left.is_empty() && left[0] < right[0]) => f0,
+                    None => f1,
                 };
                 if !left.is_empty() && !right.is_empty() {
                     conflicts.push(Conflict::Edge {

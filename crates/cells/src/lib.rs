@@ -2,8 +2,14 @@
 //!
 //! This crate is the `cells` stage of the pipeline: map → visibility rays →
 //! exact arrangement of map edges and rays → cells with the boundary
-//! assignment of sec. 3.6. Today it holds the rays, the arrangement and the
-//! assignment; skeletons of cells and equivalence classes come next.
+//! assignment of sec. 3.6 → the skeleton of each cell (Def 3.9) →
+//! equivalence classes of cells (Def 3.10).
+//!
+//! Its principal type is [`Decomposition`]: all of these stages for one
+//! map, with the cells in face order, an exact interior point of each, the
+//! index of its skeleton, the classes with their complexity |EC|, and the
+//! [`Counts`] (n, r, rays, cells, N, classes, max |EC|) that chapter 3's
+//! bounds are about.
 //!
 //! [`Arrangement`] is the half-edge structure of the map edges and all rays
 //! (topology by indices, exact geometry attached by index; collinear rays
@@ -31,6 +37,7 @@
 
 mod arrangement;
 mod assignment;
+mod decomposition;
 mod rays;
 mod sanity;
 
@@ -39,5 +46,6 @@ pub use arrangement::{
     Vertex, VertexId,
 };
 pub use assignment::{BoundaryAssignment, Conflict};
+pub use decomposition::{Counts, Decomposition};
 pub use rays::{group_by_line, visibility_rays, LineKey, RayEnd, RaySide, VisibilityRay};
 pub use wai_visibility::OnMap;

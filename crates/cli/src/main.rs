@@ -9,6 +9,7 @@
 //! could not be read or written. Errors say what and where, never panic.
 
 mod commands;
+mod decompose;
 mod input;
 mod vis;
 
@@ -62,6 +63,26 @@ enum Command {
         /// Also draw V_p, its spurious edges and the skeleton into this SVG file.
         #[arg(long)]
         svg: Option<PathBuf>,
+        #[command(flatten)]
+        format: input::FormatArg,
+    },
+    /// The visibility cell decomposition: rays, cells, skeletons and
+    /// equivalence classes, with their counts (thesis sec. 3.6).
+    Decompose {
+        /// Map file (JSON map format or GeoJSON); `-` reads standard input.
+        map: PathBuf,
+        /// Print JSON instead of text.
+        #[arg(long)]
+        json: bool,
+        /// Draw the cells coloured by class into this SVG file.
+        #[arg(long)]
+        svg: Option<PathBuf>,
+        /// With --svg: highlight this class (an index printed by --json).
+        #[arg(long)]
+        class: Option<usize>,
+        /// Skip the memory estimate made before the work starts.
+        #[arg(long)]
+        force: bool,
         #[command(flatten)]
         format: input::FormatArg,
     },
@@ -124,6 +145,23 @@ fn main() -> ExitCode {
             svg,
             format,
         } => vis::vis(&map, &at, json, svg.as_deref(), format.format),
+        Command::Decompose {
+            map,
+            json,
+            svg,
+            class,
+            force,
+            format,
+        } => decompose::decompose(
+            &map,
+            &decompose::Options {
+                json,
+                svg: svg.as_deref(),
+                class,
+                force,
+            },
+            format.format,
+        ),
         Command::Render {
             map,
             out,

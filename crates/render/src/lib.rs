@@ -361,3 +361,33 @@ fn line_across_box(p: Point, q: Point, lo: Point, hi: Point) -> Option<(RatPoint
     let b = hits.iter().find(|h| **h != a)?.clone();
     Some((a, b))
 }
+
+/// Draw cells over their map, each filled with a colour of its class;
+/// with `highlight`, the cells of that class stand out and the others fade.
+/// `cells` holds each cell's exact boundary and its class index.
+pub fn cells_svg(
+    map: &Map,
+    cells: &[(Vec<RatPoint>, usize)],
+    highlight: Option<usize>,
+    style: &MapStyle,
+    caption: &str,
+) -> String {
+    let mut c = Canvas::for_map(map, style.size);
+    c.polygon(map.vertices(), "#ffffff", "#1f3b73", 1.5);
+    for (ring, class) in cells {
+        let (fill, stroke, width) = match highlight {
+            Some(h) if h == *class => ("#d62728".to_string(), "#7f0000", 1.2),
+            Some(_) => ("#e8e8e8".to_string(), "#bbbbbb", 0.3),
+            None => (class_colour(*class), "#555555", 0.3),
+        };
+        c.polygon_rat(ring, &fill, stroke, width);
+    }
+    c.polygon(map.vertices(), "none", "#1f3b73", 1.5);
+    c.finish(map.name().unwrap_or("map"), caption)
+}
+
+/// A stable colour for a class index (golden-angle hues).
+fn class_colour(class: usize) -> String {
+    let hue = (class as f64 * 137.508) % 360.0;
+    format!("hsl({hue:.1}, 65%, 72%)")
+}

@@ -110,6 +110,13 @@ fn cell_decomposition_claims_hold_everywhere() {
             );
             *conflicts.entry(key).or_default() += 1;
         }
+        // Where the covering rays all point one way, the nearest-anchor rule
+        // of wai-cells must give the edge to the cell whose skeleton it has.
+        for (key, count) in &conflicts {
+            if key.starts_with("edge (rays one way)") && !key.ends_with("owner") {
+                failures.push(format!("{set}: {count} one-way conflicts with {key}"));
+            }
+        }
         let ray_max = maps
             .iter()
             .map(|m| {

@@ -1,0 +1,309 @@
+//! The visibility cell decomposition as one value: rays, arrangement,
+//! boundary assignment (sec. 3.6), the skeleton of every cell (Def 3.9) and
+//! the equivalence classes of cells (Def 3.10).
+
+use crate::arrangement::{Arrangement, FaceId};
+use crate::assignment::BoundaryAssignment;
+use crate::rays::{visibility_rays, VisibilityRay};
+use rug::Integer;
+use std::collections::HashMap;
+use wai_exact::{orientation_rat, Orientation, RatPoint};
+use wai_map::Map;
+use wai_visibility::{Skeleton, SkeletonKey, VisibilityIndex};
+
+/// Marks the outer face in the face → cell position table.
+const NOT_A_CELL: usize = usize::MAX;
+
+/// The visibility cell decomposition of a map (Def 3.8) with the skeleton
+/// of each cell (Def 3.9) and its equivalence classes (Def 3.10).
+///
+/// Built in one pass: [`visibility_rays`], [`Arrangement::new`] (which
+/// applies the boundary assignment of sec. 3.6), then for every cell one
+/// exact interior point ([`Decomposition::representative`]), its V_p from
+/// one [`VisibilityIndex`] shared by all cells, and the canonical
+/// [`SkeletonKey`] of its skeleton. Cells with equal keys form a class.
+///
+/// # Edge cases
+/// - The skeleton of a cell is computed at one interior point; Thm 3.3 (2)
+///   says every point of the cell (with the boundary assignment of sec.
+///   3.6) has the same skeleton. That claim is checked elsewhere (T3.3b),
+///   not assumed by a second computation here.
+/// - Counts follow the arrangement: a cell's size is the number of
+///   arrangement vertices on its boundary, including vertices where the
+///   boundary goes straight on (a ray ending in the middle of a map edge
+///   splits it for both incident cells). See
+///   [`Decomposition::total_complexity`].
+/// - Classes are ordered by their first cell, cells by face id: both orders
+///   are deterministic for a given map.
+///
+/// ```
+/// use wai_cells::Decomposition;
+/// use wai_exact::Point;
+/// use wai_map::Map;
+/// // The L room: 5 cells, each seeing a different set of map vertices, so
+/// // 5 classes of one cell each.
+/// let ring = [(0, 0), (4, 0), (4, 2), (2, 2), (2, 4), (0, 4)];
+/// let map = Map::from_ring(ring.iter().map(|&(x, y)| Point::new(x, y)).collect()).unwrap().0;
+/// let d = Decomposition::new(&map);
+/// assert_eq!(d.cells().len(), 5);
+/// assert_eq!(d.total_complexity(), 2 * d.cells().iter().map(|&c| d.cell_size(c)).sum::<usize>());
+/// let c = d.counts();
+/// assert_eq!((c.n, c.r, c.cells, c.classes), (6, 1, 5, 5));
+/// let sq = d.cells()[0]; // (0, 0), (2, 0), (2, 2), (0, 2): sees all 6 vertices
+/// assert_eq!(d.skeletons()[d.skeleton_of(sq)].offsets.len(), 6);
+/// ```
+///
+/// # Panics
+/// If the visibility code fails at a representative point (an interior
+/// point of the map, so only on a bug in `wai_visibility`).
+#[derive(Clone, Debug)]
+pub struct Decomposition<'m> {
+    map: &'m Map,
+    arrangement: Arrangement,
+    cells: Vec<FaceId>,
+    /// Face id → position in `cells` (NOT_A_CELL for the outer face).
+    position: Vec<usize>,
+    /// By cell position.
+    sizes: Vec<usize>,
+    /// By cell position.
+    representatives: Vec<RatPoint>,
+    /// By cell position: index into `skeletons`.
+    skeleton_index: Vec<usize>,
+    skeletons: Vec<SkeletonKey>,
+    classes: Vec<Vec<FaceId>>,
+    class_complexity: Vec<usize>,
+}
+
+/// The counts issue 4 snapshots and plots, from [`Decomposition::counts`].
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Counts {
+    /// Map vertices.
+    pub n: usize,
+    /// Reflex map vertices.
+    pub r: usize,
+    /// Visibility rays (Def 3.8), before merging collinear ones.
+    pub rays: usize,
+    /// Cells: bounded faces of the arrangement.
+    pub cells: usize,
+    /// N (Thm 3.9): total vertices and edges of all cells; see
+    /// [`Decomposition::total_complexity`].
+    pub total_complexity: usize,
+    /// Equivalence classes (Def 3.10): distinct cell skeletons.
+    pub classes: usize,
+    /// max |EC| over the classes (Def 3.10, Thm 3.10, Thm 5.17).
+    pub max_class_complexity: usize,
+    /// Vertices of the arrangement.
+    pub vertices: usize,
+    /// Edges of the arrangement.
+    pub edges: usize,
+    /// Boundary pieces two rays assign to different cells (sec. 3.6).
+    pub conflicts: usize,
+}
+
+impl<'m> Decomposition<'m> {
+    /// Rays, arrangement, assignment, the skeleton of every cell (Def 3.9)
+    /// and the equivalence classes (Def 3.10).
+    pub fn new(map: &'m Map) -> Decomposition<'m> {
+        Decomposition::with_progress(map, &mut |_, _| {})
+    }
+
+    /// Same as [`Decomposition::new`], reporting progress:
+    /// `progress(done_cells, total_cells)` is called once before the first
+    /// skeleton (with `done_cells = 0`), about every 1% of the cells, and
+    /// once at the end (with `done_cells = total_cells`).
+    pub fn with_progress(
+        map: &'m Map,
+        progress: &mut dyn FnMut(usize, usize),
+    ) -> Decomposition<'m> {
+        let rays = visibility_rays(map);
+        let arrangement = Arrangement::new(map, &rays);
+        let cells: Vec<FaceId> = arrangement.cells().collect();
+        let total = cells.len();
+        let mut position = vec![NOT_A_CELL; arrangement.face_count()];
+        for (i, &f) in cells.iter().enumerate() {
+            position[f] = i;
+        }
+        progress(0, total);
+        let step = (total / 100).max(1);
+
+        let index = VisibilityIndex::new(map);
+        let mut sizes = Vec::with_capacity(total);
+        let mut representatives = Vec::with_capacity(total);
+        let mut skeleton_index = Vec::with_capacity(total);
+        let mut skeletons: Vec<SkeletonKey> = Vec::new();
+        let mut classes: Vec<Vec<FaceId>> = Vec::new();
+        let mut class_complexity: Vec<usize> = Vec::new();
+        let mut by_key: HashMap<SkeletonKey, usize> = HashMap::new();
+        for (i, &f) in cells.iter().enumerate() {
+            let vs = arrangement.face_vertices(f);
+            let size = vs.len();
+            let rep = interior_point(&arrangement, &vs);
+            let vp = index.visibility_polygon(&rep).unwrap_or_else(|e| {
+                panic!("cell {f}: no visibility polygon at its interior point {rep}: {e}")
+            });
+            let key = Skeleton::of(map, &vp)
+                .unwrap_or_else(|e| panic!("cell {f}: no skeleton at {rep}: {e}"))
+                .key();
+            let class = match by_key.get(&key) {
+                Some(&c) => c,
+                None => {
+                    let c = skeletons.len();
+                    skeletons.push(key.clone());
+                    classes.push(Vec::new());
+                    class_complexity.push(0);
+                    by_key.insert(key, c);
+                    c
+                }
+            };
+            classes[class].push(f);
+            class_complexity[class] += 2 * size;
+            sizes.push(size);
+            representatives.push(rep);
+            skeleton_index.push(class);
+            if (i + 1) % step == 0 && i + 1 < total {
+                progress(i + 1, total);
+            }
+        }
+        progress(total, total);
+
+        Decomposition {
+            map,
+            arrangement,
+            cells,
+            position,
+            sizes,
+            representatives,
+            skeleton_index,
+            skeletons,
+            classes,
+            class_complexity,
+        }
+    }
+
+    pub fn map(&self) -> &'m Map {
+        self.map
+    }
+
+    /// The visibility rays (Def 3.8) the arrangement was built from.
+    pub fn rays(&self) -> &[VisibilityRay] {
+        self.arrangement.rays()
+    }
+
+    pub fn arrangement(&self) -> &Arrangement {
+        &self.arrangement
+    }
+
+    /// The boundary assignment of sec. 3.6.
+    pub fn assignment(&self) -> &BoundaryAssignment {
+        self.arrangement.assignment()
+    }
+
+    /// The cells: the bounded faces of the arrangement, in face id order.
+    pub fn cells(&self) -> &[FaceId] {
+        &self.cells
+    }
+
+    /// The position of `cell` in [`Decomposition::cells`].
+    ///
+    /// # Panics
+    /// If `cell` is the outer face or not a face.
+    fn pos(&self, cell: FaceId) -> usize {
+        match self.position.get(cell) {
+            Some(&i) if i != NOT_A_CELL => i,
+            _ => panic!("face {cell} is not a cell"),
+        }
+    }
+
+    /// The number of vertices (= number of edges) of the boundary of
+    /// `cell`: arrangement vertices, including those where the boundary
+    /// goes straight on.
+    pub fn cell_size(&self, cell: FaceId) -> usize {
+        self.sizes[self.pos(cell)]
+    }
+
+    /// N (Thm 3.9, sec. 3.9): the total complexity of all cells, the sum
+    /// over the cells of their vertices plus their edges, i.e. twice the
+    /// sum of [`Decomposition::cell_size`]. A vertex or edge shared by
+    /// several cells counts once per cell (as in N = Σ |EC_{V*}|).
+    pub fn total_complexity(&self) -> usize {
+        2 * self.sizes.iter().sum::<usize>()
+    }
+
+    /// An exact point in the interior of `cell`: the centroid of three
+    /// non-collinear vertices of its boundary (the first two and the first
+    /// one after them not on their line). Interior because the cell is
+    /// convex (Thm 3.3 (1), checked by the arrangement's sanity check).
+    pub fn representative(&self, cell: FaceId) -> &RatPoint {
+        &self.representatives[self.pos(cell)]
+    }
+
+    /// The index of `cell`'s skeleton (Def 3.9) in
+    /// [`Decomposition::skeletons`], which is also its class's index in
+    /// [`Decomposition::classes`].
+    pub fn skeleton_of(&self, cell: FaceId) -> usize {
+        self.skeleton_index[self.pos(cell)]
+    }
+
+    /// The distinct skeleton keys, one per class, in class order.
+    pub fn skeletons(&self) -> &[SkeletonKey] {
+        &self.skeletons
+    }
+
+    /// The equivalence classes (Def 3.10): `classes()[i]` are the cells
+    /// (ascending) whose skeleton is `skeletons()[i]`. Ordered by their
+    /// first cell.
+    pub fn classes(&self) -> &[Vec<FaceId>] {
+        &self.classes
+    }
+
+    /// |EC| of class `class` (Def 3.10): the total number of vertices and
+    /// edges of its cells, with the convention of
+    /// [`Decomposition::total_complexity`].
+    pub fn class_complexity(&self, class: usize) -> usize {
+        self.class_complexity[class]
+    }
+
+    /// The largest |EC| (0 for a map without cells, which cannot occur).
+    pub fn max_class_complexity(&self) -> usize {
+        self.class_complexity.iter().copied().max().unwrap_or(0)
+    }
+
+    pub fn counts(&self) -> Counts {
+        Counts {
+            n: self.map.n(),
+            r: self.map.r(),
+            rays: self.rays().len(),
+            cells: self.cells.len(),
+            total_complexity: self.total_complexity(),
+            classes: self.classes.len(),
+            max_class_complexity: self.max_class_complexity(),
+            vertices: self.arrangement.vertex_count(),
+            edges: self.arrangement.edge_count(),
+            conflicts: self.arrangement.conflicts().len(),
+        }
+    }
+}
+
+/// The centroid of three non-collinear vertices of a convex face given by
+/// its vertex ids `vs` (counter-clockwise): an interior point.
+fn interior_point(arr: &Arrangement, vs: &[usize]) -> RatPoint {
+    let (a, b) = (arr.point(vs[0]), arr.point(vs[1]));
+    let c = vs[2..]
+        .iter()
+        .map(|&v| arr.point(v))
+        .find(|c| orientation_rat(a, b, c) != Orientation::Collinear)
+        .expect("a cell has three non-collinear vertices");
+    centroid3(a, b, c)
+}
+
+/// `(a + b + c) / 3`, exactly.
+fn centroid3(a: &RatPoint, b: &RatPoint, c: &RatPoint) -> RatPoint {
+    let (aw, bw, cw) = (a.hw(), b.hw(), c.hw());
+    let bc = Integer::from(bw * cw);
+    let ac = Integer::from(aw * cw);
+    let ab = Integer::from(aw * bw);
+    let x = Integer::from(a.hx() * &bc) + Integer::from(b.hx() * &ac) + Integer::from(c.hx() * &ab);
+    let y = Integer::from(a.hy() * &bc) + Integer::from(b.hy() * &ac) + Integer::from(c.hy() * &ab);
+    let w = Integer::from(aw * &bc) * 3u32;
+    RatPoint::new(x, y, w).expect("positive denominators")
+}

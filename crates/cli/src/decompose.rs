@@ -1,0 +1,148 @@
+//! `wai decompose`: the visibility cell decomposition of a map, its counts,
+//! and a picture of the cells coloured by equivalence class.
+
+use crate::input::{load, Format};
+use crate::Failure;
+use std::path::Path;
+use wai_cells::{visibility_rays, Decomposition};
+use wai_map::Map;
+use wai_render::{cells_svg, MapStyle};
+
+/// Bytes per decomposition vertex assumed by the memory estimate: an exact
+/// point, its half-edges, edge geometry, faces and the per-cell skeleton
+/// work, rounded up generously.
+const BYTES_PER_VERTEX: u64 = 1024;
+
+/// The memory the machine has available now, from /proc/meminfo.
+fn available_bytes() -> Option<u64> {
+    let info = std::fs::read_to_string("/proc/meminfo").ok()?;
+    let line = info.lines().find(|l| l.starts_with("MemAvailable:"))?;
+    let kib: u64 = line.split_whitespace().nth(1)?.parse().ok()?;
+    Some(kib * 1024)
+}
+
+/// Refuse, before any real work, a map whose decomposition could not fit:
+/// with R rays the arrangement has at most n + R + R(R − 1)/2 vertices.
+fn check_memory(map: &Map, force: bool) -> Result<(), Failure> {
+    let r = visibility_rays(map).len() as u64;
+    let bound = map.n() as u64 + r + r * r.saturating_sub(1) / 2;
+    let need = bound.saturating_mul(BYTES_PER_VERTEX);
+    match available_bytes() {
+        Some(avail) if need > avail && !force => Err(Failure::invalid(format!(
+            "map too large for the memory at hand: {r} visibility rays give up to {bound} decomposition vertices, \
+             estimated {:.1} GiB, but {:.1} GiB are available (--force skips this estimate, which is an upper bound)",
+            gib(need),
+            gib(avail)
+        ))),
+        _ => Ok(()),
+    }
+}
+
+#[allow(
+    clippy::float_arithmetic,
+    reason = "a size shown to the user; decides no geometry"
+)]
+fn gib(bytes: u64) -> f64 {
+    bytes as f64 / f64::from(1u32 << 30)
+}
+
+pub struct Options<'a> {
+    pub json: bool,
+    pub svg: Option<&'a Path>,
+    pub class: Option<usize>,
+    pub force: bool,
+}
+
+pub fn decompose(path: &Path, opts: &Options<'_>, format: Format) -> Result<(), Failure> {
+    let loaded = load(path, format)?;
+    let map = &loaded.map;
+    check_memory(map, opts.force)?;
+    let bar = indicatif::ProgressBar::new(0);
+    bar.set_style(
+        indicatif::ProgressStyle::with_template("{msg} {bar:40} {pos}/{len} cells ({eta})")
+            .unwrap_or_else(|_| indicatif::ProgressStyle::default_bar()),
+    );
+    bar.set_message("skeletons of cells");
+    let start = std::time::Instant::now();
+    let d = Decomposition::with_progress(map, &mut |done, total| {
+        bar.set_length(total as u64);
+        bar.set_position(done as u64);
+    });
+    bar.finish_and_clear();
+    let elapsed = start.elapsed();
+    let c = d.counts();
+    if let Some(k) = opts.class {
+        if k >= d.classes().len() {
+            return Err(Failure::usage(format!(
+                "--class {k}: the map has {} classes (0 to {})",
+                d.classes().len(),
+                d.classes().len().saturating_sub(1)
+            )));
+        }
+    }
+    if opts.json {
+        let sizes: Vec<usize> = d.classes().iter().map(Vec::len).collect();
+        let complexity: Vec<usize> = (0..d.classes().len())
+            .map(|i| d.class_complexity(i))
+            .collect();
+        let v = serde_json::json!({
+            "name": map.name(),
+            "n": c.n, "r": c.r, "rays": c.rays,
+            "arrangement": {"vertices": c.vertices, "edges": c.edges},
+            "cells": c.cells,
+            "total_complexity": c.total_complexity,
+            "classes": c.classes,
+            "max_class_complexity": c.max_class_complexity,
+            "assignment_conflicts": c.conflicts,
+            "class_cells": sizes,
+            "class_complexity": complexity,
+            "seconds": elapsed.as_secs_f64(),
+        });
+        println!("{}", serde_json::to_string_pretty(&v).expect("plain JSON"));
+    } else {
+        println!(
+            "map:                 {} (n = {}, r = {})",
+            map.name().unwrap_or("-"),
+            c.n,
+            c.r
+        );
+        println!("visibility rays:     {}", c.rays);
+        println!(
+            "arrangement:         {} vertices, {} edges",
+            c.vertices, c.edges
+        );
+        println!("cells:               {}", c.cells);
+        println!("total complexity N:  {}", c.total_complexity);
+        println!("classes:             {}", c.classes);
+        println!("max |EC|:            {}", c.max_class_complexity);
+        println!("assignment conflicts:{:>4} (boundary pieces two rays assign to different sides; see `wai_cells::Conflict`)", c.conflicts);
+        println!("time:                {:.3} s", elapsed.as_secs_f64());
+    }
+    if let Some(out) = opts.svg {
+        let cells: Vec<_> = d
+            .cells()
+            .iter()
+            .map(|&f| {
+                let ring = d
+                    .arrangement()
+                    .face_vertices(f)
+                    .into_iter()
+                    .map(|v| d.arrangement().point(v).clone())
+                    .collect();
+                (ring, d.skeleton_of(f))
+            })
+            .collect();
+        let caption = format!(
+            "{} cells in {} classes{}",
+            c.cells,
+            c.classes,
+            opts.class.map_or(String::new(), |k| format!(
+                "; class {k} ({} cells) in red",
+                d.classes()[k].len()
+            ))
+        );
+        let svg = cells_svg(map, &cells, opts.class, &MapStyle::default(), &caption);
+        std::fs::write(out, svg).map_err(|e| Failure::io(format!("{}: {e}", out.display())))?;
+    }
+    Ok(())
+}
