@@ -1,0 +1,51 @@
+//! The decomposition (rays, arrangement, assignment, a skeleton per cell,
+//! classes) of thesis-size and family maps. Ids `decompose/{map}/{param}`.
+
+use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion};
+use std::time::Duration;
+use wai_cells::Decomposition;
+use wai_map::Map;
+
+fn maps() -> Vec<(String, String, Map)> {
+    vec![
+        (
+            "banana".into(),
+            "n=76,r=54".into(),
+            wai_benches::maps::banana(20, 56),
+        ),
+        (
+            "random-orthogonal".into(),
+            "n=76".into(),
+            wai_gen::random("random-orthogonal", 76, 1).unwrap(),
+        ),
+        (
+            "corridor-niches".into(),
+            "k=16".into(),
+            wai_gen::family("corridor-niches", &[16]).unwrap(),
+        ),
+        (
+            "comb-convex-chain".into(),
+            "k=16".into(),
+            wai_gen::family("comb-convex-chain", &[16]).unwrap(),
+        ),
+    ]
+}
+
+fn bench(c: &mut Criterion) {
+    let mut g = c.benchmark_group("decompose");
+    g.sample_size(10).measurement_time(Duration::from_secs(5));
+    for (name, param, map) in maps() {
+        let counts = Decomposition::new(&map).counts();
+        eprintln!(
+            "decompose/{name}/{param}: n = {}, r = {}, cells = {}, N = {}",
+            counts.n, counts.r, counts.cells, counts.total_complexity
+        );
+        g.bench_with_input(BenchmarkId::new(name, param), &map, |b, m| {
+            b.iter(|| Decomposition::new(m).counts())
+        });
+    }
+    g.finish();
+}
+
+criterion_group!(benches, bench);
+criterion_main!(benches);
