@@ -77,6 +77,13 @@ impl Report {
         self.examined += 1;
         self.violations.extend(violation);
     }
+
+    /// Adds another report of the same claim to this one.
+    pub fn absorb(&mut self, other: Report) {
+        debug_assert_eq!(self.claim, other.claim, "reports of one claim");
+        self.examined += other.examined;
+        self.violations.extend(other.violations);
+    }
 }
 
 /// A checker of one claim.

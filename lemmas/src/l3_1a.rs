@@ -52,13 +52,7 @@ impl Checker for ReflexNotSpurious {
     }
 
     fn check(&self, map: &Map) -> Report {
-        let mut report = Report::new(ID);
-        for vp in sample::visibility_polygons(map, self.viewpoints) {
-            let r = check_polygon(map, &vp);
-            report.examined += r.examined;
-            report.violations.extend(r.violations);
-        }
-        report
+        sample::check_sampled_polygons(ID, map, self.viewpoints, check_polygon)
     }
 }
 

@@ -175,6 +175,21 @@ pub fn family_viewpoints(map: &Map) -> Vec<RatPoint> {
     points.into_iter().map(RatPoint::from).collect()
 }
 
+/// Run a per-polygon check of claim `id` on the V_p of `limit` sampled
+/// viewpoints of `map`, summing the reports.
+pub fn check_sampled_polygons(
+    id: &'static str,
+    map: &Map,
+    limit: usize,
+    check: fn(&Map, &VisibilityPolygon) -> crate::Report,
+) -> crate::Report {
+    let mut report = crate::Report::new(id);
+    for vp in visibility_polygons(map, limit) {
+        report.absorb(check(map, &vp));
+    }
+    report
+}
+
 /// V_p of each of [`viewpoints`]`(map, limit)`, by the production algorithm.
 ///
 /// # Panics
