@@ -6,6 +6,7 @@
 
 mod arrangement;
 mod common;
+mod datasets;
 mod decomposition;
 mod hand;
 mod laws;
