@@ -46,11 +46,15 @@ pub mod driver;
 pub mod l3_1a;
 pub mod l3_1b;
 pub mod l3_1c;
+pub mod ratio;
 pub mod sample;
+pub mod t3_10;
 pub mod t3_2;
 pub mod t3_3a;
 pub mod t3_3b;
 pub mod t3_9a;
+pub mod t3_9b;
+pub mod t5_17;
 
 pub use driver::{run, Checker, ClaimTally, FoundViolation, Report, Summary, Violation};
 
@@ -269,7 +273,8 @@ pub static CLAIMS: &[Claim] = &[
         Bound,
         "Theorem 3.9",
         "The number of cells and their total complexity N is O(n^2 r).",
-    ),
+    )
+    .checked(t3_9b::checker),
     c(
         "T3.9c",
         Tight,
@@ -287,7 +292,8 @@ pub static CLAIMS: &[Claim] = &[
         Bound,
         "Theorem 3.10",
         "An equivalence class has total complexity O(n^2).",
-    ),
+    )
+    .checked(t3_10::checker),
     c(
         "R3.4",
         Example,
@@ -499,7 +505,8 @@ pub static CLAIMS: &[Claim] = &[
         Bound,
         "Theorem 5.17",
         "An equivalence class has O(n + r^2) cells and total complexity.",
-    ),
+    )
+    .checked(t5_17::checker),
     c(
         "T5.17t",
         Tight,

@@ -78,10 +78,13 @@ fn is_conflict(v: &FoundViolation) -> bool {
 
 #[test]
 fn cell_decomposition_claims_hold_everywhere() {
-    let checkers: [Box<dyn Checker>; 3] = [
+    let checkers: [Box<dyn Checker>; 6] = [
         Box::new(t3_3a::CellsConvex),
         Box::new(t3_3b::SameSkeleton),
         Box::new(t3_9a::VerticesPerRay::default()),
+        Box::new(wai_lemmas::t3_9b::CellsQuadraticTimesReflex),
+        Box::new(wai_lemmas::t3_10::ClassQuadratic),
+        Box::new(wai_lemmas::t5_17::ClassLinearPlusReflexSquared),
     ];
     let refs: Vec<&dyn Checker> = checkers.iter().map(|c| c.as_ref()).collect();
     let mut failures = Vec::new();

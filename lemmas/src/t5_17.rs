@@ -1,0 +1,78 @@
+//! Claim T5.17 (Theorem 5.17, the main theorem of chapter 5): the cells of
+//! an equivalence class and their total complexity are O(n + r²). Measured: the
+//! ratio max |EC| / (n + r²) on every map.
+//!
+//! ## Trust
+//! Exact counts on every map examined (the decomposition of `wai-cells`,
+//! whose arrangement is sanity-checked in its tests); a bound is never
+//! decided by one map: see [`crate::ratio`]. The growth exponent comes from
+//! the scaling sweep (max |EC| against n + r²).
+
+use rug::Rational;
+use wai_cells::Counts;
+use wai_map::Map;
+
+use crate::driver::{Checker, Report};
+use crate::ratio::{self, over, Measured};
+
+const ID: &str = "T5.17";
+
+/// The ceiling, far above every ratio seen: the largest seen is 2, on every convex map (one cell of complexity 2n over n + 0), over 968 generated, family, polyomino and r2v maps.
+pub fn ceiling() -> Rational {
+    Rational::from(8)
+}
+
+/// max |EC| / (n + r²).
+pub fn measure(c: &Counts) -> Rational {
+    over(c.max_class_complexity, c.n as u128 + (c.r as u128).pow(2))
+}
+
+/// Checks T5.17's ratio on a map.
+#[derive(Debug, Clone, Copy, Default)]
+pub struct ClassLinearPlusReflexSquared;
+
+/// The registry's constructor.
+pub fn checker() -> Box<dyn Checker> {
+    Box::new(ClassLinearPlusReflexSquared)
+}
+
+impl ClassLinearPlusReflexSquared {
+    /// The report and the measured ratio.
+    pub fn check_with_ratio(&self, map: &Map) -> (Report, Measured) {
+        ratio::check(ID, map, &ceiling(), measure)
+    }
+}
+
+impl Checker for ClassLinearPlusReflexSquared {
+    fn id(&self) -> &'static str {
+        ID
+    }
+    fn check(&self, map: &Map) -> Report {
+        self.check_with_ratio(map).0
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::ratio::check_counts;
+
+    #[test]
+    fn measures_and_passes_on_a_family() {
+        let map = wai_gen::family("corridor-niches", &[2]).unwrap();
+        let (report, m) = ClassLinearPlusReflexSquared.check_with_ratio(&map);
+        assert_eq!((report.examined, report.violations.len()), (1, 0));
+        // max |EC| = 20, n = 12, r = 4 (the snapshot counts).
+        assert_eq!(m.ratio, Rational::from((20, 12 + 16)));
+    }
+
+    #[test]
+    fn planted_excess_is_reported() {
+        let map = wai_gen::family("corridor-niches", &[1]).unwrap();
+        let mut counts = wai_cells::Decomposition::new(&map).counts();
+        counts.max_class_complexity = 100 * (counts.n + counts.r * counts.r);
+        let (report, _) = check_counts(ID, &map, &counts, &ceiling(), measure);
+        assert_eq!(report.violations.len(), 1);
+        assert!(report.violations[0].what.contains("above the ceiling"));
+    }
+}
