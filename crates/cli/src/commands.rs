@@ -172,6 +172,33 @@ pub fn demo(out: &Path) -> Result<(), Failure> {
         sk.artificial_count(),
         sk.kernel().vertices().len()
     );
+    // The visibility cell decomposition with its classes.
+    let d = wai_cells::Decomposition::new(map);
+    let c = d.counts();
+    println!(
+        "decomposition: {} visibility rays, {} cells, N = {}, {} classes, max |EC| = {}, {} assignment conflicts",
+        c.rays, c.cells, c.total_complexity, c.classes, c.max_class_complexity, c.conflicts
+    );
+    let cells: Vec<_> = d
+        .cells()
+        .iter()
+        .map(|&f| {
+            let a = d.arrangement();
+            let ring = a
+                .face_vertices(f)
+                .into_iter()
+                .map(|v| a.point(v).clone())
+                .collect();
+            (ring, d.skeleton_of(f))
+        })
+        .collect();
+    let cells_path = out.join("office-floor-cells.svg");
+    let caption = format!("{} cells in {} classes", c.cells, c.classes);
+    write_file(
+        &cells_path,
+        &wai_render::cells_svg(map, &cells, None, &MapStyle::default(), &caption),
+    )?;
+    println!("wrote {}", cells_path.display());
     let vis_path = out.join("office-floor-vis.svg");
     write_file(
         &vis_path,
@@ -183,7 +210,7 @@ pub fn demo(out: &Path) -> Result<(), Failure> {
         svg_path.display(),
         vis_path.display()
     );
-    println!("(`wai vis MAP --at x,y` for any viewpoint; cells and localization join this job as later issues land)");
+    println!("(`wai vis MAP --at x,y` for any viewpoint, `wai decompose MAP` for any map; localization joins this job as a later issue lands)");
     Ok(())
 }
 

@@ -252,6 +252,11 @@ fn demo_runs_on_the_built_in_map() {
     let back = wai(&["info", "-"], &written);
     assert!(back.status.success());
     assert!(dir.join("office-floor.svg").exists());
+    assert!(
+        stdout.contains("decomposition: 150 visibility rays, 478 cells"),
+        "{stdout}"
+    );
+    assert!(dir.join("office-floor-cells.svg").exists());
     std::fs::remove_dir_all(dir).ok();
 }
 
@@ -327,4 +332,21 @@ fn vis_rejects_bad_viewpoints() {
         assert!(err.contains(needle), "--at {at}: {err}");
         assert!(!err.contains("panicked"));
     }
+}
+
+#[test]
+fn decompose_prints_counts_and_refuses_bad_classes() {
+    let out = wai(&["decompose", "-", "--json"], L_ROOM.as_bytes());
+    assert!(out.status.success(), "{}", text(&out.stderr));
+    let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    assert_eq!(
+        (v["cells"].as_u64(), v["classes"].as_u64()),
+        (Some(5), Some(5))
+    );
+    let out = wai(
+        &["decompose", "-", "--svg", "/dev/null", "--class", "99"],
+        L_ROOM.as_bytes(),
+    );
+    assert_eq!(out.status.code(), Some(2));
+    assert!(text(&out.stderr).contains("--class 99: the map has 5 classes"));
 }
