@@ -184,34 +184,7 @@ pub fn check_polygon(map: &Map, vp: &VisibilityPolygon) -> Report {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use wai_exact::{Point, RatPoint};
-    use wai_visibility::VisibilityIndex;
-
-    /// The room with a door to a corridor, seen from (3, 1): V_p has a
-    /// partial edge on the corridor's north wall and half edges.
-    fn doorway() -> (Map, VisibilityPolygon) {
-        let ring = [
-            (0, 0),
-            (6, 0),
-            (6, 4),
-            (4, 4),
-            (4, 5),
-            (10, 5),
-            (10, 8),
-            (-4, 8),
-            (-4, 5),
-            (2, 5),
-            (2, 4),
-            (0, 4),
-        ]
-        .map(|(x, y)| Point::new(x, y))
-        .to_vec();
-        let map = Map::from_ring(ring).unwrap().0.with_name("doorway");
-        let vp = VisibilityIndex::new(&map)
-            .visibility_polygon(&RatPoint::from(Point::new(3, 1)))
-            .unwrap();
-        (map, vp)
-    }
+    use crate::sample::fixtures::doorway;
 
     #[test]
     fn a_correct_polygon_passes() {

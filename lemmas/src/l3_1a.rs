@@ -89,21 +89,8 @@ pub fn check_polygon(map: &Map, vp: &VisibilityPolygon) -> Report {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::sample::fixtures::l_room;
     use wai_exact::{Point, RatPoint};
-    use wai_visibility::VisibilityIndex;
-
-    /// The L-shaped room of the visibility crate's tests, seen from (1, 3):
-    /// V_p = (0,0) (4,0) (2,2) (2,4) (0,4), reflex at (2, 2).
-    fn l_room() -> (Map, VisibilityPolygon) {
-        let ring = [(0, 0), (4, 0), (4, 2), (2, 2), (2, 4), (0, 4)]
-            .map(|(x, y)| Point::new(x, y))
-            .to_vec();
-        let map = Map::from_ring(ring).unwrap().0.with_name("L-room");
-        let vp = VisibilityIndex::new(&map)
-            .visibility_polygon(&RatPoint::from(Point::new(1, 3)))
-            .unwrap();
-        (map, vp)
-    }
 
     #[test]
     fn a_correct_polygon_passes() {

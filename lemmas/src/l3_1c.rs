@@ -245,24 +245,11 @@ fn check_edge(map: &Map, vp: &VisibilityPolygon, i: usize) -> Option<(String, se
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::sample::fixtures::l_room;
     use wai_visibility::{EdgeKind, OnMap, VisEdge, VisVertex, VisibilityIndex};
 
     fn at(x: i128, y: i128) -> RatPoint {
         RatPoint::from(Point::new(x, y))
-    }
-
-    /// The L-shaped room seen from (1, 3): V_p = (0,0) (4,0) (2,2) (2,4)
-    /// (0,4); edge 0 is a half edge on map edge 0 whose far end (4, 0) is
-    /// spurious.
-    fn l_room() -> (Map, VisibilityPolygon) {
-        let ring = [(0, 0), (4, 0), (4, 2), (2, 2), (2, 4), (0, 4)]
-            .map(|(x, y)| Point::new(x, y))
-            .to_vec();
-        let map = Map::from_ring(ring).unwrap().0.with_name("L-room");
-        let vp = VisibilityIndex::new(&map)
-            .visibility_polygon(&at(1, 3))
-            .unwrap();
-        (map, vp)
     }
 
     #[test]

@@ -16,7 +16,7 @@ use serde_json::json;
 use wai_cells::{Counts, Decomposition};
 use wai_map::Map;
 
-use crate::driver::{Report, Violation};
+use crate::driver::{Checker, Report, Violation};
 use crate::sample;
 
 /// A measured ratio and what it was measured on.
@@ -72,6 +72,31 @@ pub fn check_counts(
             counts: counts.clone(),
         },
     )
+}
+
+/// The checker of one bound claim: its id, the ratio it measures and the
+/// ceiling above which a ratio is reported.
+#[derive(Debug, Clone, Copy)]
+pub struct BoundChecker {
+    pub id: &'static str,
+    pub measure: fn(&Counts) -> Rational,
+    pub ceiling: fn() -> Rational,
+}
+
+impl BoundChecker {
+    /// The report and the measured ratio.
+    pub fn check_with_ratio(&self, map: &Map) -> (Report, Measured) {
+        check(self.id, map, &(self.ceiling)(), self.measure)
+    }
+}
+
+impl Checker for BoundChecker {
+    fn id(&self) -> &'static str {
+        self.id
+    }
+    fn check(&self, map: &Map) -> Report {
+        self.check_with_ratio(map).0
+    }
 }
 
 /// `a / b` as an exact ratio, with `b` at least 1.

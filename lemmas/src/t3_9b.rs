@@ -10,14 +10,15 @@
 
 use rug::Rational;
 use wai_cells::Counts;
-use wai_map::Map;
 
-use crate::driver::{Checker, Report};
-use crate::ratio::{self, over, Measured};
+use crate::driver::Checker;
+use crate::ratio::{over, BoundChecker};
 
 const ID: &str = "T3.9b";
 
-/// The ceiling, far above every ratio seen: the largest seen is 1, on the S tetromino (n = 6, r = 1, N = 36), over 968 generated, family, polyomino and r2v maps.
+/// The ceiling, far above every ratio seen: the largest seen is 1, on the S
+/// tetromino (n = 6, r = 1, N = 36), over 968 generated, family, polyomino
+/// and r2v maps.
 pub fn ceiling() -> Rational {
     Rational::from(4)
 }
@@ -30,29 +31,16 @@ pub fn measure(c: &Counts) -> Rational {
     )
 }
 
-/// Checks T3.9b's ratio on a map.
-#[derive(Debug, Clone, Copy, Default)]
-pub struct CellsQuadraticTimesReflex;
+/// The checker: this claim's ratio against its ceiling.
+pub const CHECKER: BoundChecker = BoundChecker {
+    id: ID,
+    measure,
+    ceiling,
+};
 
 /// The registry's constructor.
 pub fn checker() -> Box<dyn Checker> {
-    Box::new(CellsQuadraticTimesReflex)
-}
-
-impl CellsQuadraticTimesReflex {
-    /// The report and the measured ratio.
-    pub fn check_with_ratio(&self, map: &Map) -> (Report, Measured) {
-        ratio::check(ID, map, &ceiling(), measure)
-    }
-}
-
-impl Checker for CellsQuadraticTimesReflex {
-    fn id(&self) -> &'static str {
-        ID
-    }
-    fn check(&self, map: &Map) -> Report {
-        self.check_with_ratio(map).0
-    }
+    Box::new(CHECKER)
 }
 
 #[cfg(test)]
@@ -63,7 +51,7 @@ mod tests {
     #[test]
     fn measures_and_passes_on_a_family() {
         let map = wai_gen::family("corridor-niches", &[2]).unwrap();
-        let (report, m) = CellsQuadraticTimesReflex.check_with_ratio(&map);
+        let (report, m) = CHECKER.check_with_ratio(&map);
         assert_eq!((report.examined, report.violations.len()), (1, 0));
         // N = 124, n = 12, r = 4 (the snapshot counts).
         assert_eq!(m.ratio, Rational::from((124, 12 * 12 * 4)));

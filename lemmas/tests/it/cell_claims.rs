@@ -82,9 +82,9 @@ fn cell_decomposition_claims_hold_everywhere() {
         Box::new(t3_3a::CellsConvex),
         Box::new(t3_3b::SameSkeleton),
         Box::new(t3_9a::VerticesPerRay::default()),
-        Box::new(wai_lemmas::t3_9b::CellsQuadraticTimesReflex),
-        Box::new(wai_lemmas::t3_10::ClassQuadratic),
-        Box::new(wai_lemmas::t5_17::ClassLinearPlusReflexSquared),
+        wai_lemmas::t3_9b::checker(),
+        wai_lemmas::t3_10::checker(),
+        wai_lemmas::t5_17::checker(),
     ];
     let refs: Vec<&dyn Checker> = checkers.iter().map(|c| c.as_ref()).collect();
     let mut failures = Vec::new();
