@@ -115,7 +115,16 @@ impl<'m> Decomposition<'m> {
         map: &'m Map,
         progress: &mut dyn FnMut(usize, usize),
     ) -> Decomposition<'m> {
-        let rays = visibility_rays(map);
+        Decomposition::from_rays(map, visibility_rays(map), progress)
+    }
+
+    /// Same as [`Decomposition::with_progress`], from the rays of `map`
+    /// (`visibility_rays(map)`) computed already, e.g. for a size estimate.
+    pub fn from_rays(
+        map: &'m Map,
+        rays: Vec<VisibilityRay>,
+        progress: &mut dyn FnMut(usize, usize),
+    ) -> Decomposition<'m> {
         let arrangement = Arrangement::new(map, &rays);
         let cells: Vec<FaceId> = arrangement.cells().collect();
         let total = cells.len();

@@ -4,7 +4,7 @@
 use crate::input::{load, Format};
 use crate::Failure;
 use std::path::Path;
-use wai_cells::{visibility_rays, Decomposition};
+use wai_cells::{visibility_rays, Decomposition, VisibilityRay};
 use wai_map::Map;
 use wai_render::{cells_svg, MapStyle};
 
@@ -21,10 +21,11 @@ fn available_bytes() -> Option<u64> {
     Some(kib * 1024)
 }
 
-/// Refuse, before any real work, a map whose decomposition could not fit:
-/// with R rays the arrangement has at most n + R + R(R − 1)/2 vertices.
-fn check_memory(map: &Map, force: bool) -> Result<(), Failure> {
-    let r = visibility_rays(map).len() as u64;
+/// Refuse, before the arrangement is built, a map whose decomposition could
+/// not fit: with R rays the arrangement has at most n + R + R(R − 1)/2
+/// vertices.
+fn check_memory(map: &Map, rays: &[VisibilityRay], force: bool) -> Result<(), Failure> {
+    let r = rays.len() as u64;
     let bound = map.n() as u64 + r + r * r.saturating_sub(1) / 2;
     let need = bound.saturating_mul(BYTES_PER_VERTEX);
     match available_bytes() {
@@ -56,15 +57,17 @@ pub struct Options<'a> {
 pub fn decompose(path: &Path, opts: &Options<'_>, format: Format) -> Result<(), Failure> {
     let loaded = load(path, format)?;
     let map = &loaded.map;
-    check_memory(map, opts.force)?;
+    // The time covers the whole decomposition, rays included.
+    let start = std::time::Instant::now();
+    let rays = visibility_rays(map);
+    check_memory(map, &rays, opts.force)?;
     let bar = indicatif::ProgressBar::new(0);
     bar.set_style(
         indicatif::ProgressStyle::with_template("{msg} {bar:40} {pos}/{len} cells ({eta})")
             .unwrap_or_else(|_| indicatif::ProgressStyle::default_bar()),
     );
     bar.set_message("skeletons of cells");
-    let start = std::time::Instant::now();
-    let d = Decomposition::with_progress(map, &mut |done, total| {
+    let d = Decomposition::from_rays(map, rays, &mut |done, total| {
         bar.set_length(total as u64);
         bar.set_position(done as u64);
     });
