@@ -17,7 +17,7 @@
 //!   `driver`, not a claim's module.
 //! - One module per claim, named after the claim's id in lower case with `.`
 //!   replaced by `_` ([`Claim::module_name`]): [`l3_1a`], [`l3_1b`],
-//!   [`l3_1c`], [`d3_5`], [`t3_2`], [`t3_3a`], [`t3_3b`], [`t3_9a`] so
+//!   [`l3_1c`], [`d3_5`], [`t3_2`], [`t3_3a`], [`t3_3b`], [`a3_6`], [`t3_9a`] so
 //!   far; `t4_2.rs`, `t5_17.rs`,
 //!   `l3_7t.rs`, … to come. Each module
 //!   - opens with a doc comment that states the claim in our own words and
@@ -41,6 +41,7 @@
 //! [`Summary::not_run`]. The integration tests fail if this table and
 //! `shared/CLAIMS.md` disagree, in either direction.
 
+pub mod a3_6;
 pub mod d3_5;
 pub mod driver;
 pub mod l3_1a;
@@ -240,9 +241,16 @@ pub static CLAIMS: &[Claim] = &[
         "T3.3b",
         Exact,
         "Theorem 3.3(2)",
-        "All points of a cell, with the boundary the assignment rule of sec. 3.6 gives it, share one skeleton.",
+        "Every interior point has the skeleton of the cell (open face, edge or vertex of the arrangement) that contains it.",
     )
     .checked(t3_3b::checker),
+    c(
+        "A3.6",
+        Exact,
+        "Section 3.6 (boundary assignment)",
+        "A point of a visibility ray, given to the cell on its anchor's side, has that cell's skeleton; known false on 1-cells and 0-cells.",
+    )
+    .checked(a3_6::checker),
     c(
         "L3.5",
         Exact,

@@ -196,8 +196,21 @@ fn plot(
     root.present().map_err(|e| e.to_string())
 }
 
+const USAGE: &str = "\
+sweep: grow each thesis family and random maps, decompose each exactly, and
+write CSV plus SVG plots with fitted log-log slopes
+
+usage: sweep [--out DIR] [--quick]
+  --out DIR   where the CSV and plots go (default target/sweep)
+  --quick     the reduced series CI runs
+  -h, --help  this text";
+
 fn main() {
     let args: Vec<String> = std::env::args().collect();
+    if args.iter().any(|a| a == "-h" || a == "--help") {
+        println!("{USAGE}");
+        return;
+    }
     let quick = args.iter().any(|a| a == "--quick");
     let out = args
         .iter()

@@ -2,12 +2,12 @@
 //! boundary assignment (sec. 3.6), the skeleton of every cell (Def 3.9) and
 //! the equivalence classes of cells (Def 3.10).
 
-use crate::arrangement::{Arrangement, FaceId};
+use crate::arrangement::{Arrangement, EdgeId, FaceId, Support, VertexId};
 use crate::assignment::BoundaryAssignment;
 use crate::rays::{visibility_rays, VisibilityRay};
 use rug::Integer;
 use std::collections::HashMap;
-use wai_exact::{orientation_rat, Orientation, RatPoint};
+use wai_exact::{orientation_rat, Orientation, Point, RatPoint};
 use wai_map::Map;
 use wai_visibility::{Skeleton, SkeletonKey, VisibilityIndex};
 
@@ -23,11 +23,23 @@ const NOT_A_CELL: usize = usize::MAX;
 /// one [`VisibilityIndex`] shared by all cells, and the canonical
 /// [`SkeletonKey`] of its skeleton. Cells with equal keys form a class.
 ///
+/// # Cells of every dimension
+/// The decomposition has open cells of dimension 2 (the faces, "cells" in
+/// the thesis's sense and in the names below), 1 (the arrangement edges on
+/// rays) and 0 (the arrangement vertices inside the map): see
+/// [`LowerCell`]. A lower-dimensional cell with the skeleton of an adjacent
+/// 2-cell, in the same embedding, is absorbed by it; the others are cells
+/// of their own and join the class of their skeleton
+/// ([`Decomposition::class_lower_cells`]). This replaces the sec. 3.6
+/// boundary assignment, which cannot give every boundary point a cell with
+/// its skeleton (claim A3.6, `counterexamples/T3.3b-doorway-1d-cell.json`);
+/// the assignment is still computed and reported by the arrangement.
+///
 /// # Edge cases
-/// - The skeleton of a cell is computed at one interior point; Thm 3.3 (2)
-///   says every point of the cell (with the boundary assignment of sec.
-///   3.6) has the same skeleton. That claim is checked elsewhere (T3.3b),
-///   not assumed by a second computation here.
+/// - The skeleton of a cell is computed at one point (an interior point of
+///   a 2-cell, the midpoint of a 1-cell); T3.3b says every point of the
+///   cell has the same skeleton. That claim is checked elsewhere, not
+///   assumed by a second computation here.
 /// - Counts follow the arrangement: a cell's size is the number of
 ///   arrangement vertices on its boundary, including vertices where the
 ///   boundary goes straight on (a ray ending in the middle of a map edge
@@ -72,6 +84,57 @@ pub struct Decomposition<'m> {
     skeletons: Vec<SkeletonKey>,
     classes: Vec<Vec<FaceId>>,
     class_complexity: Vec<usize>,
+    /// The 1-cells (ray edges), then the 0-cells (interior vertices).
+    lower: Vec<LowerCell>,
+    /// By class: indices into `lower` of its kept lower-dimensional cells.
+    class_lower: Vec<Vec<usize>>,
+}
+
+/// A cell of dimension 1 or 0: where it lies in the arrangement.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum LowerSite {
+    /// The open arrangement edge `e`, which lies on visibility rays.
+    Edge(EdgeId),
+    /// The arrangement vertex `v`, in the interior of the map.
+    Vertex(VertexId),
+}
+
+/// A cell of dimension 1 or 0 of the decomposition (DESIGN "Degenerate
+/// cases", claims T3.3b and A3.6): an open edge of the arrangement on
+/// visibility rays, or an arrangement vertex inside the map, with its own
+/// skeleton.
+///
+/// It is **absorbed** by an adjacent 2-cell whose skeleton, in the same
+/// embedding (the same origin map vertex), is its own: then its points
+/// belong to that 2-cell, as the sec. 3.6 rule intends where it works.
+/// Otherwise it is **kept**, a cell of its own in the class of its skeleton.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct LowerCell {
+    pub site: LowerSite,
+    /// An exact point of the cell: the edge's midpoint, or the vertex.
+    pub representative: RatPoint,
+    /// Its skeleton's index in [`Decomposition::skeletons`] (= its class).
+    pub class: usize,
+    /// The adjacent 2-cell that absorbs it, if any.
+    pub absorbed_by: Option<FaceId>,
+}
+
+impl LowerCell {
+    /// 1 for an edge, 0 for a vertex.
+    pub fn dimension(&self) -> u8 {
+        match self.site {
+            LowerSite::Edge(_) => 1,
+            LowerSite::Vertex(_) => 0,
+        }
+    }
+}
+
+/// Cells of one dimension: those that are cells of their own and those
+/// an adjacent 2-cell absorbs.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct KeptAbsorbed {
+    pub kept: usize,
+    pub absorbed: usize,
 }
 
 /// The counts issue 4 snapshots and plots, from [`Decomposition::counts`].
@@ -88,9 +151,12 @@ pub struct Counts {
     /// N (Thm 3.9): total vertices and edges of all cells; see
     /// [`Decomposition::total_complexity`].
     pub total_complexity: usize,
-    /// Equivalence classes (Def 3.10): distinct cell skeletons.
+    /// Equivalence classes (Def 3.10): distinct skeletons of the cells of
+    /// every dimension (a kept 1- or 0-cell may have a skeleton no 2-cell
+    /// has).
     pub classes: usize,
-    /// max |EC| over the classes (Def 3.10, Thm 3.10, Thm 5.17).
+    /// max |EC| over the classes (Def 3.10, Thm 3.10, Thm 5.17), counting
+    /// the 2-cells as the thesis does.
     pub max_class_complexity: usize,
     /// Vertices of the arrangement.
     pub vertices: usize,
@@ -98,6 +164,10 @@ pub struct Counts {
     pub edges: usize,
     /// Boundary pieces two rays assign to different cells (sec. 3.6).
     pub conflicts: usize,
+    /// 1-cells (arrangement edges on rays), kept and absorbed.
+    pub one_cells: KeptAbsorbed,
+    /// 0-cells (arrangement vertices inside the map), kept and absorbed.
+    pub zero_cells: KeptAbsorbed,
 }
 
 impl<'m> Decomposition<'m> {
@@ -143,6 +213,7 @@ impl<'m> Decomposition<'m> {
         let mut classes: Vec<Vec<FaceId>> = Vec::new();
         let mut class_complexity: Vec<usize> = Vec::new();
         let mut by_key: HashMap<SkeletonKey, usize> = HashMap::new();
+        let mut origins: Vec<Point> = Vec::with_capacity(total);
         for (i, &f) in cells.iter().enumerate() {
             let vs = arrangement.face_vertices(f);
             let size = vs.len();
@@ -150,9 +221,10 @@ impl<'m> Decomposition<'m> {
             let vp = index.visibility_polygon(&rep).unwrap_or_else(|e| {
                 panic!("cell {f}: no visibility polygon at its interior point {rep}: {e}")
             });
-            let key = Skeleton::of(map, &vp)
-                .unwrap_or_else(|e| panic!("cell {f}: no skeleton at {rep}: {e}"))
-                .key();
+            let sk = Skeleton::of(map, &vp)
+                .unwrap_or_else(|e| panic!("cell {f}: no skeleton at {rep}: {e}"));
+            origins.push(sk.origin());
+            let key = sk.key();
             let class = match by_key.get(&key) {
                 Some(&c) => c,
                 None => {
@@ -173,6 +245,71 @@ impl<'m> Decomposition<'m> {
                 progress(i + 1, total);
             }
         }
+
+        // Cells of dimension 1 and 0, each with its skeleton at one exact
+        // point, absorbed by an adjacent 2-cell with the same skeleton in
+        // the same embedding.
+        let mut lower: Vec<LowerCell> = Vec::new();
+        let mut sites: Vec<(LowerSite, RatPoint, Vec<FaceId>)> = Vec::new();
+        for e in 0..arrangement.edge_count() {
+            if matches!(arrangement.edge_support(e), Support::Rays(_)) {
+                let (a, b) = (arrangement.half_edge(2 * e).origin, arrangement.dest(2 * e));
+                let faces = vec![
+                    arrangement.half_edge(2 * e).face,
+                    arrangement.half_edge(2 * e + 1).face,
+                ];
+                let mid = RatPoint::midpoint(arrangement.point(a), arrangement.point(b));
+                sites.push((LowerSite::Edge(e), mid, faces));
+            }
+        }
+        for v in 0..arrangement.vertex_count() {
+            if !arrangement.is_on_map_boundary(v) {
+                let faces = arrangement
+                    .outgoing(v)
+                    .into_iter()
+                    .map(|h| arrangement.half_edge(h).face)
+                    .collect();
+                sites.push((LowerSite::Vertex(v), arrangement.point(v).clone(), faces));
+            }
+        }
+        let mut class_lower: Vec<Vec<usize>> = vec![Vec::new(); classes.len()];
+        for (site, rep, faces) in sites {
+            let vp = index.visibility_polygon(&rep).unwrap_or_else(|e| {
+                panic!("{site:?}: no visibility polygon at its point {rep}: {e}")
+            });
+            let sk = Skeleton::of(map, &vp)
+                .unwrap_or_else(|e| panic!("{site:?}: no skeleton at {rep}: {e}"));
+            let key = sk.key();
+            let known = by_key.get(&key).copied();
+            let absorbed_by = known.and_then(|c| {
+                faces.iter().copied().find(|&f| {
+                    position[f] != NOT_A_CELL
+                        && skeleton_index[position[f]] == c
+                        && origins[position[f]] == sk.origin()
+                })
+            });
+            let class = match known {
+                Some(c) => c,
+                None => {
+                    let c = skeletons.len();
+                    skeletons.push(key.clone());
+                    classes.push(Vec::new());
+                    class_complexity.push(0);
+                    class_lower.push(Vec::new());
+                    by_key.insert(key, c);
+                    c
+                }
+            };
+            if absorbed_by.is_none() {
+                class_lower[class].push(lower.len());
+            }
+            lower.push(LowerCell {
+                site,
+                representative: rep,
+                class,
+                absorbed_by,
+            });
+        }
         progress(total, total);
 
         Decomposition {
@@ -186,6 +323,8 @@ impl<'m> Decomposition<'m> {
             skeletons,
             classes,
             class_complexity,
+            lower,
+            class_lower,
         }
     }
 
@@ -258,9 +397,11 @@ impl<'m> Decomposition<'m> {
         &self.skeletons
     }
 
-    /// The equivalence classes (Def 3.10): `classes()[i]` are the cells
-    /// (ascending) whose skeleton is `skeletons()[i]`. Ordered by their
-    /// first cell.
+    /// The equivalence classes (Def 3.10): `classes()[i]` are the 2-cells
+    /// (ascending) whose skeleton is `skeletons()[i]`. Classes with a 2-cell
+    /// come first, ordered by their first 2-cell; then the classes of kept
+    /// lower-dimensional cells only, whose list here is empty (their cells
+    /// are in [`Decomposition::class_lower_cells`]).
     pub fn classes(&self) -> &[Vec<FaceId>] {
         &self.classes
     }
@@ -277,7 +418,32 @@ impl<'m> Decomposition<'m> {
         self.class_complexity.iter().copied().max().unwrap_or(0)
     }
 
+    /// The cells of dimension 1 (first, by edge id) and 0 (then, by vertex
+    /// id), kept or absorbed; see [`LowerCell`].
+    pub fn lower_cells(&self) -> &[LowerCell] {
+        &self.lower
+    }
+
+    /// The kept cells of dimension 1 and 0 of class `class` (indices into
+    /// [`Decomposition::lower_cells`]). A class may have kept
+    /// lower-dimensional cells and no 2-cell: the skeleton of a doorway's
+    /// segment, say, which no 2-cell has.
+    pub fn class_lower_cells(&self, class: usize) -> &[usize] {
+        &self.class_lower[class]
+    }
+
     pub fn counts(&self) -> Counts {
+        let tally = |dim: u8| {
+            let mut t = KeptAbsorbed::default();
+            for c in self.lower.iter().filter(|c| c.dimension() == dim) {
+                if c.absorbed_by.is_some() {
+                    t.absorbed += 1;
+                } else {
+                    t.kept += 1;
+                }
+            }
+            t
+        };
         Counts {
             n: self.map.n(),
             r: self.map.r(),
@@ -289,6 +455,8 @@ impl<'m> Decomposition<'m> {
             vertices: self.arrangement.vertex_count(),
             edges: self.arrangement.edge_count(),
             conflicts: self.arrangement.conflicts().len(),
+            one_cells: tally(1),
+            zero_cells: tally(0),
         }
     }
 }

@@ -46,6 +46,6 @@ pub use arrangement::{
     Vertex, VertexId,
 };
 pub use assignment::{BoundaryAssignment, Conflict};
-pub use decomposition::{Counts, Decomposition};
+pub use decomposition::{Counts, Decomposition, KeptAbsorbed, LowerCell, LowerSite};
 pub use rays::{group_by_line, visibility_rays, LineKey, RayEnd, RaySide, VisibilityRay};
 pub use wai_visibility::OnMap;

@@ -176,8 +176,17 @@ pub fn demo(out: &Path) -> Result<(), Failure> {
     let d = wai_cells::Decomposition::new(map);
     let c = d.counts();
     println!(
-        "decomposition: {} visibility rays, {} cells, N = {}, {} classes, max |EC| = {}, {} assignment conflicts",
-        c.rays, c.cells, c.total_complexity, c.classes, c.max_class_complexity, c.conflicts
+        "decomposition: {} visibility rays, {} 2-cells, N = {}, {} classes, max |EC| = {}; \
+         1-cells {} kept / {} absorbed, 0-cells {} kept / {} absorbed",
+        c.rays,
+        c.cells,
+        c.total_complexity,
+        c.classes,
+        c.max_class_complexity,
+        c.one_cells.kept,
+        c.one_cells.absorbed,
+        c.zero_cells.kept,
+        c.zero_cells.absorbed
     );
     let cells: Vec<_> = d
         .cells()
@@ -193,10 +202,20 @@ pub fn demo(out: &Path) -> Result<(), Failure> {
         })
         .collect();
     let cells_path = out.join("office-floor-cells.svg");
-    let caption = format!("{} cells in {} classes", c.cells, c.classes);
+    let caption = format!(
+        "{} 2-cells, {} kept 1-cells, {} kept 0-cells in {} classes",
+        c.cells, c.one_cells.kept, c.zero_cells.kept, c.classes
+    );
     write_file(
         &cells_path,
-        &wai_render::cells_svg(map, &cells, None, &MapStyle::default(), &caption),
+        &wai_render::cells_svg(
+            map,
+            &cells,
+            &crate::decompose::kept_lower_cells(&d),
+            None,
+            &MapStyle::default(),
+            &caption,
+        ),
     )?;
     println!("wrote {}", cells_path.display());
     let vis_path = out.join("office-floor-vis.svg");

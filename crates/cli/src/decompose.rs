@@ -97,6 +97,11 @@ pub fn decompose(path: &Path, opts: &Options<'_>, format: Format) -> Result<(), 
             "classes": c.classes,
             "max_class_complexity": c.max_class_complexity,
             "assignment_conflicts": c.conflicts,
+            "cells_by_dimension": {
+                "2": {"kept": c.cells, "absorbed": 0},
+                "1": {"kept": c.one_cells.kept, "absorbed": c.one_cells.absorbed},
+                "0": {"kept": c.zero_cells.kept, "absorbed": c.zero_cells.absorbed},
+            },
             "class_cells": sizes,
             "class_complexity": complexity,
             "seconds": elapsed.as_secs_f64(),
@@ -114,7 +119,11 @@ pub fn decompose(path: &Path, opts: &Options<'_>, format: Format) -> Result<(), 
             "arrangement:         {} vertices, {} edges",
             c.vertices, c.edges
         );
-        println!("cells:               {}", c.cells);
+        println!("cells:               {} (2-cells)", c.cells);
+        println!(
+            "1-cells, 0-cells:    {} and {} kept as cells of their own; {} and {} absorbed by a 2-cell",
+            c.one_cells.kept, c.zero_cells.kept, c.one_cells.absorbed, c.zero_cells.absorbed
+        );
         println!("total complexity N:  {}", c.total_complexity);
         println!("classes:             {}", c.classes);
         println!("max |EC|:            {}", c.max_class_complexity);
@@ -136,16 +145,45 @@ pub fn decompose(path: &Path, opts: &Options<'_>, format: Format) -> Result<(), 
             })
             .collect();
         let caption = format!(
-            "{} cells in {} classes{}",
+            "{} 2-cells, {} kept 1-cells and {} kept 0-cells in {} classes{}",
             c.cells,
+            c.one_cells.kept,
+            c.zero_cells.kept,
             c.classes,
             opts.class.map_or(String::new(), |k| format!(
                 "; class {k} ({} cells) in red",
                 d.classes()[k].len()
             ))
         );
-        let svg = cells_svg(map, &cells, opts.class, &MapStyle::default(), &caption);
+        let lower = kept_lower_cells(&d);
+        let svg = cells_svg(
+            map,
+            &cells,
+            &lower,
+            opts.class,
+            &MapStyle::default(),
+            &caption,
+        );
         std::fs::write(out, svg).map_err(|e| Failure::io(format!("{}: {e}", out.display())))?;
     }
     Ok(())
+}
+
+/// The kept 1- and 0-cells of `d`, to draw.
+pub(crate) fn kept_lower_cells(d: &Decomposition<'_>) -> Vec<wai_render::LowerDrawn> {
+    let arr = d.arrangement();
+    d.lower_cells()
+        .iter()
+        .filter(|l| l.absorbed_by.is_none())
+        .map(|l| wai_render::LowerDrawn {
+            points: match l.site {
+                wai_cells::LowerSite::Edge(e) => vec![
+                    arr.point(arr.half_edge(2 * e).origin).clone(),
+                    arr.point(arr.dest(2 * e)).clone(),
+                ],
+                wai_cells::LowerSite::Vertex(v) => vec![arr.point(v).clone()],
+            },
+            class: l.class,
+        })
+        .collect()
 }

@@ -365,9 +365,22 @@ fn line_across_box(p: Point, q: Point, lo: Point, hi: Point) -> Option<(RatPoint
 /// Draw cells over their map, each filled with a colour of its class;
 /// with `highlight`, the cells of that class stand out and the others fade.
 /// `cells` holds each cell's exact boundary and its class index.
+/// A kept cell of dimension 1 (two points: a segment) or 0 (one point),
+/// with its class, for [`cells_svg`].
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct LowerDrawn {
+    /// The segment's ends, or the one point.
+    pub points: Vec<RatPoint>,
+    pub class: usize,
+}
+
+/// The 2-cells filled by class, and the kept 1-cells (thick segments) and
+/// 0-cells (dots) drawn over them in dark outline with their class colour,
+/// so that cells of every dimension are visible.
 pub fn cells_svg(
     map: &Map,
     cells: &[(Vec<RatPoint>, usize)],
+    lower: &[LowerDrawn],
     highlight: Option<usize>,
     style: &MapStyle,
     caption: &str,
@@ -381,6 +394,25 @@ pub fn cells_svg(
             None => (class_colour(*class), "#555555", 0.3),
         };
         c.polygon_rat(ring, &fill, stroke, width);
+    }
+    for l in lower {
+        let colour = match highlight {
+            Some(h) if h == l.class => "#d62728".to_string(),
+            Some(_) => "#999999".to_string(),
+            None => class_colour(l.class),
+        };
+        let title = format!("kept {}-cell, class {}", l.points.len() - 1, l.class);
+        match l.points.as_slice() {
+            [a, b] => {
+                c.segment_rat(a, b, "#000000", 4.0, "", &title);
+                c.segment_rat(a, b, &colour, 2.0, "", &title);
+            }
+            [p] => {
+                c.dot_rat(p, 4.0, "#000000", &title);
+                c.dot_rat(p, 2.5, &colour, &title);
+            }
+            _ => {}
+        }
     }
     c.polygon(map.vertices(), "none", "#1f3b73", 1.5);
     c.finish(map.name().unwrap_or("map"), caption)

@@ -7,7 +7,8 @@ use wai_lemmas::{claim, claims_without_checker, Kind, Status, CLAIMS};
 /// Claims whose checker module has landed. Add an id here when its row in
 /// `CLAIMS` becomes `Status::Checker`.
 const WITH_CHECKER: &[&str] = &[
-    "L3.1a", "L3.1b", "L3.1c", "D3.5", "T3.2", "T3.3a", "T3.3b", "T3.9a", "T3.9b", "T3.10", "T5.17",
+    "L3.1a", "L3.1b", "L3.1c", "D3.5", "T3.2", "T3.3a", "T3.3b", "A3.6", "T3.9a", "T3.9b", "T3.10",
+    "T5.17",
 ];
 
 /// The (id, kind) of every row of every table of `CLAIMS.md` whose header's
@@ -141,6 +142,7 @@ fn references_match_the_ids_and_the_thesis() {
             "R" => "Remark",
             "O" => "Observation",
             "E" => "Fig",
+            "A" => "Section",
             other => panic!("{}: unknown id prefix {other}", c.id),
         };
         assert!(
@@ -149,7 +151,17 @@ fn references_match_the_ids_and_the_thesis() {
             c.id,
             c.reference
         );
-        if word != "Fig" {
+        if word == "Section" {
+            // A rule of a section (A3.6): the section's heading exists.
+            let heading = format!("# {number} ");
+            assert!(
+                thesis
+                    .lines()
+                    .any(|l| l.starts_with('#') && l.contains(&heading[1..])),
+                "{}: the thesis has no section {number}",
+                c.id
+            );
+        } else if word != "Fig" {
             let heading = format!("**{word} {number}");
             assert!(
                 thesis.contains(&heading),

@@ -6,7 +6,7 @@
 
 use crate::common::{map, pt};
 use std::collections::BTreeSet;
-use wai_cells::{Counts, Decomposition, FaceId};
+use wai_cells::{Counts, Decomposition, FaceId, KeptAbsorbed, LowerSite, Support};
 use wai_exact::{orientation_rat, Orientation, RatPoint};
 use wai_map::Map;
 use wai_visibility::{Skeleton, SkeletonKey, VisibilityIndex};
@@ -40,12 +40,22 @@ fn check_laws(d: &Decomposition) -> usize {
     // Cells: the bounded faces in face order.
     let faces: Vec<FaceId> = arr.cells().collect();
     assert_eq!(d.cells(), &faces[..], "{name}");
-    // Classes partition the cells, each class ascending and non-empty,
-    // ordered by first cell, and agree with `skeleton_of`.
+    // Classes partition the cells, each class ascending and non-empty
+    // (with a 2-cell or a kept lower-dimensional cell), the classes with a
+    // 2-cell first, ordered by first cell, and agree with `skeleton_of`.
     assert_eq!(d.classes().len(), d.skeletons().len(), "{name}");
     let mut seen = vec![false; arr.face_count()];
     for (i, class) in d.classes().iter().enumerate() {
-        assert!(!class.is_empty(), "{name}: class {i} empty");
+        assert!(
+            !class.is_empty() || !d.class_lower_cells(i).is_empty(),
+            "{name}: class {i} empty"
+        );
+        if i > 0 && !class.is_empty() {
+            assert!(
+                !d.classes()[i - 1].is_empty(),
+                "{name}: class {i} after a lower-only class"
+            );
+        }
         assert!(class.windows(2).all(|w| w[0] < w[1]), "{name}: class {i}");
         for &c in class {
             assert!(!seen[c], "{name}: cell {c} in two classes");
@@ -59,7 +69,11 @@ fn check_laws(d: &Decomposition) -> usize {
         d.cells().iter().all(|&c| seen[c]),
         "{name}: a cell in no class"
     );
-    let firsts: Vec<FaceId> = d.classes().iter().map(|c| c[0]).collect();
+    let firsts: Vec<FaceId> = d
+        .classes()
+        .iter()
+        .filter_map(|c| c.first().copied())
+        .collect();
     assert!(
         firsts.windows(2).all(|w| w[0] < w[1]),
         "{name}: class order"
@@ -94,9 +108,45 @@ fn check_laws(d: &Decomposition) -> usize {
             vertices: arr.vertex_count(),
             edges: arr.edge_count(),
             conflicts: arr.conflicts().len(),
+            one_cells: lower_tally(d, 1),
+            zero_cells: lower_tally(d, 0),
         },
         "{name}"
     );
+    // Cells of every dimension: one 1-cell per ray edge, one 0-cell per
+    // vertex off ∂M; an absorbed cell lies beside its 2-cell and shares its
+    // class; a kept one is listed by its class.
+    let ray_edges = (0..arr.edge_count())
+        .filter(|&e| matches!(arr.edge_support(e), Support::Rays(_)))
+        .count();
+    let inner_vertices = (0..arr.vertex_count())
+        .filter(|&v| !arr.is_on_map_boundary(v))
+        .count();
+    let c = d.counts();
+    assert_eq!(c.one_cells.kept + c.one_cells.absorbed, ray_edges, "{name}");
+    assert_eq!(
+        c.zero_cells.kept + c.zero_cells.absorbed,
+        inner_vertices,
+        "{name}"
+    );
+    for (i, l) in d.lower_cells().iter().enumerate() {
+        let beside: Vec<usize> = match l.site {
+            LowerSite::Edge(e) => vec![arr.half_edge(2 * e).face, arr.half_edge(2 * e + 1).face],
+            LowerSite::Vertex(v) => arr
+                .outgoing(v)
+                .into_iter()
+                .map(|h| arr.half_edge(h).face)
+                .collect(),
+        };
+        match l.absorbed_by {
+            Some(f) => {
+                assert!(beside.contains(&f), "{name}: {l:?}");
+                assert_eq!(d.skeleton_of(f), l.class, "{name}: {l:?}");
+                assert!(!d.class_lower_cells(l.class).contains(&i), "{name}: {l:?}");
+            }
+            None => assert!(d.class_lower_cells(l.class).contains(&i), "{name}: {l:?}"),
+        }
+    }
     assert_eq!(d.assignment().edge_owners().len(), arr.edge_count());
     // Representatives are strictly inside their cell; a second interior
     // point (the midpoint of the representative and a boundary vertex) has
@@ -161,6 +211,13 @@ fn l_room() {
             vertices: 8,
             edges: 12,
             conflicts: 0,
+            // The 4 rays from (2, 2) cross nothing: 4 ray edges, each with
+            // the skeleton of the cell on its anchor's side.
+            one_cells: KeptAbsorbed {
+                kept: 0,
+                absorbed: 4
+            },
+            zero_cells: KeptAbsorbed::default(),
         }
     );
     let expect = [
@@ -209,6 +266,16 @@ fn corridor_one_niche() {
             vertices: 15,
             edges: 23,
             conflicts: 0,
+            // Every ray edge and the one crossing inside have the skeleton
+            // of a 2-cell beside them: the sec. 3.6 rule holds on this map.
+            one_cells: KeptAbsorbed {
+                kept: 0,
+                absorbed: 9
+            },
+            zero_cells: KeptAbsorbed {
+                kept: 0,
+                absorbed: 1
+            },
         }
     );
     // The niche bottom sees exactly the niche: 4 skeleton vertices, and
@@ -356,4 +423,16 @@ fn progress_is_monotone_and_complete() {
     assert_eq!(d.counts(), e.counts());
     assert_eq!(d.skeletons(), e.skeletons());
     assert_eq!(d.classes(), e.classes());
+}
+
+fn lower_tally(d: &Decomposition<'_>, dim: u8) -> KeptAbsorbed {
+    let mut t = KeptAbsorbed::default();
+    for l in d.lower_cells().iter().filter(|l| l.dimension() == dim) {
+        if l.absorbed_by.is_some() {
+            t.absorbed += 1;
+        } else {
+            t.kept += 1;
+        }
+    }
+    t
 }

@@ -1,5 +1,6 @@
 //! Snapshot counts of the decomposition (STYLE 11): n, r, rays, cells, total
-//! complexity N, classes, max |EC| and assignment conflicts for each thesis
+//! complexity N, classes, max |EC|, assignment conflicts and the 1- and
+//! 0-cells kept/absorbed for each thesis
 //! family at small parameters, seeded random and orthogonal maps, and maps
 //! of `shared/datasets` (AGPLIB's dyadic coordinates exercise the GMP path).
 //! A change in a count must be explained in the commit that changes the
@@ -13,8 +14,9 @@ fn row(out: &mut String, name: &str, map: &Map) {
     let c = Decomposition::new(map).counts();
     writeln!(
         out,
-        "{name:<44} n={:<3} r={:<3} rays={:<5} cells={:<6} N={:<7} classes={:<6} max|EC|={:<5} conflicts={}",
-        c.n, c.r, c.rays, c.cells, c.total_complexity, c.classes, c.max_class_complexity, c.conflicts
+        "{name:<44} n={:<3} r={:<3} rays={:<5} cells={:<6} N={:<7} classes={:<6} max|EC|={:<5} conflicts={:<3} 1-cells={}/{} 0-cells={}/{}",
+        c.n, c.r, c.rays, c.cells, c.total_complexity, c.classes, c.max_class_complexity, c.conflicts,
+        c.one_cells.kept, c.one_cells.absorbed, c.zero_cells.kept, c.zero_cells.absorbed
     )
     .unwrap();
 }

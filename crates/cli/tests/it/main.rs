@@ -253,7 +253,7 @@ fn demo_runs_on_the_built_in_map() {
     assert!(back.status.success());
     assert!(dir.join("office-floor.svg").exists());
     assert!(
-        stdout.contains("decomposition: 150 visibility rays, 478 cells"),
+        stdout.contains("decomposition: 150 visibility rays, 478 2-cells"),
         "{stdout}"
     );
     assert!(dir.join("office-floor-cells.svg").exists());
@@ -349,4 +349,33 @@ fn decompose_prints_counts_and_refuses_bad_classes() {
     );
     assert_eq!(out.status.code(), Some(2));
     assert!(text(&out.stderr).contains("--class 99: the map has 5 classes"));
+}
+
+/// The doorway of `counterexamples/T3.3b-doorway-1d-cell.json`: its segment
+/// is a kept 1-cell with a skeleton of its own, counted by dimension and
+/// drawn in the SVG.
+#[test]
+fn decompose_counts_and_draws_cells_of_every_dimension() {
+    let doorway = r#"{"name": "s-tetromino", "outer": [[0, 0], [1, 0], [1, 1], [2, 1], [2, 3], [1, 3], [1, 2], [0, 2]]}"#;
+    let out = wai(&["decompose", "-", "--json"], doorway.as_bytes());
+    assert!(out.status.success(), "{}", text(&out.stderr));
+    let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    let by = &v["cells_by_dimension"];
+    assert_eq!(by["2"]["kept"], v["cells"]);
+    assert_eq!(by["2"]["absorbed"], 0);
+    assert_eq!(by["1"]["kept"], 1, "{v}");
+    assert!(by["1"]["absorbed"].as_u64().unwrap() > 0, "{v}");
+    assert_eq!(
+        (by["0"]["kept"].as_u64(), by["0"]["absorbed"].as_u64()),
+        (Some(0), Some(0))
+    );
+    let dir = std::env::temp_dir().join(format!("wai-dims-{}.svg", std::process::id()));
+    let out = wai(
+        &["decompose", "-", "--svg", dir.to_str().unwrap()],
+        doorway.as_bytes(),
+    );
+    assert!(out.status.success(), "{}", text(&out.stderr));
+    let svg = std::fs::read_to_string(&dir).unwrap();
+    std::fs::remove_file(&dir).ok();
+    assert!(svg.contains("kept 1-cell"), "the kept 1-cell is not drawn");
 }
