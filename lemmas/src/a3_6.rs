@@ -17,10 +17,11 @@
 //! The checker therefore sorts every examined piece into one of: the rule
 //! **holds** (the point has its assigned cell's skeleton); it **fails on a
 //! 1-cell** or **fails on a 0-cell** (the known failures: the point's
-//! skeleton is that of no adjacent 2-cell, so no assignment could be right,
-//! or the rays through a vertex have no common side, so the rule gives it
-//! no cell — `data["matches_incident_cell"]` says whether some incident
-//! 2-cell has its skeleton all the same); or it fails in some **other** way
+//! skeleton is that of no adjacent 2-cell, so no assignment could be right;
+//! or rays covering an edge point both ways with opposite sides, or the
+//! rays through a vertex have no common side, so the rule gives the piece
+//! no cell — `data["matches_adjacent_cell"]` / `["matches_incident_cell"]`
+//! say whether some adjacent 2-cell has its skeleton all the same); or it fails in some **other** way
 //! (the rule chose a cell, and the point has another adjacent 2-cell's
 //! skeleton). Every failure is a
 //! violation — the claim is exact and false — with `data["kind"]` one of
@@ -203,9 +204,12 @@ impl BoundaryRule {
             let conflict = conflicted_edge(e);
             tally.edges += 1;
             tally.conflicts += u64::from(conflict);
+            // Rays pointing both ways along the edge with opposite sides
+            // (a doorway): the rule has no answer, whatever the skeleton.
+            let both_ways = conflict && rays_point_both_ways(arr, e);
             let v = verdict(
                 &at,
-                Some(&cell[owner]),
+                (!both_ways).then_some(&cell[owner]),
                 &[&cell[f0], &cell[f1]],
                 FAILS_ON_1_CELL,
             );
@@ -221,7 +225,9 @@ impl BoundaryRule {
                         "point_file_units": sample::point_json(map, &p),
                         "edge_ends": [arr.point(a).to_string(), arr.point(b).to_string()],
                         "rays": rays_json(arr, arr.edge_rays(e)),
-                        "conflict": conflict, "owner": owner, "cells": [f0, f1],
+                        "conflict": conflict, "rays_point_both_ways": both_ways,
+                        "owner": owner, "cells": [f0, f1],
+                        "matches_adjacent_cell": at.is_ok() && (cell[f0] == at || cell[f1] == at),
                         "skeleton": embedded_json(&at),
                         "owner_skeleton": embedded_json(&cell[owner]),
                     }),
@@ -265,6 +271,18 @@ impl BoundaryRule {
         }
         (report, tally)
     }
+}
+
+/// Whether the rays covering edge `e` point both ways along it.
+fn rays_point_both_ways(arr: &Arrangement, e: usize) -> bool {
+    let d = arr.direction(2 * e);
+    let forward = |r: &usize| {
+        let ray = &arr.rays()[*r];
+        let (a, b) = (ray.source(), ray.start());
+        rug::Integer::from(b.x - a.x) * d.0 + rug::Integer::from(b.y - a.y) * d.1 > 0
+    };
+    let rays = arr.edge_rays(e);
+    rays.iter().any(forward) && !rays.iter().all(forward)
 }
 
 fn count(t: &mut Tally, v: Option<&str>) {

@@ -38,6 +38,7 @@
 mod arrangement;
 mod assignment;
 mod decomposition;
+mod estimate;
 mod rays;
 mod sanity;
 
@@ -47,5 +48,6 @@ pub use arrangement::{
 };
 pub use assignment::{BoundaryAssignment, Conflict};
 pub use decomposition::{Counts, Decomposition, KeptAbsorbed, LowerCell, LowerSite};
+pub use estimate::vertex_bound;
 pub use rays::{group_by_line, visibility_rays, LineKey, RayEnd, RaySide, VisibilityRay};
 pub use wai_visibility::OnMap;

@@ -340,3 +340,33 @@ fn same_skeleton_inside_each_cell() {
     }
     assert!(cells > 20, "{cells}");
 }
+
+/// The memory estimate's vertex bound, from predicates only, is never below
+/// the arrangement's real vertex count, and equals it where no three rays
+/// cross in one point (each pair of meeting rays adds one vertex).
+#[test]
+fn vertex_bound_bounds_the_arrangement() {
+    let mut maps: Vec<Map> = Vec::new();
+    for kind in wai_gen::RANDOM_KINDS {
+        for seed in 0..3 {
+            maps.push(wai_gen::random(kind.id, kind.min_n.max(20), seed).unwrap());
+        }
+    }
+    for f in wai_gen::FAMILIES {
+        if let Ok(m) = wai_gen::family(f.id, &[2]) {
+            maps.push(m);
+        }
+    }
+    let mut exact = 0;
+    for m in &maps {
+        let rays = wai_cells::visibility_rays(m);
+        let bound = wai_cells::vertex_bound(m, &rays);
+        let real = Arrangement::new(m, &rays).vertex_count() as u64;
+        assert!(bound >= real, "{:?}: bound {bound} < {real}", m.name());
+        exact += usize::from(bound == real);
+    }
+    assert!(
+        exact > maps.len() / 4,
+        "the bound is exact on only {exact} maps"
+    );
+}
