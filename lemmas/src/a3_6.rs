@@ -102,20 +102,6 @@ pub struct Tally {
     pub conflicts: u64,
 }
 
-impl Tally {
-    /// Adds another tally.
-    pub fn add(&mut self, o: &Tally) {
-        self.edges += o.edges;
-        self.vertices += o.vertices;
-        self.holds += o.holds;
-        self.fails_on_1_cell += o.fails_on_1_cell;
-        self.fails_on_0_cell += o.fails_on_0_cell;
-        self.wrong_cell += o.wrong_cell;
-        self.no_skeleton += o.no_skeleton;
-        self.conflicts += o.conflicts;
-    }
-}
-
 impl Checker for BoundaryRule {
     fn id(&self) -> &'static str {
         ID
@@ -174,11 +160,7 @@ impl BoundaryRule {
         let mut cell: Vec<Result<Embedded, String>> =
             vec![Err("the outer face".into()); arr.face_count()];
         for f in arr.cells() {
-            let ring: Vec<RatPoint> = arr
-                .face_vertices(f)
-                .into_iter()
-                .map(|v| arr.point(v).clone())
-                .collect();
+            let ring: Vec<RatPoint> = arr.face_points(f);
             cell[f] = match interior_points(&ring) {
                 Some([p, _]) => skeleton_at(index, &p),
                 None => Err(format!("cell {f} has no strict corner")),
@@ -187,12 +169,18 @@ impl BoundaryRule {
         if let Some((f, e)) = plant {
             cell[f] = Ok(e);
         }
-        let conflicted_edge = |e: usize| {
-            arr.conflicts()
-                .iter()
-                .any(|c| matches!(c, Conflict::Edge { edge, .. } if *edge == e))
-        };
-        for e in 0..arr.edge_count() {
+        // Per edge: whether the rule reports a conflict there, and whether
+        // its rays point both ways (a doorway), where the rule has no answer.
+        let mut conflict_at: Vec<Option<bool>> = vec![None; arr.edge_count()];
+        for c in arr.conflicts() {
+            if let Conflict::Edge {
+                edge, both_ways, ..
+            } = c
+            {
+                conflict_at[*edge] = Some(*both_ways);
+            }
+        }
+        for (e, &conflict_here) in conflict_at.iter().enumerate() {
             if !matches!(arr.edge_support(e), Support::Rays(_)) {
                 continue;
             }
@@ -201,12 +189,12 @@ impl BoundaryRule {
             let (f0, f1) = (arr.half_edge(2 * e).face, arr.half_edge(2 * e + 1).face);
             let owner = arr.owner_of_edge(e);
             let at = skeleton_at(index, &p);
-            let conflict = conflicted_edge(e);
+            let conflict = conflict_here.is_some();
             tally.edges += 1;
             tally.conflicts += u64::from(conflict);
             // Rays pointing both ways along the edge with opposite sides
             // (a doorway): the rule has no answer, whatever the skeleton.
-            let both_ways = conflict && rays_point_both_ways(arr, e);
+            let both_ways = conflict_here == Some(true);
             let v = verdict(
                 &at,
                 (!both_ways).then_some(&cell[owner]),
@@ -273,18 +261,6 @@ impl BoundaryRule {
     }
 }
 
-/// Whether the rays covering edge `e` point both ways along it.
-fn rays_point_both_ways(arr: &Arrangement, e: usize) -> bool {
-    let d = arr.direction(2 * e);
-    let forward = |r: &usize| {
-        let ray = &arr.rays()[*r];
-        let (a, b) = (ray.source(), ray.start());
-        rug::Integer::from(b.x - a.x) * d.0 + rug::Integer::from(b.y - a.y) * d.1 > 0
-    };
-    let rays = arr.edge_rays(e);
-    rays.iter().any(forward) && !rays.iter().all(forward)
-}
-
 fn count(t: &mut Tally, v: Option<&str>) {
     match v {
         None => t.holds += 1,
@@ -318,29 +294,10 @@ mod tests {
         assert!(t.edges >= 4 && t.holds == r.examined, "{t:?}");
     }
 
-    /// The S tetromino of `counterexamples/T3.3b-doorway-1d-cell.json`.
-    fn s_tetromino() -> Map {
-        let ring = [
-            (0, 0),
-            (1, 0),
-            (1, 1),
-            (2, 1),
-            (2, 3),
-            (1, 3),
-            (1, 2),
-            (0, 2),
-        ];
-        let ring = ring
-            .iter()
-            .map(|&(x, y)| wai_exact::Point::new(x, y))
-            .collect();
-        Map::from_ring(ring).unwrap().0
-    }
-
     /// The known failure: the doorway's segment is a 1-cell.
     #[test]
     fn the_doorway_fails_on_a_1_cell() {
-        let (r, t) = BoundaryRule.check_with_tally(&s_tetromino());
+        let (r, t) = BoundaryRule.check_with_tally(&fixtures::s_tetromino());
         assert!(t.fails_on_1_cell >= 1, "{t:?}");
         assert_eq!((t.wrong_cell, t.no_skeleton), (0, 0), "{t:?}");
         assert!(r.violations.iter().all(|v| is_known_failure(&v.data)));
@@ -356,11 +313,7 @@ mod tests {
             .find(|&e| matches!(arr.edge_support(e), Support::Rays(_)))
             .map(|e| arr.owner_of_edge(e))
             .unwrap();
-        let ring: Vec<RatPoint> = arr
-            .face_vertices(f)
-            .into_iter()
-            .map(|v| arr.point(v).clone())
-            .collect();
+        let ring: Vec<RatPoint> = arr.face_points(f);
         let (o, mut key) = skeleton_at(&index, &interior_points(&ring).unwrap()[0]).unwrap();
         key.offsets[0].0 += 1;
         let (r, t) = BoundaryRule.check_arrangement(&map, &arr, &index, Some((f, (o, key))));

@@ -374,6 +374,23 @@ pub(crate) mod fixtures {
         )
     }
 
+    /// The S tetromino of `counterexamples/T3.3b-doorway-1d-cell.json`:
+    /// opposite collinear rays cover the segment (1, 1)–(1, 2), a 1-cell.
+    pub(crate) fn s_tetromino() -> Map {
+        let ring = [
+            (0, 0),
+            (1, 0),
+            (1, 1),
+            (2, 1),
+            (2, 3),
+            (1, 3),
+            (1, 2),
+            (0, 2),
+        ];
+        let ring = ring.iter().map(|&(x, y)| Point::new(x, y)).collect();
+        Map::from_ring(ring).unwrap().0.with_name("s-tetromino")
+    }
+
     /// A room with a door in its north wall leading to a corridor, seen from
     /// (3, 1): V_p has a partial edge between two spurious edges, and half
     /// edges.

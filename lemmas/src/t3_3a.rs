@@ -82,11 +82,7 @@ impl CellsConvex {
             return (report, stats);
         }
         for f in arr.cells() {
-            let ring: Vec<RatPoint> = arr
-                .face_vertices(f)
-                .into_iter()
-                .map(|v| arr.point(v).clone())
-                .collect();
+            let ring: Vec<RatPoint> = arr.face_points(f);
             let (r, s) = check_cell(sample::map_name(map), f, &ring);
             report.examined += r.examined;
             report.violations.extend(r.violations);

@@ -177,11 +177,7 @@ impl SameSkeleton {
         }
         let index = VisibilityIndex::new(map);
         for f in arr.cells() {
-            let ring: Vec<RatPoint> = arr
-                .face_vertices(f)
-                .into_iter()
-                .map(|v| arr.point(v).clone())
-                .collect();
+            let ring: Vec<RatPoint> = arr.face_points(f);
             stats.cells += 1;
             let Some([a, b]) = interior_points(&ring) else {
                 report.record(Some(Violation::with_data(
@@ -316,18 +312,7 @@ mod tests {
     /// 1-cell with one skeleton: the restated claim holds there.
     #[test]
     fn the_doorway_passes_with_its_1_cell() {
-        let ring = [
-            (0, 0),
-            (1, 0),
-            (1, 1),
-            (2, 1),
-            (2, 3),
-            (1, 3),
-            (1, 2),
-            (0, 2),
-        ];
-        let ring = ring.iter().map(|&(x, y)| Point::new(x, y)).collect();
-        let s_tetromino = Map::from_ring(ring).unwrap().0;
+        let s_tetromino = fixtures::s_tetromino();
         assert!(
             crate::a3_6::BoundaryRule
                 .check_with_tally(&s_tetromino)
@@ -346,11 +331,7 @@ mod tests {
         let cells = arr
             .cells()
             .map(|f| {
-                let ring: Vec<RatPoint> = arr
-                    .face_vertices(f)
-                    .into_iter()
-                    .map(|v| arr.point(v).clone())
-                    .collect();
+                let ring: Vec<RatPoint> = arr.face_points(f);
                 (f, interior_points(&ring).unwrap())
             })
             .collect();

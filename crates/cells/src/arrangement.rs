@@ -525,6 +525,13 @@ impl Arrangement {
             .map(|h| self.half_edges[h].origin)
             .collect()
     }
+    /// The exact points of the vertices of face `f`, in boundary order.
+    pub fn face_points(&self, f: FaceId) -> Vec<RatPoint> {
+        self.face_vertices(f)
+            .into_iter()
+            .map(|v| self.points[v].clone())
+            .collect()
+    }
     /// The half-edges leaving `v`, counter-clockwise.
     pub fn outgoing(&self, v: VertexId) -> Vec<HalfEdgeId> {
         let start = self.vertices[v].out;

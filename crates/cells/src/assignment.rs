@@ -16,12 +16,15 @@ pub enum Conflict {
     /// half-edge `2 · edge`, `right` to the face of `2 · edge + 1`
     /// (indices into the rays). `owner` is the default chosen: the choice
     /// of the nearest anchor's ray, or of the lowest index when the rays
-    /// point both ways (see [`BoundaryAssignment`]).
+    /// point both ways (see [`BoundaryAssignment`]). `both_ways`: the rays
+    /// point both ways along the edge (a doorway between two anchors), so
+    /// the rule has no answer and `owner` is only a default.
     Edge {
         edge: EdgeId,
         left: Vec<usize>,
         right: Vec<usize>,
         owner: FaceId,
+        both_ways: bool,
     },
     /// No cell around `vertex` lies on the assigned side of every ray
     /// through it (`rays`: those with the vertex in their relative
@@ -139,7 +142,8 @@ pub(crate) fn assign(arr: &Arrangement) -> BoundaryAssignment {
                         right.push(r);
                     }
                 }
-                let owner = match nearest_anchor_ray(arr, &geom.rays, dir) {
+                let nearest = nearest_anchor_ray(arr, &geom.rays, dir);
+                let owner = match nearest {
                     // One way along the edge: the last obstruction passed
                     // decides (its anchor is nearest behind the edge).
                     Some(r) if left.contains(&r) => f0,
@@ -156,6 +160,7 @@ pub(crate) fn assign(arr: &Arrangement) -> BoundaryAssignment {
                         left,
                         right,
                         owner,
+                        both_ways: nearest.is_none(),
                     });
                 }
                 edge_owner.push(owner);

@@ -206,38 +206,27 @@ impl<'m> Decomposition<'m> {
         let step = (total / 100).max(1);
 
         let index = VisibilityIndex::new(map);
+        // V*_p at an exact point of the cell `what`, in its embedding.
+        let skeleton_at = |rep: &RatPoint, what: &dyn std::fmt::Debug| {
+            let vp = index.visibility_polygon(rep).unwrap_or_else(|e| {
+                panic!("{what:?}: no visibility polygon at its point {rep}: {e}")
+            });
+            Skeleton::of(map, &vp).unwrap_or_else(|e| panic!("{what:?}: no skeleton at {rep}: {e}"))
+        };
         let mut sizes = Vec::with_capacity(total);
         let mut representatives = Vec::with_capacity(total);
         let mut skeleton_index = Vec::with_capacity(total);
-        let mut skeletons: Vec<SkeletonKey> = Vec::new();
-        let mut classes: Vec<Vec<FaceId>> = Vec::new();
-        let mut class_complexity: Vec<usize> = Vec::new();
-        let mut by_key: HashMap<SkeletonKey, usize> = HashMap::new();
+        let mut table = ClassTable::default();
         let mut origins: Vec<Point> = Vec::with_capacity(total);
         for (i, &f) in cells.iter().enumerate() {
             let vs = arrangement.face_vertices(f);
             let size = vs.len();
             let rep = interior_point(&arrangement, &vs);
-            let vp = index.visibility_polygon(&rep).unwrap_or_else(|e| {
-                panic!("cell {f}: no visibility polygon at its interior point {rep}: {e}")
-            });
-            let sk = Skeleton::of(map, &vp)
-                .unwrap_or_else(|e| panic!("cell {f}: no skeleton at {rep}: {e}"));
+            let sk = skeleton_at(&rep, &format_args!("cell {f}"));
             origins.push(sk.origin());
-            let key = sk.key();
-            let class = match by_key.get(&key) {
-                Some(&c) => c,
-                None => {
-                    let c = skeletons.len();
-                    skeletons.push(key.clone());
-                    classes.push(Vec::new());
-                    class_complexity.push(0);
-                    by_key.insert(key, c);
-                    c
-                }
-            };
-            classes[class].push(f);
-            class_complexity[class] += 2 * size;
+            let class = table.intern(sk.key());
+            table.classes[class].push(f);
+            table.complexity[class] += 2 * size;
             sizes.push(size);
             representatives.push(rep);
             skeleton_index.push(class);
@@ -272,36 +261,16 @@ impl<'m> Decomposition<'m> {
                 sites.push((LowerSite::Vertex(v), arrangement.point(v).clone(), faces));
             }
         }
-        let mut class_lower: Vec<Vec<usize>> = vec![Vec::new(); classes.len()];
         for (site, rep, faces) in sites {
-            let vp = index.visibility_polygon(&rep).unwrap_or_else(|e| {
-                panic!("{site:?}: no visibility polygon at its point {rep}: {e}")
+            let sk = skeleton_at(&rep, &site);
+            let class = table.intern(sk.key());
+            let absorbed_by = faces.iter().copied().find(|&f| {
+                position[f] != NOT_A_CELL
+                    && skeleton_index[position[f]] == class
+                    && origins[position[f]] == sk.origin()
             });
-            let sk = Skeleton::of(map, &vp)
-                .unwrap_or_else(|e| panic!("{site:?}: no skeleton at {rep}: {e}"));
-            let key = sk.key();
-            let known = by_key.get(&key).copied();
-            let absorbed_by = known.and_then(|c| {
-                faces.iter().copied().find(|&f| {
-                    position[f] != NOT_A_CELL
-                        && skeleton_index[position[f]] == c
-                        && origins[position[f]] == sk.origin()
-                })
-            });
-            let class = match known {
-                Some(c) => c,
-                None => {
-                    let c = skeletons.len();
-                    skeletons.push(key.clone());
-                    classes.push(Vec::new());
-                    class_complexity.push(0);
-                    class_lower.push(Vec::new());
-                    by_key.insert(key, c);
-                    c
-                }
-            };
             if absorbed_by.is_none() {
-                class_lower[class].push(lower.len());
+                table.lower[class].push(lower.len());
             }
             lower.push(LowerCell {
                 site,
@@ -320,11 +289,11 @@ impl<'m> Decomposition<'m> {
             sizes,
             representatives,
             skeleton_index,
-            skeletons,
-            classes,
-            class_complexity,
+            skeletons: table.skeletons,
+            classes: table.classes,
+            class_complexity: table.complexity,
             lower,
-            class_lower,
+            class_lower: table.lower,
         }
     }
 
@@ -458,6 +427,36 @@ impl<'m> Decomposition<'m> {
             one_cells: tally(1),
             zero_cells: tally(0),
         }
+    }
+}
+
+/// The classes as they are found: one row per distinct skeleton key, in
+/// the order first seen.
+#[derive(Default)]
+struct ClassTable {
+    by_key: HashMap<SkeletonKey, usize>,
+    skeletons: Vec<SkeletonKey>,
+    /// By class: its 2-cells.
+    classes: Vec<Vec<FaceId>>,
+    /// By class: |EC| of its 2-cells.
+    complexity: Vec<usize>,
+    /// By class: its kept lower-dimensional cells.
+    lower: Vec<Vec<usize>>,
+}
+
+impl ClassTable {
+    /// The class of `key`, a new empty one if it was not seen before.
+    fn intern(&mut self, key: SkeletonKey) -> usize {
+        if let Some(&c) = self.by_key.get(&key) {
+            return c;
+        }
+        let c = self.skeletons.len();
+        self.skeletons.push(key.clone());
+        self.classes.push(Vec::new());
+        self.complexity.push(0);
+        self.lower.push(Vec::new());
+        self.by_key.insert(key, c);
+        c
     }
 }
 

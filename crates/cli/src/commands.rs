@@ -188,19 +188,7 @@ pub fn demo(out: &Path) -> Result<(), Failure> {
         c.zero_cells.kept,
         c.zero_cells.absorbed
     );
-    let cells: Vec<_> = d
-        .cells()
-        .iter()
-        .map(|&f| {
-            let a = d.arrangement();
-            let ring = a
-                .face_vertices(f)
-                .into_iter()
-                .map(|v| a.point(v).clone())
-                .collect();
-            (ring, d.skeleton_of(f))
-        })
-        .collect();
+    let cells = crate::decompose::cell_rings(&d);
     let cells_path = out.join("office-floor-cells.svg");
     let caption = format!(
         "{} 2-cells, {} kept 1-cells, {} kept 0-cells in {} classes",

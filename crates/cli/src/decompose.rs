@@ -135,19 +135,7 @@ pub fn decompose(path: &Path, opts: &Options<'_>, format: Format) -> Result<(), 
         println!("time:                {:.3} s", elapsed.as_secs_f64());
     }
     if let Some(out) = opts.svg {
-        let cells: Vec<_> = d
-            .cells()
-            .iter()
-            .map(|&f| {
-                let ring = d
-                    .arrangement()
-                    .face_vertices(f)
-                    .into_iter()
-                    .map(|v| d.arrangement().point(v).clone())
-                    .collect();
-                (ring, d.skeleton_of(f))
-            })
-            .collect();
+        let cells = cell_rings(&d);
         let caption = format!(
             "{} 2-cells, {} kept 1-cells and {} kept 0-cells in {} classes{}",
             c.cells,
@@ -171,6 +159,14 @@ pub fn decompose(path: &Path, opts: &Options<'_>, format: Format) -> Result<(), 
         std::fs::write(out, svg).map_err(|e| Failure::io(format!("{}: {e}", out.display())))?;
     }
     Ok(())
+}
+
+/// The 2-cells of `d` as exact rings with their classes, to draw.
+pub(crate) fn cell_rings(d: &Decomposition<'_>) -> Vec<(Vec<wai_exact::RatPoint>, usize)> {
+    d.cells()
+        .iter()
+        .map(|&f| (d.arrangement().face_points(f), d.skeleton_of(f)))
+        .collect()
 }
 
 /// The kept 1- and 0-cells of `d`, to draw.
