@@ -16,18 +16,20 @@
 //!
 //! ## Trust
 //! Exhaustive over cells, sampled within each cell; every comparison is
-//! exact. The arrangement is the production one
-//! ([`wai_cells::visibility_rays`], [`wai_cells::Arrangement::new`]); every
-//! skeleton is computed afresh by [`wai_visibility::VisibilityIndex`] and
-//! [`wai_visibility::Skeleton::of`], at exact points, one instance per
-//! cell:
+//! exact. The cells and their skeletons are the production
+//! [`wai_cells::Decomposition`]'s, which computes skeletons by walking the
+//! arrangement from one query (sec. 3.9.2); every sample's skeleton is
+//! computed afresh by [`wai_visibility::VisibilityIndex`] and
+//! [`wai_visibility::Skeleton::of`] and compared with its cell's, one
+//! instance per cell:
 //! - a 2-cell: two interior points (the centroid of a strict corner and its
 //!   neighbours, and the point a quarter of the way from it to the opposite
-//!   vertex) have equal skeletons;
+//!   vertex);
 //! - a 1-cell (an arrangement edge on a ray; edges on ∂M are not interior):
-//!   the points at 1/4, 1/2 and 3/4 of it have equal skeletons;
-//! - a 0-cell (an arrangement vertex off ∂M): its skeleton can be built.
+//!   the points at 1/4, 1/2 and 3/4 of it;
+//! - a 0-cell (an arrangement vertex off ∂M): the vertex.
 //!
+//! So the checker also tests the walk against fresh queries on every cell.
 //! Two skeletons are equal when their origins v0 (map points) and their
 //! canonical keys are: the same skeleton in the same embedding. The proof of
 //! Thm 3.3 (a segment inside one convex cell that no ray crosses) makes every
@@ -35,7 +37,7 @@
 //! **Not covered:** points of ∂M (the thesis assumes viewpoints off ∂M).
 
 use serde_json::{json, Value};
-use wai_cells::{visibility_rays, Arrangement, Support};
+use wai_cells::{visibility_rays, Arrangement, Decomposition, LowerSite};
 use wai_exact::{orientation_rat, Orientation, Point, RatPoint};
 use wai_map::Map;
 use wai_visibility::{Skeleton, SkeletonKey, VisibilityIndex};
@@ -176,10 +178,17 @@ impl SameSkeleton {
             return (report, stats);
         }
         let index = VisibilityIndex::new(map);
+        // The cells' skeletons as the decomposition computes them (by its
+        // walk, sec. 3.9.2): every sample is checked against them.
+        let d = Decomposition::new(map);
+        let embedded = |origin: usize, class: usize| -> Result<Embedded, String> {
+            Ok((map.vertices()[origin], d.skeletons()[class].clone()))
+        };
+        let arr = d.arrangement();
         for f in arr.cells() {
             let ring: Vec<RatPoint> = arr.face_points(f);
             stats.cells += 1;
-            let Some([a, b]) = interior_points(&ring) else {
+            let Some(points) = interior_points(&ring) else {
                 report.record(Some(Violation::with_data(
                     format!("map {name}, cell {f}: no strict corner, no interior point"),
                     json!({"map": name, "kind": NO_SKELETON, "cell": f,
@@ -187,43 +196,38 @@ impl SameSkeleton {
                 )));
                 continue;
             };
-            let claimed = skeleton_at(&index, &a);
-            let r = check_cell_points(map, &index, Cell::Face(f), &claimed, &[b]);
-            report.absorb(r);
-        }
-        for e in 0..arr.edge_count() {
-            if !matches!(arr.edge_support(e), Support::Rays(_)) {
-                continue;
-            }
-            stats.edges += 1;
-            let (a, b) = (
-                arr.point(arr.half_edge(2 * e).origin),
-                arr.point(arr.dest(2 * e)),
-            );
-            let mid = RatPoint::midpoint(a, b);
-            let points = [RatPoint::midpoint(a, &mid), RatPoint::midpoint(&mid, b)];
-            let claimed = skeleton_at(&index, &mid);
+            let claimed = embedded(d.origin_of(f), d.skeleton_of(f));
             report.absorb(check_cell_points(
                 map,
                 &index,
-                Cell::Edge(e),
+                Cell::Face(f),
                 &claimed,
                 &points,
             ));
         }
-        for v in 0..arr.vertex_count() {
-            if arr.is_on_map_boundary(v) {
-                continue;
-            }
-            stats.vertices += 1;
-            let claimed = skeleton_at(&index, arr.point(v));
-            report.absorb(check_cell_points(
-                map,
-                &index,
-                Cell::Vertex(v),
-                &claimed,
-                &[],
-            ));
+        for c in d.lower_cells() {
+            let claimed = embedded(c.origin, c.class);
+            let (cell, points) = match c.site {
+                LowerSite::Edge(e) => {
+                    stats.edges += 1;
+                    let (a, b) = (
+                        arr.point(arr.half_edge(2 * e).origin),
+                        arr.point(arr.dest(2 * e)),
+                    );
+                    let mid = RatPoint::midpoint(a, b);
+                    let points = vec![
+                        RatPoint::midpoint(a, &mid),
+                        mid.clone(),
+                        RatPoint::midpoint(&mid, b),
+                    ];
+                    (Cell::Edge(e), points)
+                }
+                LowerSite::Vertex(v) => {
+                    stats.vertices += 1;
+                    (Cell::Vertex(v), vec![arr.point(v).clone()])
+                }
+            };
+            report.absorb(check_cell_points(map, &index, cell, &claimed, &points));
         }
         (report, stats)
     }
@@ -231,8 +235,7 @@ impl SameSkeleton {
 
 /// T3.3b on one cell: the cell is one instance, violated if the skeleton
 /// of some point of `points` (computed afresh through `index`) differs from
-/// `claimed`, the skeleton at the cell's first sample, or if a skeleton
-/// cannot be built. A violation names the map, the cell, the point (exact,
+/// `claimed`, the cell's skeleton, or if a skeleton cannot be built. A violation names the map, the cell, the point (exact,
 /// and in file units) and both skeletons.
 pub fn check_cell_points(
     map: &Map,
@@ -259,7 +262,7 @@ pub fn check_cell_points(
         } else {
             SKELETON_DIFFERS
         };
-        let p = p.map_or("its first sample".to_owned(), ToString::to_string);
+        let p = p.map_or("the cell".to_owned(), ToString::to_string);
         Violation::with_data(
             format!(
                 "map {name}, {}: the point {p} has {}",
@@ -267,7 +270,7 @@ pub fn check_cell_points(
                 if kind == NO_SKELETON {
                     "no skeleton"
                 } else {
-                    "another skeleton than the cell's first sample"
+                    "another skeleton than its cell's"
                 }
             ),
             json!({

@@ -2,14 +2,15 @@
 //! boundary assignment (sec. 3.6), the skeleton of every cell (Def 3.9) and
 //! the equivalence classes of cells (Def 3.10).
 
-use crate::arrangement::{Arrangement, EdgeId, FaceId, Support, VertexId};
+use crate::arrangement::{Arrangement, EdgeId, FaceId, VertexId};
 use crate::assignment::BoundaryAssignment;
+use crate::fx::FxHashMap;
+use crate::incremental::{Compact, Walker};
 use crate::rays::{visibility_rays, VisibilityRay};
 use rug::Integer;
-use std::collections::HashMap;
-use wai_exact::{orientation_rat, Orientation, Point, RatPoint};
+use wai_exact::{orientation_rat, Orientation, RatPoint};
 use wai_map::Map;
-use wai_visibility::{Skeleton, SkeletonKey, VisibilityIndex};
+use wai_visibility::{SkeletonKey, VisibilityIndex};
 
 /// Marks the outer face in the face → cell position table.
 const NOT_A_CELL: usize = usize::MAX;
@@ -19,9 +20,12 @@ const NOT_A_CELL: usize = usize::MAX;
 ///
 /// Built in one pass: [`visibility_rays`], [`Arrangement::new`] (which
 /// applies the boundary assignment of sec. 3.6), then for every cell one
-/// exact interior point ([`Decomposition::representative`]), its V_p from
-/// one [`VisibilityIndex`] shared by all cells, and the canonical
-/// [`SkeletonKey`] of its skeleton. Cells with equal keys form a class.
+/// exact interior point ([`Decomposition::representative`]) and its
+/// skeleton, found by walking the arrangement from one visibility query
+/// (sec. 3.9.2: crossing an edge on a ray line changes the visibility of
+/// the map vertices on that line only; see the `incremental` module), and
+/// the canonical [`SkeletonKey`] of each distinct skeleton. Cells with equal
+/// keys form a class.
 ///
 /// # Cells of every dimension
 /// The decomposition has open cells of dimension 2 (the faces, "cells" in
@@ -38,8 +42,8 @@ const NOT_A_CELL: usize = usize::MAX;
 /// # Edge cases
 /// - The skeleton of a cell is computed at one point (an interior point of
 ///   a 2-cell, the midpoint of a 1-cell); T3.3b says every point of the
-///   cell has the same skeleton. That claim is checked elsewhere, not
-///   assumed by a second computation here.
+///   cell has the same skeleton. The T3.3b checker compares the skeletons
+///   this walk gives with fresh visibility queries at points of every cell.
 /// - Counts follow the arrangement: a cell's size is the number of
 ///   arrangement vertices on its boundary, including vertices where the
 ///   boundary goes straight on (a ray ending in the middle of a map edge
@@ -81,6 +85,8 @@ pub struct Decomposition<'m> {
     representatives: Vec<RatPoint>,
     /// By cell position: index into `skeletons`.
     skeleton_index: Vec<usize>,
+    /// By cell position: the map vertex that is the skeleton's origin v0.
+    origins: Vec<usize>,
     skeletons: Vec<SkeletonKey>,
     classes: Vec<Vec<FaceId>>,
     class_complexity: Vec<usize>,
@@ -115,6 +121,9 @@ pub struct LowerCell {
     pub representative: RatPoint,
     /// Its skeleton's index in [`Decomposition::skeletons`] (= its class).
     pub class: usize,
+    /// The map vertex that is its skeleton's origin v0: with `class`, the
+    /// skeleton in its embedding.
+    pub origin: usize,
     /// The adjacent 2-cell that absorbs it, if any.
     pub absorbed_by: Option<FaceId>,
 }
@@ -206,69 +215,67 @@ impl<'m> Decomposition<'m> {
         let step = (total / 100).max(1);
 
         let index = VisibilityIndex::new(map);
-        // V*_p at an exact point of the cell `what`, in its embedding.
-        let skeleton_at = |rep: &RatPoint, what: &dyn std::fmt::Debug| {
-            let vp = index.visibility_polygon(rep).unwrap_or_else(|e| {
-                panic!("{what:?}: no visibility polygon at its point {rep}: {e}")
-            });
-            Skeleton::of(map, &vp).unwrap_or_else(|e| panic!("{what:?}: no skeleton at {rep}: {e}"))
-        };
+        let mut reps: Vec<Option<RatPoint>> = vec![None; arrangement.face_count()];
         let mut sizes = Vec::with_capacity(total);
+        for &f in &cells {
+            let vs = arrangement.face_vertices(f);
+            sizes.push(vs.len());
+            reps[f] = Some(interior_point(&arrangement, &vs));
+        }
+        let mut walker = Walker::new(map, &arrangement, &index);
+        let walked = walker.walk(&reps, &mut |done| {
+            if done % step == 0 && done < total {
+                progress(done, total);
+            }
+        });
+        let mut table = ClassTable::default();
         let mut representatives = Vec::with_capacity(total);
         let mut skeleton_index = Vec::with_capacity(total);
-        let mut table = ClassTable::default();
-        let mut origins: Vec<Point> = Vec::with_capacity(total);
+        let mut origins: Vec<usize> = Vec::with_capacity(total);
         for (i, &f) in cells.iter().enumerate() {
-            let vs = arrangement.face_vertices(f);
-            let size = vs.len();
-            let rep = interior_point(&arrangement, &vs);
-            let sk = skeleton_at(&rep, &format_args!("cell {f}"));
+            let sk = walked[f].as_ref().expect("every cell is walked");
             origins.push(sk.origin());
-            let class = table.intern(sk.key());
+            let class = table.intern_compact(map, sk);
             table.classes[class].push(f);
-            table.complexity[class] += 2 * size;
-            sizes.push(size);
-            representatives.push(rep);
+            table.complexity[class] += 2 * sizes[i];
+            representatives.push(reps[f].take().expect("a cell"));
             skeleton_index.push(class);
-            if (i + 1) % step == 0 && i + 1 < total {
-                progress(i + 1, total);
-            }
         }
 
-        // Cells of dimension 1 and 0, each with its skeleton at one exact
-        // point, absorbed by an adjacent 2-cell with the same skeleton in
-        // the same embedding.
+        // Cells of dimension 1 and 0, each with its skeleton, absorbed by an
+        // adjacent 2-cell with the same skeleton in the same embedding.
         let mut lower: Vec<LowerCell> = Vec::new();
-        let mut sites: Vec<(LowerSite, RatPoint, Vec<FaceId>)> = Vec::new();
-        for e in 0..arrangement.edge_count() {
-            if matches!(arrangement.edge_support(e), Support::Rays(_)) {
-                let (a, b) = (arrangement.half_edge(2 * e).origin, arrangement.dest(2 * e));
-                let faces = vec![
+        walker.lower(&mut |site, rep, sk| {
+            let faces: Vec<FaceId> = match site {
+                LowerSite::Edge(e) => vec![
                     arrangement.half_edge(2 * e).face,
                     arrangement.half_edge(2 * e + 1).face,
-                ];
-                let mid = RatPoint::midpoint(arrangement.point(a), arrangement.point(b));
-                sites.push((LowerSite::Edge(e), mid, faces));
-            }
-        }
-        for v in 0..arrangement.vertex_count() {
-            if !arrangement.is_on_map_boundary(v) {
-                let faces = arrangement
+                ],
+                LowerSite::Vertex(v) => arrangement
                     .outgoing(v)
                     .into_iter()
                     .map(|h| arrangement.half_edge(h).face)
-                    .collect();
-                sites.push((LowerSite::Vertex(v), arrangement.point(v).clone(), faces));
-            }
-        }
-        for (site, rep, faces) in sites {
-            let sk = skeleton_at(&rep, &site);
-            let class = table.intern(sk.key());
-            let absorbed_by = faces.iter().copied().find(|&f| {
-                position[f] != NOT_A_CELL
-                    && skeleton_index[position[f]] == class
-                    && origins[position[f]] == sk.origin()
-            });
+                    .collect(),
+            };
+            // Most are absorbed: equal compact skeletons are equal
+            // skeletons in the same embedding, and need no class lookup.
+            let same = faces
+                .iter()
+                .copied()
+                .find(|&f| walked[f].as_ref().is_some_and(|w| *w == sk));
+            let (class, absorbed_by) = match same {
+                Some(f) => (skeleton_index[position[f]], Some(f)),
+                None => {
+                    let class = table.intern_compact(map, &sk);
+                    // Collinear map edges make the converse need the key.
+                    let by = faces.iter().copied().find(|&f| {
+                        position[f] != NOT_A_CELL
+                            && skeleton_index[position[f]] == class
+                            && origins[position[f]] == sk.origin()
+                    });
+                    (class, by)
+                }
+            };
             if absorbed_by.is_none() {
                 table.lower[class].push(lower.len());
             }
@@ -276,9 +283,12 @@ impl<'m> Decomposition<'m> {
                 site,
                 representative: rep,
                 class,
+                origin: sk.origin(),
                 absorbed_by,
             });
-        }
+        });
+        drop(walker);
+        drop(walked);
         progress(total, total);
 
         Decomposition {
@@ -289,6 +299,7 @@ impl<'m> Decomposition<'m> {
             sizes,
             representatives,
             skeleton_index,
+            origins,
             skeletons: table.skeletons,
             classes: table.classes,
             class_complexity: table.complexity,
@@ -359,6 +370,12 @@ impl<'m> Decomposition<'m> {
     /// [`Decomposition::classes`].
     pub fn skeleton_of(&self, cell: FaceId) -> usize {
         self.skeleton_index[self.pos(cell)]
+    }
+
+    /// The map vertex that is the origin v0 of `cell`'s skeleton: with
+    /// [`Decomposition::skeleton_of`], the skeleton in its embedding.
+    pub fn origin_of(&self, cell: FaceId) -> usize {
+        self.origins[self.pos(cell)]
     }
 
     /// The distinct skeleton keys, one per class, in class order.
@@ -434,7 +451,7 @@ impl<'m> Decomposition<'m> {
 /// the order first seen.
 #[derive(Default)]
 struct ClassTable {
-    by_key: HashMap<SkeletonKey, usize>,
+    by_key: FxHashMap<SkeletonKey, usize>,
     skeletons: Vec<SkeletonKey>,
     /// By class: its 2-cells.
     classes: Vec<Vec<FaceId>>,
@@ -442,9 +459,22 @@ struct ClassTable {
     complexity: Vec<usize>,
     /// By class: its kept lower-dimensional cells.
     lower: Vec<Vec<usize>>,
+    /// Compact skeletons seen, with their class (most repeat).
+    by_compact: FxHashMap<Compact, usize>,
 }
 
 impl ClassTable {
+    /// The class of a compact skeleton: its canonical key is built only
+    /// the first time it is seen.
+    fn intern_compact(&mut self, map: &Map, sk: &Compact) -> usize {
+        if let Some(&c) = self.by_compact.get(sk) {
+            return c;
+        }
+        let c = self.intern(sk.key(map));
+        self.by_compact.insert(sk.clone(), c);
+        c
+    }
+
     /// The class of `key`, a new empty one if it was not seen before.
     fn intern(&mut self, key: SkeletonKey) -> usize {
         if let Some(&c) = self.by_key.get(&key) {

@@ -39,6 +39,10 @@ mod arrangement;
 mod assignment;
 mod decomposition;
 mod estimate;
+mod eye;
+mod fx;
+mod incremental;
+mod line_view;
 mod rays;
 mod sanity;
 

@@ -8,7 +8,7 @@ use wai_exact::{
     Line, Orientation, Point, RatPoint, Side,
 };
 use wai_map::Map;
-use wai_visibility::OnMap;
+use wai_visibility::{OnMap, VisibilityIndex};
 
 /// Def 3.8: a **left** or **right** ray, according to whether the map
 /// edges incident to the anchor lie to the left or to the right of the
@@ -268,9 +268,11 @@ pub fn group_by_line(rays: &[VisibilityRay]) -> BTreeMap<LineKey, Vec<usize>> {
 /// ```
 ///
 /// # Complexity
-/// `O(r · n²)` predicates on input points: an `O(n)` scan per pair of a
-/// reflex vertex and a vertex (stopping at the first blocking edge when the
-/// pair is not visible). Orientations take the `i128` fast path below
+/// One visibility query per reflex vertex
+/// ([`VisibilityIndex::vertex_view`], triangular expansion) names the
+/// vertices it sees; then `O(n)` predicates per such pair (the exact
+/// visibility check and the shot): `O(n · R)` for `R` rays instead of a scan
+/// of all `r · n` pairs. Orientations take the `i128` fast path below
 /// `2^ORIENTATION_FAST_BITS`, the comparisons of crossings along the ray
 /// below `2^INTERSECTION_FAST_BITS`; GMP beyond, and to construct end
 /// points in the relative interior of edges. A 76-vertex map with 54
@@ -280,9 +282,17 @@ pub fn visibility_rays(map: &Map) -> Vec<VisibilityRay> {
     let n = v.len();
     let mut sides = vec![Side::On; n];
     let mut rays = Vec::new();
+    let index = VisibilityIndex::new(map);
     for &a in map.reflex_vertices() {
         let (prev, next) = ((a + n - 1) % n, (a + 1) % n);
-        for j in (0..n).filter(|&j| j != a) {
+        // The candidates: the vertices v_r sees (its own visibility
+        // polygon, one query) and its neighbours. Each is still checked
+        // below, so the query only narrows the search.
+        let mut candidates: Vec<usize> = index.vertex_view(a).iter().map(|&(lo, _)| lo).collect();
+        candidates.extend([prev, next]);
+        candidates.sort_unstable();
+        candidates.dedup();
+        for j in candidates.into_iter().filter(|&j| j != a) {
             // Implementation note: with e1 = v_prev − v_r, e2 = v_next − v_r
             // (cross(e1, e2) > 0 at a reflex vertex of a CCW ring), a
             // direction u is in the closed exterior cone E iff

@@ -24,6 +24,8 @@ pub struct VisibilityIndex<'m> {
     grid: Grid,
     /// Bits of the largest map coordinate (for the fast path).
     coord_bits: u32,
+    /// By map vertex: the triangles with a corner there.
+    fans: Vec<Vec<u32>>,
 }
 
 /// Directions from p to map vertices, compared exactly.
@@ -118,11 +120,18 @@ impl<'m> VisibilityIndex<'m> {
             .unwrap_or(0);
         let triangulation = Triangulation::new(map);
         let grid = Grid::new(map, &triangulation);
+        let mut fans = vec![Vec::new(); map.n()];
+        for t in 0..triangulation.len() {
+            for c in triangulation.triangle(t) {
+                fans[c].push(t as u32);
+            }
+        }
         VisibilityIndex {
             map,
             triangulation,
             grid,
             coord_bits,
+            fans,
         }
     }
 
@@ -170,10 +179,9 @@ impl<'m> VisibilityIndex<'m> {
         if zeros >= 2 || on_map_edge {
             return Err(VisibilityError::OnBoundary(p.clone()));
         }
-        let mut leaves: Vec<(usize, usize)> = Vec::new();
         // Depth first, counter-clockwise: the stack holds later cones below
         // earlier ones, so leaves come out in angular order.
-        let mut stack: Vec<Step> = (0..3)
+        let stack: Vec<Step> = (0..3)
             .rev()
             .map(|k| Step::Leave {
                 tri: t0 as u32,
@@ -182,6 +190,72 @@ impl<'m> VisibilityIndex<'m> {
                 hi: c0[(k + 1) % 3] as u32,
             })
             .collect();
+        let leaves = self.expand(&frame, stack);
+        Ok(assemble(self.map, p, self.coord_bits, &leaves))
+    }
+
+    /// The view from map vertex `x` (its visibility polygon V_x, as the
+    /// triangular expansion sees it): the sectors of x's interior angle,
+    /// counter-clockwise from the direction of x + 1 to that of x − 1, each
+    /// as `(lo, e)`: the open sector from the direction of map vertex `lo`
+    /// up to the next sector's `lo` reaches map edge `e` first.
+    ///
+    /// The `lo`s, with x − 1, are the vertices x sees strictly (the open
+    /// segment in the interior of the map), in angular order; a vertex
+    /// behind another in the same direction starts no sector. A direction
+    /// equal to a sector's `lo` is taken as just counter-clockwise of it:
+    /// what a viewpoint sees just past the ray through `lo` (see
+    /// `wai_cells`' incremental skeletons, sec. 3.9.2).
+    pub fn vertex_view(&self, x: usize) -> Vec<(usize, usize)> {
+        let n = self.map.n();
+        let frame = Frame::new(
+            &RatPoint::from(self.map.vertices()[x]),
+            self.map.vertices(),
+            self.coord_bits,
+        );
+        let tri = &self.triangulation;
+        // The fan at x in counter-clockwise order: each triangle's cone runs
+        // from the corner after x to the one before, and the next triangle's
+        // cone starts where this one ends.
+        let cone = |t: u32| {
+            let c = tri.triangle(t as usize);
+            let k = (0..3)
+                .find(|&k| c[k] == x)
+                .expect("fan triangles have x as a corner");
+            (t, k, c[(k + 1) % 3], c[(k + 2) % 3])
+        };
+        let fan: Vec<(u32, usize, usize, usize)> = self.fans[x].iter().map(|&t| cone(t)).collect();
+        let mut ordered = Vec::with_capacity(fan.len());
+        let mut at = (x + 1) % n;
+        while let Some(&f) = fan.iter().find(|f| f.2 == at) {
+            ordered.push(f);
+            at = f.3;
+            if at == (x + n - 1) % n {
+                break;
+            }
+        }
+        debug_assert_eq!(ordered.len(), fan.len(), "the fan at {x} is one chain");
+        let stack: Vec<Step> = ordered
+            .iter()
+            .rev()
+            .map(|&(t, k, lo, hi)| Step::Leave {
+                tri: t,
+                side: ((k + 1) % 3) as u8,
+                lo: lo as u32,
+                hi: hi as u32,
+            })
+            .collect();
+        let mut leaves = self.expand(&frame, stack);
+        leaves.dedup();
+        leaves
+    }
+
+    /// Push the cones of `stack` through the triangulation: the leaves
+    /// `(lo, e)`, in the order popped, say that the cone starting at the
+    /// direction of vertex `lo` reaches map edge `e`.
+    fn expand(&self, frame: &Frame, mut stack: Vec<Step>) -> Vec<(usize, usize)> {
+        let tri = &self.triangulation;
+        let mut leaves: Vec<(usize, usize)> = Vec::new();
         while let Some(step) = stack.pop() {
             match step {
                 Step::Leave {
@@ -251,6 +325,6 @@ impl<'m> VisibilityIndex<'m> {
                 }
             }
         }
-        Ok(assemble(self.map, p, self.coord_bits, &leaves))
+        leaves
     }
 }

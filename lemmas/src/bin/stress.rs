@@ -90,7 +90,7 @@ fn main() {
                 }
             }
         }
-        i += batch;
+        i = (i + batch).min(total);
         eprint!(
             "\rstress: {i}/{total} maps, {:.0} s",
             t.elapsed().as_secs_f64()

@@ -9,5 +9,6 @@ mod common;
 mod datasets;
 mod decomposition;
 mod hand;
+mod incremental;
 mod laws;
 mod snapshots;

@@ -60,3 +60,52 @@ fn expansion_reports_boundary_and_outside() {
         assert_eq!(is_boundary, boundary, "{q:?}: {e}");
     }
 }
+
+/// `vertex_view(x)` names exactly the vertices x sees (`sees`: the closed
+/// segment meets the boundary only at its ends), in counter-clockwise
+/// order from x + 1, on orthogonal maps (collinear vertices everywhere)
+/// and random simple ones; every sector names a map edge.
+#[test]
+fn vertex_view_lists_what_a_vertex_sees() {
+    use wai_exact::{sees, Point, RatPoint, Sight};
+    let mut checked = 0;
+    for kind in [
+        "random-orthogonal",
+        "random-simple-star",
+        "random-simple-2opt",
+    ] {
+        for seed in 0..6u64 {
+            let Ok(map) = wai_gen::random(kind, 30, seed) else {
+                continue;
+            };
+            let index = wai_visibility::VisibilityIndex::new(&map);
+            let v = map.vertices();
+            let n = map.n();
+            for x in 0..n {
+                let view = index.vertex_view(x);
+                let mut seen: Vec<usize> = view.iter().map(|&(lo, _)| lo).collect();
+                assert_eq!(seen[0], (x + 1) % n, "map {kind}/{seed}, vertex {x}");
+                assert!(view.iter().all(|&(_, e)| e < n));
+                seen.push((x + n - 1) % n);
+                seen.dedup();
+                let at = |p: Point| RatPoint::from(p);
+                let mut expected: Vec<usize> = (0..n)
+                    .filter(|&j| {
+                        j != x
+                            && (j == (x + 1) % n
+                                || j == (x + n - 1) % n
+                                || sees(v, &at(v[x]), &at(v[j])) == Sight::Visible)
+                    })
+                    .collect();
+                let mut got = seen.clone();
+                got.sort_unstable();
+                got.dedup();
+                expected.sort_unstable();
+                assert_eq!(got, expected, "map {kind}/{seed}, vertex {x}");
+                assert_eq!(got.len(), seen.len(), "each seen vertex starts one sector");
+                checked += 1;
+            }
+        }
+    }
+    assert!(checked > 300, "{checked}");
+}

@@ -1,0 +1,127 @@
+//! Exact signs for the incremental skeletons: directions from a rational
+//! viewpoint and angular order around a map vertex.
+//!
+//! Every product is tried in `i128` with checked arithmetic and redone on
+//! GMP integers when it overflows, so no bit bound is assumed: the fast
+//! path is exact by construction, not by a proof about magnitudes.
+
+use rug::Integer;
+use std::cmp::Ordering;
+use wai_exact::{Orientation, Point, RatPoint};
+
+/// A direction with integer coordinates, small or large.
+#[derive(Clone, Debug)]
+pub(crate) enum Dir {
+    Small(i128, i128),
+    Big(Integer, Integer),
+}
+
+impl Dir {
+    fn from_integers(x: Integer, y: Integer) -> Dir {
+        match (x.to_i128(), y.to_i128()) {
+            (Some(a), Some(b)) => Dir::Small(a, b),
+            _ => Dir::Big(x, y),
+        }
+    }
+
+    fn big(&self) -> (Integer, Integer) {
+        match self {
+            Dir::Small(a, b) => (Integer::from(*a), Integer::from(*b)),
+            Dir::Big(a, b) => (a.clone(), b.clone()),
+        }
+    }
+
+    /// The sign of `self × other` (`Greater`: other is counter-clockwise).
+    pub(crate) fn cross(&self, other: &Dir) -> Ordering {
+        if let (Dir::Small(a, b), Dir::Small(c, d)) = (self, other) {
+            if let (Some(p), Some(q)) = (a.checked_mul(*d), b.checked_mul(*c)) {
+                return p.cmp(&q);
+            }
+        }
+        let ((a, b), (c, d)) = (self.big(), other.big());
+        (a * d).cmp(&(b * c))
+    }
+
+    /// The sign of `self · other`.
+    pub(crate) fn dot(&self, other: &Dir) -> Ordering {
+        if let (Dir::Small(a, b), Dir::Small(c, d)) = (self, other) {
+            if let (Some(p), Some(q)) = (a.checked_mul(*c), b.checked_mul(*d)) {
+                // p + q > 0  <=>  p > -q (no overflow: -q of a product of
+                // two i128 that did not overflow can only fail at i128::MIN).
+                if let Some(nq) = q.checked_neg() {
+                    return p.cmp(&nq);
+                }
+            }
+        }
+        let ((a, b), (c, d)) = (self.big(), other.big());
+        (a * c + b * d).cmp0()
+    }
+}
+
+/// The direction from `a` to `b`.
+pub(crate) fn dir(a: Point, b: Point) -> Dir {
+    match (b.x.checked_sub(a.x), b.y.checked_sub(a.y)) {
+        (Some(x), Some(y)) => Dir::Small(x, y),
+        _ => Dir::Big(Integer::from(b.x) - a.x, Integer::from(b.y) - a.y),
+    }
+}
+
+/// Counter-clockwise angular order of directions, starting at `base`
+/// (angle 0) and going round once: `Less` if `u` comes before `v`.
+pub(crate) fn angle_cmp(base: &Dir, u: &Dir, v: &Dir) -> Ordering {
+    let half = |w: &Dir| match base.cross(w) {
+        Ordering::Greater => 0,
+        Ordering::Equal if base.dot(w) == Ordering::Greater => 0,
+        _ => 1,
+    };
+    half(u).cmp(&half(v)).then_with(|| v.cross(u))
+}
+
+/// A rational viewpoint q = (X, Y) / W, for signs against map vertices.
+pub(crate) enum Eye {
+    Small { x: i128, y: i128, w: i128 },
+    Big { x: Integer, y: Integer, w: Integer },
+}
+
+impl Eye {
+    pub(crate) fn new(q: &RatPoint) -> Eye {
+        match (q.hx().to_i128(), q.hy().to_i128(), q.hw().to_i128()) {
+            (Some(x), Some(y), Some(w)) => Eye::Small { x, y, w },
+            _ => Eye::Big {
+                x: q.hx().clone(),
+                y: q.hy().clone(),
+                w: q.hw().clone(),
+            },
+        }
+    }
+
+    /// The direction from q to the map vertex `a`, scaled by W > 0.
+    pub(crate) fn toward(&self, a: Point) -> Dir {
+        match self {
+            Eye::Small { x, y, w } => {
+                let dx = w.checked_mul(a.x).and_then(|p| p.checked_sub(*x));
+                let dy = w.checked_mul(a.y).and_then(|p| p.checked_sub(*y));
+                match (dx, dy) {
+                    (Some(dx), Some(dy)) => Dir::Small(dx, dy),
+                    _ => Dir::from_integers(
+                        Integer::from(*w) * a.x - *x,
+                        Integer::from(*w) * a.y - *y,
+                    ),
+                }
+            }
+            Eye::Big { x, y, w } => {
+                Dir::from_integers(Integer::from(w * a.x) - x, Integer::from(w * a.y) - y)
+            }
+        }
+    }
+
+    /// The orientation of `(a, b, q)`.
+    pub(crate) fn orientation(&self, a: Point, b: Point) -> Orientation {
+        // (b − a) × (q − a) = −(b − a) × toward(a) / W.
+        match dir(a, b).cross(&self.toward(a)) {
+            Ordering::Less => Orientation::CounterClockwise,
+            Ordering::Equal => Orientation::Collinear,
+            Ordering::Greater => Orientation::Clockwise,
+        }
+    }
+}

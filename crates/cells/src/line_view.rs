@@ -1,0 +1,221 @@
+//! What a point on a ray line sees along that line: the map vertices on
+//! the line, and for a viewpoint just beside it, which of them it sees.
+//!
+//! Crossing an arrangement edge changes the visibility of map vertices on
+//! the edge's line only (the boundary of the region that sees a vertex v
+//! lies on lines through v). Those are found by walking along the line:
+//! this is the whole update of the incremental skeletons (sec. 3.9.2).
+
+use crate::eye::{angle_cmp, dir, Dir};
+use rug::{Integer, Rational};
+use std::cmp::Ordering;
+use wai_exact::{Point, RatPoint};
+use wai_map::Map;
+
+/// A side of a directed line.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) enum Beside {
+    Left,
+    Right,
+}
+
+/// What lies at a point of the line where something happens.
+#[derive(Clone, Debug)]
+enum Event {
+    /// Map vertex `v`; `left`/`right`: an incident map edge leaves it
+    /// strictly to that side (a viewpoint passing it on that side is
+    /// blocked).
+    Vertex { v: u32, left: bool, right: bool },
+    /// A map edge crosses the line in its relative interior.
+    Crossing,
+}
+
+/// The open stretch of the line between two consecutive events.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Stretch {
+    Interior,
+    Exterior,
+    /// Along a map edge, whose interior side is given.
+    Edge(Beside),
+}
+
+/// One line of the arrangement's rays, directed by `dir`, with its events
+/// sorted along it.
+#[derive(Clone, Debug)]
+pub(crate) struct LineView {
+    dir: (i128, i128),
+    events: Vec<(Rational, Event)>,
+    /// `stretches[i]` lies between events `i` and `i + 1`.
+    stretches: Vec<Stretch>,
+    /// The map vertices on the line, ascending.
+    on_line: Vec<u32>,
+}
+
+/// The position of an integer point along direction `d`: `p · d`.
+fn position(p: Point, d: (i128, i128)) -> Rational {
+    Rational::from(Integer::from(p.x) * d.0 + Integer::from(p.y) * d.1)
+}
+
+impl LineView {
+    /// The line through `through` with direction `dir` (primitive).
+    pub(crate) fn new(map: &Map, through: Point, d: (i128, i128)) -> LineView {
+        let v = map.vertices();
+        let n = v.len();
+        let ld = Dir::Small(d.0, d.1);
+        let side = |p: Point| ld.cross(&dir(through, p));
+        let sides: Vec<Ordering> = v.iter().map(|&p| side(p)).collect();
+        let mut events: Vec<(Rational, Event)> = Vec::new();
+        for (i, &p) in v.iter().enumerate() {
+            if sides[i] == Ordering::Equal {
+                let nb = [sides[(i + n - 1) % n], sides[(i + 1) % n]];
+                events.push((
+                    position(p, d),
+                    Event::Vertex {
+                        v: i as u32,
+                        left: nb.contains(&Ordering::Greater),
+                        right: nb.contains(&Ordering::Less),
+                    },
+                ));
+            }
+            let j = (i + 1) % n;
+            if sides[i] != Ordering::Equal && sides[j] != Ordering::Equal && sides[i] != sides[j] {
+                // a + s (b − a) on the line: s = −(d × (a − o)) / (d × (b − a)).
+                let (a, b) = (p, v[j]);
+                let ca =
+                    Integer::from(d.0) * (a.y - through.y) - Integer::from(d.1) * (a.x - through.x);
+                let cb = Integer::from(d.0) * (b.y - a.y) - Integer::from(d.1) * (b.x - a.x);
+                let along = Integer::from(b.x - a.x) * d.0 + Integer::from(b.y - a.y) * d.1;
+                let t = position(a, d) - Rational::from((ca * along, cb));
+                events.push((t, Event::Crossing));
+            }
+        }
+        events.sort_by(|a, b| a.0.cmp(&b.0));
+        let mut stretches = Vec::with_capacity(events.len().saturating_sub(1));
+        let forward = Dir::Small(d.0, d.1);
+        let backward = Dir::Small(-d.0, -d.1);
+        let inside = |z: u32, w: &Dir| {
+            let z = z as usize;
+            let base = dir(v[z], v[(z + 1) % n]);
+            let last = dir(v[z], v[(z + n - 1) % n]);
+            // Strictly inside the interior angle, which runs
+            // counter-clockwise from the edge to z + 1 to the edge to z − 1.
+            angle_cmp(&base, &base, w) == Ordering::Less
+                && angle_cmp(&base, w, &last) == Ordering::Less
+        };
+        let mut before = Stretch::Exterior;
+        for i in 0..events.len().saturating_sub(1) {
+            let s = match (&events[i].1, &events[i + 1].1) {
+                (Event::Vertex { v: a, .. }, Event::Vertex { v: b, .. })
+                    if (*a as usize + 1) % n == *b as usize =>
+                {
+                    Stretch::Edge(Beside::Left)
+                }
+                (Event::Vertex { v: a, .. }, Event::Vertex { v: b, .. })
+                    if (*b as usize + 1) % n == *a as usize =>
+                {
+                    Stretch::Edge(Beside::Right)
+                }
+                (Event::Vertex { v: a, .. }, _) => interior_if(inside(*a, &forward)),
+                (Event::Crossing, Event::Vertex { v: b, .. }) => interior_if(inside(*b, &backward)),
+                (Event::Crossing, Event::Crossing) => match before {
+                    Stretch::Interior => Stretch::Exterior,
+                    _ => Stretch::Interior,
+                },
+            };
+            stretches.push(s);
+            before = s;
+        }
+        let mut on_line: Vec<u32> = events
+            .iter()
+            .filter_map(|(_, e)| match e {
+                Event::Vertex { v, .. } => Some(*v),
+                Event::Crossing => None,
+            })
+            .collect();
+        on_line.sort_unstable();
+        LineView {
+            dir: d,
+            events,
+            stretches,
+            on_line,
+        }
+    }
+
+    /// Whether map vertex `v` lies on the line.
+    pub(crate) fn contains(&self, v: u32) -> bool {
+        self.on_line.binary_search(&v).is_ok()
+    }
+
+    /// The position along the line of a point on it.
+    pub(crate) fn position_of(&self, q: &RatPoint) -> Rational {
+        Rational::from((
+            Integer::from(q.hx() * self.dir.0) + Integer::from(q.hy() * self.dir.1),
+            q.hw().clone(),
+        ))
+    }
+
+    /// The map vertices on the line seen from a point of the interior of
+    /// the map at position `t` on the line (`beside = None`), or from
+    /// viewpoints just beside it on that side, pushed to `out`.
+    ///
+    /// On the line a viewpoint sees only the nearest vertex each way, if
+    /// the stretch to it is interior (the open segment must avoid the
+    /// boundary). Beside it, the view runs on past a vertex unless one of
+    /// its edges leaves to that side, and along a map edge whose interior
+    /// is on that side.
+    pub(crate) fn seen_from(&self, t: &Rational, beside: Option<Beside>, out: &mut Vec<u32>) {
+        let first_after = self.events.partition_point(|(s, _)| s <= t);
+        // Forward: events first_after, first_after + 1, ...
+        self.walk(first_after, true, beside, out);
+        // Backward: the last event before t.
+        let last_before = self.events.partition_point(|(s, _)| s < t);
+        if last_before > 0 {
+            self.walk(last_before - 1, false, beside, out);
+        }
+    }
+
+    fn walk(&self, mut i: usize, forward: bool, beside: Option<Beside>, out: &mut Vec<u32>) {
+        while i < self.events.len() {
+            let Event::Vertex { v, left, right } = self.events[i].1 else {
+                return;
+            };
+            out.push(v);
+            let Some(side) = beside else {
+                return;
+            };
+            if (side == Beside::Left && left) || (side == Beside::Right && right) {
+                return;
+            }
+            let s = if forward {
+                if i + 1 >= self.events.len() {
+                    return;
+                }
+                self.stretches[i]
+            } else {
+                if i == 0 {
+                    return;
+                }
+                self.stretches[i - 1]
+            };
+            match s {
+                Stretch::Interior => {}
+                Stretch::Exterior => return,
+                Stretch::Edge(interior) if interior == side => {}
+                Stretch::Edge(_) => return,
+            }
+            if forward {
+                i += 1;
+            } else {
+                i -= 1;
+            }
+        }
+    }
+}
+
+fn interior_if(b: bool) -> Stretch {
+    if b {
+        Stretch::Interior
+    } else {
+        Stretch::Exterior
+    }
+}

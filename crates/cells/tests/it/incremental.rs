@@ -1,0 +1,81 @@
+//! The incremental skeletons (sec. 3.9.2) against a fresh visibility query
+//! at the representative point of every cell of every dimension: every
+//! polyomino map up to 6 cells (orthogonal, full of collinear edges and
+//! rays through several vertices), every family at small parameters, and
+//! seeded maps of every random kind.
+
+use wai_cells::Decomposition;
+use wai_exact::RatPoint;
+use wai_gen::{exhaustive_polyomino_maps, Symmetry, FAMILIES, RANDOM_KINDS};
+use wai_map::Map;
+use wai_visibility::{Skeleton, VisibilityIndex};
+
+/// Every cell of `map` compared; the number of cells, or the first
+/// mismatch.
+fn compare(map: &Map) -> Result<usize, String> {
+    let d = Decomposition::new(map);
+    let index = VisibilityIndex::new(map);
+    let fresh = |p: &RatPoint| {
+        let vp = index
+            .visibility_polygon(p)
+            .expect("interior points have V_p");
+        let sk = Skeleton::of(map, &vp).expect("and a skeleton");
+        (sk.origin(), sk.key())
+    };
+    let v = map.vertices();
+    let mut count = 0;
+    for &f in d.cells() {
+        let walked = (v[d.origin_of(f)], d.skeletons()[d.skeleton_of(f)].clone());
+        if fresh(d.representative(f)) != walked {
+            return Err(format!("2-cell {f} at {}", d.representative(f)));
+        }
+        count += 1;
+    }
+    for c in d.lower_cells() {
+        let walked = (v[c.origin], d.skeletons()[c.class].clone());
+        if fresh(&c.representative) != walked {
+            return Err(format!("{:?} at {}", c.site, c.representative));
+        }
+        count += 1;
+    }
+    Ok(count)
+}
+
+fn check_all(maps: impl IntoIterator<Item = Map>) -> (usize, usize) {
+    let (mut maps_done, mut cells) = (0, 0);
+    for map in maps {
+        match compare(&map) {
+            Ok(k) => cells += k,
+            Err(e) => panic!("map {:?}: the walk and the query differ: {e}", map.name()),
+        }
+        maps_done += 1;
+    }
+    (maps_done, cells)
+}
+
+#[test]
+fn every_polyomino_up_to_6_cells() {
+    let (maps, cells) = check_all(exhaustive_polyomino_maps(6, Symmetry::Free));
+    assert!(maps > 50 && cells > 1000, "{maps} maps, {cells} cells");
+}
+
+#[test]
+fn every_family() {
+    let maps = FAMILIES.iter().flat_map(|f| {
+        (1..=3u32).filter_map(move |k| {
+            let params: Vec<u32> = f.params.split(',').map(|_| k + 1).collect();
+            wai_gen::family(f.id, &params).ok()
+        })
+    });
+    let (maps, cells) = check_all(maps);
+    assert!(maps >= FAMILIES.len(), "{maps} maps, {cells} cells");
+}
+
+#[test]
+fn seeded_maps_of_every_random_kind() {
+    let maps = RANDOM_KINDS.iter().flat_map(|k| {
+        (0..6u64).filter_map(move |seed| wai_gen::random(k.id, k.min_n.max(24), seed).ok())
+    });
+    let (maps, cells) = check_all(maps);
+    assert_eq!(maps, RANDOM_KINDS.len() * 6, "{cells} cells");
+}
