@@ -1,7 +1,7 @@
 //! The decomposition (rays, arrangement, assignment, a skeleton per cell,
 //! classes) of thesis-size and family maps. Ids `decompose/{map}/{param}`.
 
-use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion};
+use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion, Throughput};
 use std::time::Duration;
 use wai_cells::Decomposition;
 use wai_map::Map;
@@ -28,6 +28,11 @@ fn maps() -> Vec<(String, String, Map)> {
             "k=16".into(),
             wai_gen::family("comb-convex-chain", &[16]).unwrap(),
         ),
+        (
+            "comb-convex-chain".into(),
+            "k=64".into(),
+            wai_gen::family("comb-convex-chain", &[64]).unwrap(),
+        ),
     ]
 }
 
@@ -40,6 +45,8 @@ fn bench(c: &mut Criterion) {
             "decompose/{name}/{param}: n = {}, r = {}, cells = {}, N = {}",
             counts.n, counts.r, counts.cells, counts.total_complexity
         );
+        // Throughput in 2-cells per second (issue 7's measure).
+        g.throughput(Throughput::Elements(counts.cells as u64));
         g.bench_with_input(BenchmarkId::new(name, param), &map, |b, m| {
             b.iter(|| Decomposition::new(m).counts())
         });
