@@ -1,7 +1,8 @@
 //! Every map of `shared/datasets/r2v` and `westport`, and the AGPLIB maps of
 //! up to 60 vertices (dyadic and rational coordinates: the exact path),
-//! decompose exactly: the arrangement passes its sanity checks and every
-//! cell has a skeleton.
+//! decompose exactly: the arrangement passes its sanity checks, every
+//! cell has a skeleton, and the skeletons the walk gives (sec. 3.9.2) are
+//! those of fresh visibility queries on every cell of every dimension.
 
 use std::path::PathBuf;
 use wai_cells::Decomposition;
@@ -42,6 +43,8 @@ fn check(sub: &str, max_n: usize, expect_maps: usize) {
         d.arrangement()
             .sanity_check()
             .unwrap_or_else(|e| panic!("{sub}/{name}: {e}"));
+        crate::incremental::compare(map)
+            .unwrap_or_else(|e| panic!("{sub}/{name}: the walk and the query differ: {e}"));
         let c = d.counts();
         assert_eq!(
             d.classes().iter().map(Vec::len).sum::<usize>(),

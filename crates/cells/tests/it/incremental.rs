@@ -2,7 +2,7 @@
 //! at the representative point of every cell of every dimension: every
 //! polyomino map up to 6 cells (orthogonal, full of collinear edges and
 //! rays through several vertices), every family at small parameters, and
-//! seeded maps of every random kind.
+//! seeded maps of every random kind (the dataset maps: see `datasets`).
 
 use wai_cells::Decomposition;
 use wai_exact::RatPoint;
@@ -12,7 +12,7 @@ use wai_visibility::{Skeleton, VisibilityIndex};
 
 /// Every cell of `map` compared; the number of cells, or the first
 /// mismatch.
-fn compare(map: &Map) -> Result<usize, String> {
+pub fn compare(map: &Map) -> Result<usize, String> {
     let d = Decomposition::new(map);
     let index = VisibilityIndex::new(map);
     let fresh = |p: &RatPoint| {
