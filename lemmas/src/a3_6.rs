@@ -43,7 +43,7 @@
 //! the boundary).
 
 use serde_json::{json, Value};
-use wai_cells::{visibility_rays, Arrangement, Conflict, FaceId, Support};
+use wai_cells::{Arrangement, Conflict, FaceId, Support};
 use wai_exact::RatPoint;
 use wai_map::Map;
 use wai_visibility::VisibilityIndex;
@@ -51,6 +51,7 @@ use wai_visibility::VisibilityIndex;
 use crate::driver::{Checker, Report, Violation};
 use crate::sample;
 use crate::t3_3b::{embedded_json, interior_points, skeleton_at, Embedded};
+use crate::Study;
 
 const ID: &str = "A3.6";
 
@@ -107,8 +108,8 @@ impl Checker for BoundaryRule {
         ID
     }
 
-    fn check(&self, map: &Map) -> Report {
-        self.check_with_tally(map).0
+    fn check_study(&self, study: &Study<'_>) -> Report {
+        self.check_with_tally(study).0
     }
 }
 
@@ -138,10 +139,8 @@ fn verdict(
 
 impl BoundaryRule {
     /// [`Checker::check`] with the tally of outcomes.
-    pub fn check_with_tally(&self, map: &Map) -> (Report, Tally) {
-        let arr = Arrangement::new(map, &visibility_rays(map));
-        let index = VisibilityIndex::new(map);
-        self.check_arrangement(map, &arr, &index, None)
+    pub fn check_with_tally(&self, study: &Study<'_>) -> (Report, Tally) {
+        self.check_arrangement(study.map(), study.arrangement(), study.index(), None)
     }
 
     /// The check on a built arrangement. `plant` replaces the skeleton of
@@ -288,7 +287,7 @@ mod tests {
 
     #[test]
     fn the_rule_holds_in_the_l_room() {
-        let (r, t) = BoundaryRule.check_with_tally(&fixtures::l_room().0);
+        let (r, t) = BoundaryRule.check_with_tally(&Study::new(&fixtures::l_room().0));
         assert!(r.violations.is_empty(), "{:?}", r.violations);
         assert_eq!(r.examined, t.edges + t.vertices);
         assert!(t.edges >= 4 && t.holds == r.examined, "{t:?}");
@@ -297,7 +296,7 @@ mod tests {
     /// The known failure: the doorway's segment is a 1-cell.
     #[test]
     fn the_doorway_fails_on_a_1_cell() {
-        let (r, t) = BoundaryRule.check_with_tally(&fixtures::s_tetromino());
+        let (r, t) = BoundaryRule.check_with_tally(&Study::new(&fixtures::s_tetromino()));
         assert!(t.fails_on_1_cell >= 1, "{t:?}");
         assert_eq!((t.wrong_cell, t.no_skeleton), (0, 0), "{t:?}");
         assert!(r.violations.iter().all(|v| is_known_failure(&v.data)));
@@ -307,7 +306,7 @@ mod tests {
     #[test]
     fn a_planted_cell_skeleton_is_reported() {
         let map = fixtures::l_room().0;
-        let arr = Arrangement::new(&map, &visibility_rays(&map));
+        let arr = Arrangement::new(&map, &wai_cells::visibility_rays(&map));
         let index = VisibilityIndex::new(&map);
         let f = (0..arr.edge_count())
             .find(|&e| matches!(arr.edge_support(e), Support::Rays(_)))

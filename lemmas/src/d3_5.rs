@@ -29,6 +29,7 @@ use wai_visibility::{EdgeKind, OnMap, VisibilityPolygon};
 
 use crate::driver::{Checker, Report, Violation};
 use crate::sample::{self, closer, edge_collinear_with_viewpoint, vertex_spurious_by_def};
+use crate::Study;
 
 const ID: &str = "D3.5";
 
@@ -57,8 +58,8 @@ impl Checker for EdgeClassification {
         ID
     }
 
-    fn check(&self, map: &Map) -> Report {
-        sample::check_sampled_polygons(ID, map, self.viewpoints, check_polygon)
+    fn check_study(&self, study: &Study<'_>) -> Report {
+        sample::check_sampled_polygons(ID, study, self.viewpoints, check_polygon)
     }
 }
 

@@ -20,6 +20,8 @@ use std::fmt;
 
 use wai_map::Map;
 
+use crate::Study;
+
 /// One failed instance of a claim, with the data needed to replay it.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Violation {
@@ -92,8 +94,14 @@ impl Report {
 pub trait Checker {
     /// The id of the claim in [`crate::CLAIMS`] (`"T4.2"`).
     fn id(&self) -> &'static str;
-    /// Checks the claim on every instance `map` offers.
-    fn check(&self, map: &Map) -> Report;
+    /// Checks the claim on every instance the study's map offers, reading
+    /// the structures the study builds once per map.
+    fn check_study(&self, study: &Study<'_>) -> Report;
+
+    /// Checks the claim on `map` alone (a study of its own).
+    fn check(&self, map: &Map) -> Report {
+        self.check_study(&Study::new(map))
+    }
 }
 
 /// A violation as the driver saw it: which claim, on which map.
@@ -238,9 +246,10 @@ pub fn run<M: Borrow<Map>>(
     for (map_index, map) in maps.into_iter().enumerate() {
         let map = map.borrow();
         count += 1;
+        let study = Study::new(map);
         for checker in checkers {
             let id = checker.id();
-            let report = checker.check(map);
+            let report = checker.check_study(&study);
             assert_eq!(
                 report.claim, id,
                 "checker {id} returned a report for {}",
@@ -307,11 +316,14 @@ mod tests {
         fn id(&self) -> &'static str {
             "T4.2"
         }
-        fn check(&self, map: &Map) -> Report {
+        fn check_study(&self, study: &Study<'_>) -> Report {
             let mut report = Report::new(self.id());
-            let broken = map.n() == 3;
+            let broken = study.map().n() == 3;
             report.record(broken.then(|| {
-                Violation::with_data("planted: a triangle", serde_json::json!({ "n": map.n() }))
+                Violation::with_data(
+                    "planted: a triangle",
+                    serde_json::json!({ "n": study.map().n() }),
+                )
             }));
             report
         }
@@ -323,7 +335,7 @@ mod tests {
         fn id(&self) -> &'static str {
             "L4.6"
         }
-        fn check(&self, _map: &Map) -> Report {
+        fn check_study(&self, _study: &Study<'_>) -> Report {
             Report::new(self.id())
         }
     }
@@ -334,7 +346,7 @@ mod tests {
         fn id(&self) -> &'static str {
             "T4.2"
         }
-        fn check(&self, _map: &Map) -> Report {
+        fn check_study(&self, _study: &Study<'_>) -> Report {
             let mut report = Report::new(self.id());
             report.record(None);
             report.record(None);
@@ -408,7 +420,7 @@ mod tests {
         fn id(&self) -> &'static str {
             "X9.9"
         }
-        fn check(&self, _map: &Map) -> Report {
+        fn check_study(&self, _study: &Study<'_>) -> Report {
             Report::new(self.id())
         }
     }
@@ -424,7 +436,7 @@ mod tests {
         fn id(&self) -> &'static str {
             "T4.2"
         }
-        fn check(&self, _map: &Map) -> Report {
+        fn check_study(&self, _study: &Study<'_>) -> Report {
             Report::new("T4.3")
         }
     }
@@ -440,7 +452,7 @@ mod tests {
         fn id(&self) -> &'static str {
             "T4.2"
         }
-        fn check(&self, _map: &Map) -> Report {
+        fn check_study(&self, _study: &Study<'_>) -> Report {
             Report {
                 claim: "T4.2",
                 examined: 0,

@@ -23,6 +23,7 @@ use wai_visibility::VisibilityPolygon;
 
 use crate::driver::{Checker, Report, Violation};
 use crate::sample::{self, reflex_in_vp, vertex_spurious_by_def};
+use crate::Study;
 
 const ID: &str = "L3.1a";
 
@@ -51,8 +52,8 @@ impl Checker for ReflexNotSpurious {
         ID
     }
 
-    fn check(&self, map: &Map) -> Report {
-        sample::check_sampled_polygons(ID, map, self.viewpoints, check_polygon)
+    fn check_study(&self, study: &Study<'_>) -> Report {
+        sample::check_sampled_polygons(ID, study, self.viewpoints, check_polygon)
     }
 }
 

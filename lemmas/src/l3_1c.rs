@@ -31,6 +31,7 @@ use wai_visibility::VisibilityPolygon;
 
 use crate::driver::{Checker, Report, Violation};
 use crate::sample::{self, edge_collinear_with_viewpoint};
+use crate::Study;
 
 const ID: &str = "L3.1c";
 
@@ -59,8 +60,8 @@ impl Checker for OnlyVisiblePart {
         ID
     }
 
-    fn check(&self, map: &Map) -> Report {
-        sample::check_sampled_polygons(ID, map, self.viewpoints, check_polygon)
+    fn check_study(&self, study: &Study<'_>) -> Report {
+        sample::check_sampled_polygons(ID, study, self.viewpoints, check_polygon)
     }
 }
 

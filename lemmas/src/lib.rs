@@ -49,6 +49,7 @@ pub mod l3_1b;
 pub mod l3_1c;
 pub mod ratio;
 pub mod sample;
+pub mod study;
 pub mod t3_10;
 pub mod t3_2;
 pub mod t3_3a;
@@ -58,6 +59,7 @@ pub mod t3_9b;
 pub mod t5_17;
 
 pub use driver::{run, Checker, ClaimTally, FoundViolation, Report, Summary, Violation};
+pub use study::Study;
 
 /// What kind of statement a claim is (the "kind" column of `CLAIMS.md`).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord)]

@@ -18,6 +18,7 @@ use wai_map::Map;
 
 use crate::driver::{Checker, Report, Violation};
 use crate::sample;
+use crate::Study;
 
 /// A measured ratio and what it was measured on.
 #[derive(Debug, Clone, PartialEq, Eq)]
@@ -85,8 +86,15 @@ pub struct BoundChecker {
 
 impl BoundChecker {
     /// The report and the measured ratio.
-    pub fn check_with_ratio(&self, map: &Map) -> (Report, Measured) {
-        check(self.id, map, &(self.ceiling)(), self.measure)
+    pub fn check_with_ratio(&self, study: &Study<'_>) -> (Report, Measured) {
+        let counts = study.decomposition().counts();
+        check_counts(
+            self.id,
+            study.map(),
+            &counts,
+            &(self.ceiling)(),
+            self.measure,
+        )
     }
 }
 
@@ -94,8 +102,8 @@ impl Checker for BoundChecker {
     fn id(&self) -> &'static str {
         self.id
     }
-    fn check(&self, map: &Map) -> Report {
-        self.check_with_ratio(map).0
+    fn check_study(&self, study: &Study<'_>) -> Report {
+        self.check_with_ratio(study).0
     }
 }
 

@@ -176,16 +176,17 @@ pub fn family_viewpoints(map: &Map) -> Vec<RatPoint> {
 }
 
 /// Run a per-polygon check of claim `id` on the V_p of `limit` sampled
-/// viewpoints of `map`, summing the reports.
+/// viewpoints of the study's map (computed once per study), summing the
+/// reports.
 pub fn check_sampled_polygons(
     id: &'static str,
-    map: &Map,
+    study: &crate::Study<'_>,
     limit: usize,
     check: fn(&Map, &VisibilityPolygon) -> crate::Report,
 ) -> crate::Report {
     let mut report = crate::Report::new(id);
-    for vp in visibility_polygons(map, limit) {
-        report.absorb(check(map, &vp));
+    for vp in study.sampled_polygons(limit).iter() {
+        report.absorb(check(study.map(), vp));
     }
     report
 }
@@ -196,7 +197,15 @@ pub fn check_sampled_polygons(
 /// If the production algorithm rejects an interior viewpoint (a bug of
 /// `wai-visibility`, not a claim violation).
 pub fn visibility_polygons(map: &Map, limit: usize) -> Vec<VisibilityPolygon> {
-    let index = VisibilityIndex::new(map);
+    visibility_polygons_with(map, &VisibilityIndex::new(map), limit)
+}
+
+/// As [`visibility_polygons`], through an index already built.
+pub fn visibility_polygons_with(
+    map: &Map,
+    index: &VisibilityIndex<'_>,
+    limit: usize,
+) -> Vec<VisibilityPolygon> {
     viewpoints(map, limit)
         .iter()
         .map(|p| {

@@ -44,6 +44,7 @@ use wai_visibility::{reconstruct, Skeleton, SkeletonKey, VisibilityIndex, Visibi
 
 use crate::driver::{Checker, Report, Violation};
 use crate::sample::{self, translate};
+use crate::Study;
 
 const ID: &str = "T3.2";
 
@@ -88,15 +89,16 @@ impl Checker for Reconstruction {
         ID
     }
 
-    fn check(&self, map: &Map) -> Report {
-        self.check_with_stats(map).0
+    fn check_study(&self, study: &Study<'_>) -> Report {
+        self.check_with_stats(study).0
     }
 }
 
 impl Reconstruction {
     /// [`Checker::check`] with the counts of each kind of instance.
-    pub fn check_with_stats(&self, map: &Map) -> (Report, Stats) {
-        let index = VisibilityIndex::new(map);
+    pub fn check_with_stats(&self, study: &Study<'_>) -> (Report, Stats) {
+        let map = study.map();
+        let index = study.index();
         let mut report = Report::new(ID);
         let mut stats = Stats::default();
         let mut groups: BTreeMap<SkeletonKey, Vec<(usize, Point)>> = BTreeMap::new();
@@ -132,7 +134,7 @@ impl Reconstruction {
             for &(k, own) in members {
                 // Other embeddings of the skeleton met in the sample.
                 for &o in origins.iter().filter(|&&o| o != own) {
-                    let (r, outcome) = check_translated(&index, &vps[k], o, true);
+                    let (r, outcome) = check_translated(index, &vps[k], o, true);
                     report.examined += r.examined;
                     report.violations.extend(r.violations);
                     stats.pairs += 1;
@@ -145,7 +147,7 @@ impl Reconstruction {
                     .iter()
                     .filter(|&&o| o != own && !origins.contains(&o))
                 {
-                    let (r, outcome) = check_translated(&index, &vps[k], o, false);
+                    let (r, outcome) = check_translated(index, &vps[k], o, false);
                     report.examined += r.examined;
                     report.violations.extend(r.violations);
                     stats.translates += u64::from(outcome.is_some());
@@ -336,7 +338,7 @@ mod tests {
             "{:?}",
             r.violations
         );
-        let (r, stats) = Reconstruction::default().check_with_stats(&map);
+        let (r, stats) = Reconstruction::default().check_with_stats(&Study::new(&map));
         assert!(r.violations.is_empty(), "{:?}", r.violations);
         // Every niche viewpoint is translated into the two other niches.
         assert!(stats.pairs >= 6, "{stats:?}");

@@ -26,12 +26,11 @@
 
 use rug::Rational;
 use serde_json::json;
-use wai_cells::{visibility_rays, Arrangement};
 use wai_exact::{orientation_rat, Orientation, RatPoint};
-use wai_map::Map;
 
 use crate::driver::{Checker, Report, Violation};
 use crate::sample;
+use crate::Study;
 
 const ID: &str = "T3.3a";
 
@@ -60,15 +59,16 @@ impl Checker for CellsConvex {
         ID
     }
 
-    fn check(&self, map: &Map) -> Report {
-        self.check_with_stats(map).0
+    fn check_study(&self, study: &Study<'_>) -> Report {
+        self.check_with_stats(study).0
     }
 }
 
 impl CellsConvex {
     /// [`Checker::check`] with the vertex counts.
-    pub fn check_with_stats(&self, map: &Map) -> (Report, Stats) {
-        let arr = Arrangement::new(map, &visibility_rays(map));
+    pub fn check_with_stats(&self, study: &Study<'_>) -> (Report, Stats) {
+        let map = study.map();
+        let arr = study.arrangement();
         let mut report = Report::new(ID);
         let mut stats = Stats::default();
         if let Err(e) = arr.sanity_check() {
@@ -209,10 +209,10 @@ mod tests {
     #[test]
     fn the_l_room_has_five_convex_cells() {
         let pts = [(0, 0), (4, 0), (4, 2), (2, 2), (2, 4), (0, 4)];
-        let map = Map::from_ring(pts.iter().map(|&(x, y)| Point::new(x, y)).collect())
+        let map = wai_map::Map::from_ring(pts.iter().map(|&(x, y)| Point::new(x, y)).collect())
             .unwrap()
             .0;
-        let (r, stats) = CellsConvex.check_with_stats(&map);
+        let (r, stats) = CellsConvex.check_with_stats(&Study::new(&map));
         assert_eq!(
             (r.examined, r.violations.len()),
             (5, 0),
@@ -225,11 +225,11 @@ mod tests {
     #[test]
     fn generated_maps_pass() {
         let map = wai_gen::family("corridor-niches", &[2]).unwrap();
-        let (r, _) = CellsConvex.check_with_stats(&map);
+        let (r, _) = CellsConvex.check_with_stats(&Study::new(&map));
         assert!(r.examined > 5);
         assert!(r.violations.is_empty(), "{:?}", r.violations);
         let map = wai_gen::random("special-orthogonal", 16, 3).unwrap();
-        let (r, stats) = CellsConvex.check_with_stats(&map);
+        let (r, stats) = CellsConvex.check_with_stats(&Study::new(&map));
         assert!(r.violations.is_empty(), "{:?}", r.violations);
         assert_eq!(r.examined, stats.cells);
         assert!(stats.vertices >= 3 * stats.cells, "{stats:?}");

@@ -37,13 +37,14 @@
 //! **Not covered:** points of ∂M (the thesis assumes viewpoints off ∂M).
 
 use serde_json::{json, Value};
-use wai_cells::{visibility_rays, Arrangement, Decomposition, LowerSite};
+use wai_cells::LowerSite;
 use wai_exact::{orientation_rat, Orientation, Point, RatPoint};
 use wai_map::Map;
 use wai_visibility::{Skeleton, SkeletonKey, VisibilityIndex};
 
 use crate::driver::{Checker, Report, Violation};
 use crate::sample;
+use crate::Study;
 
 const ID: &str = "T3.3b";
 
@@ -78,8 +79,8 @@ impl Checker for SameSkeleton {
         ID
     }
 
-    fn check(&self, map: &Map) -> Report {
-        self.check_with_stats(map).0
+    fn check_study(&self, study: &Study<'_>) -> Report {
+        self.check_with_stats(study).0
     }
 }
 
@@ -165,8 +166,9 @@ pub fn interior_points(ring: &[RatPoint]) -> Option<[RatPoint; 2]> {
 
 impl SameSkeleton {
     /// [`Checker::check`] with the counts of each kind of cell.
-    pub fn check_with_stats(&self, map: &Map) -> (Report, Stats) {
-        let arr = Arrangement::new(map, &visibility_rays(map));
+    pub fn check_with_stats(&self, study: &Study<'_>) -> (Report, Stats) {
+        let map = study.map();
+        let arr = study.arrangement();
         let name = sample::map_name(map);
         let mut report = Report::new(ID);
         let mut stats = Stats::default();
@@ -177,10 +179,10 @@ impl SameSkeleton {
             )));
             return (report, stats);
         }
-        let index = VisibilityIndex::new(map);
+        let index = study.index();
         // The cells' skeletons as the decomposition computes them (by its
         // walk, sec. 3.9.2): every sample is checked against them.
-        let d = Decomposition::new(map);
+        let d = study.decomposition();
         let embedded = |origin: usize, class: usize| -> Result<Embedded, String> {
             Ok((map.vertices()[origin], d.skeletons()[class].clone()))
         };
@@ -199,7 +201,7 @@ impl SameSkeleton {
             let claimed = embedded(d.origin_of(f), d.skeleton_of(f));
             report.absorb(check_cell_points(
                 map,
-                &index,
+                index,
                 Cell::Face(f),
                 &claimed,
                 &points,
@@ -227,7 +229,7 @@ impl SameSkeleton {
                     (Cell::Vertex(v), vec![arr.point(v).clone()])
                 }
             };
-            report.absorb(check_cell_points(map, &index, cell, &claimed, &points));
+            report.absorb(check_cell_points(map, index, cell, &claimed, &points));
         }
         (report, stats)
     }
@@ -294,7 +296,7 @@ mod tests {
     #[test]
     fn a_family_map_passes() {
         let map = wai_gen::family("corridor-niches", &[2]).unwrap();
-        let (r, stats) = SameSkeleton.check_with_stats(&map);
+        let (r, stats) = SameSkeleton.check_with_stats(&Study::new(&map));
         assert!(r.violations.is_empty(), "{:?}", r.violations);
         assert!(
             stats.cells > 5 && stats.edges > 0 && stats.vertices > 0,
@@ -305,7 +307,7 @@ mod tests {
 
     #[test]
     fn the_l_room_passes() {
-        let (r, stats) = SameSkeleton.check_with_stats(&fixtures::l_room().0);
+        let (r, stats) = SameSkeleton.check_with_stats(&Study::new(&fixtures::l_room().0));
         assert!(r.violations.is_empty(), "{:?}", r.violations);
         assert_eq!(stats.cells, 5);
         assert!(stats.edges >= 4, "{stats:?}");
@@ -318,19 +320,19 @@ mod tests {
         let s_tetromino = fixtures::s_tetromino();
         assert!(
             crate::a3_6::BoundaryRule
-                .check_with_tally(&s_tetromino)
+                .check_with_tally(&Study::new(&s_tetromino))
                 .1
                 .fails_on_1_cell
                 > 0
         );
-        let (r, stats) = SameSkeleton.check_with_stats(&s_tetromino);
+        let (r, stats) = SameSkeleton.check_with_stats(&Study::new(&s_tetromino));
         assert!(r.violations.is_empty(), "{:?}", r.violations);
         assert!(stats.edges > 0, "{stats:?}");
     }
 
     /// The L room's cells and two interior points of each.
     fn cells_of(map: &Map) -> (VisibilityIndex<'_>, Vec<(usize, [RatPoint; 2])>) {
-        let arr = Arrangement::new(map, &visibility_rays(map));
+        let arr = wai_cells::Arrangement::new(map, &wai_cells::visibility_rays(map));
         let cells = arr
             .cells()
             .map(|f| {

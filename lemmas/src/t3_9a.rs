@@ -29,12 +29,11 @@ use std::collections::BTreeSet;
 
 use rug::Rational;
 use serde_json::json;
-use wai_cells::{visibility_rays, Arrangement};
 use wai_exact::{orientation_rat, Orientation, RatPoint};
-use wai_map::Map;
 
 use crate::driver::{Checker, Report, Violation};
 use crate::sample;
+use crate::Study;
 
 const ID: &str = "T3.9a";
 
@@ -67,16 +66,17 @@ impl Checker for VerticesPerRay {
         ID
     }
 
-    fn check(&self, map: &Map) -> Report {
-        self.check_with_stats(map).0
+    fn check_study(&self, study: &Study<'_>) -> Report {
+        self.check_with_stats(study).0
     }
 }
 
 impl VerticesPerRay {
     /// [`Checker::check`] with the largest count met.
-    pub fn check_with_stats(&self, map: &Map) -> (Report, Stats) {
-        let rays = visibility_rays(map);
-        let arr = Arrangement::new(map, &rays);
+    pub fn check_with_stats(&self, study: &Study<'_>) -> (Report, Stats) {
+        let map = study.map();
+        let rays = study.rays();
+        let arr = study.arrangement();
         let name = sample::map_name(map);
         let mut report = Report::new(ID);
         let n = self.n.unwrap_or(map.n());
@@ -184,7 +184,7 @@ mod tests {
     #[test]
     fn the_comb_family_passes() {
         let map = wai_gen::family("comb-convex-chain", &[3]).unwrap();
-        let (r, stats) = VerticesPerRay::default().check_with_stats(&map);
+        let (r, stats) = VerticesPerRay::default().check_with_stats(&Study::new(&map));
         assert!(r.violations.is_empty(), "{:?}", r.violations);
         assert_eq!(r.examined, stats.rays);
         assert!(stats.rays > 10 && stats.max_on_ray > 0, "{stats:?}");
@@ -205,7 +205,7 @@ mod tests {
         // The full pipeline against 2n with n = 1: every ray with more
         // than 2 interior vertices is reported, with its vertices.
         let map = wai_gen::family("comb-convex-chain", &[3]).unwrap();
-        let (r, stats) = VerticesPerRay { n: Some(1) }.check_with_stats(&map);
+        let (r, stats) = VerticesPerRay { n: Some(1) }.check_with_stats(&Study::new(&map));
         assert!(stats.max_on_ray > 2, "{stats:?}");
         assert!(!r.violations.is_empty());
         let v = &r.violations[0];

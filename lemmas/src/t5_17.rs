@@ -48,7 +48,7 @@ mod tests {
     #[test]
     fn measures_and_passes_on_a_family() {
         let map = wai_gen::family("corridor-niches", &[2]).unwrap();
-        let (report, m) = CHECKER.check_with_ratio(&map);
+        let (report, m) = CHECKER.check_with_ratio(&crate::Study::new(&map));
         assert_eq!((report.examined, report.violations.len()), (1, 0));
         // max |EC| = 20, n = 12, r = 4 (the snapshot counts).
         assert_eq!(m.ratio, Rational::from((20, 12 + 16)));

@@ -110,7 +110,9 @@ fn cell_decomposition_claims_hold_everywhere() {
         let ray_max = maps
             .iter()
             .map(|m| {
-                let s = t3_9a::VerticesPerRay::default().check_with_stats(m).1;
+                let s = t3_9a::VerticesPerRay::default()
+                    .check_with_stats(&wai_lemmas::Study::new(m))
+                    .1;
                 (s.max_on_ray, s.n)
             })
             .max_by(|a, b| (a.0 * b.1).cmp(&(b.0 * a.1)))

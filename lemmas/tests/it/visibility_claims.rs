@@ -108,7 +108,7 @@ fn chapter_3_visibility_claims_hold_everywhere() {
             viewpoints: VIEWPOINTS,
         };
         let stats = maps.iter().fold(Stats::default(), |acc, m| {
-            let s = t32.check_with_stats(m).1;
+            let s = t32.check_with_stats(&wai_lemmas::Study::new(m)).1;
             Stats {
                 rebuilt: acc.rebuilt + s.rebuilt,
                 pairs: acc.pairs + s.pairs,
