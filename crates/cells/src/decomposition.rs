@@ -2,7 +2,7 @@
 //! boundary assignment (sec. 3.6), the skeleton of every cell (Def 3.9) and
 //! the equivalence classes of cells (Def 3.10).
 
-use crate::arrangement::{Arrangement, EdgeId, FaceId, VertexId};
+use crate::arrangement::{Arrangement, EdgeId, FaceId, Support, VertexId};
 use crate::assignment::BoundaryAssignment;
 use crate::fx::FxHashMap;
 use crate::incremental::{Compact, Walker};
@@ -186,7 +186,8 @@ impl<'m> Decomposition<'m> {
         Decomposition::with_progress(map, &mut |_, _| {})
     }
 
-    /// Same as [`Decomposition::new`], reporting progress:
+    /// Same as [`Decomposition::new`], reporting progress over the cells of
+    /// every dimension (2-cells first, then 1- and 0-cells):
     /// `progress(done_cells, total_cells)` is called once before the first
     /// skeleton (with `done_cells = 0`), about every 1% of the cells, and
     /// once at the end (with `done_cells = total_cells`).
@@ -207,12 +208,20 @@ impl<'m> Decomposition<'m> {
         let arrangement = Arrangement::new(map, &rays);
         let cells: Vec<FaceId> = arrangement.cells().collect();
         let total = cells.len();
+        // Progress counts the cells of every dimension.
+        let lower_total = (0..arrangement.edge_count())
+            .filter(|&e| matches!(arrangement.edge_support(e), Support::Rays(_)))
+            .count()
+            + (0..arrangement.vertex_count())
+                .filter(|&v| !arrangement.is_on_map_boundary(v))
+                .count();
+        let all = total + lower_total;
         let mut position = vec![NOT_A_CELL; arrangement.face_count()];
         for (i, &f) in cells.iter().enumerate() {
             position[f] = i;
         }
-        progress(0, total);
-        let step = (total / 100).max(1);
+        progress(0, all);
+        let step = (all / 100).max(1);
 
         let index = VisibilityIndex::new(map);
         let mut reps: Vec<Option<RatPoint>> = vec![None; arrangement.face_count()];
@@ -224,8 +233,8 @@ impl<'m> Decomposition<'m> {
         }
         let mut walker = Walker::new(map, &arrangement, &index);
         let walked = walker.walk(&reps, &mut |done| {
-            if done % step == 0 && done < total {
-                progress(done, total);
+            if done % step == 0 && done < all {
+                progress(done, all);
             }
         });
         let mut table = ClassTable::default();
@@ -246,6 +255,10 @@ impl<'m> Decomposition<'m> {
         // adjacent 2-cell with the same skeleton in the same embedding.
         let mut lower: Vec<LowerCell> = Vec::new();
         walker.lower(&mut |site, rep, sk| {
+            let done = total + lower.len() + 1;
+            if done % step == 0 && done < all {
+                progress(done, all);
+            }
             let faces: Vec<FaceId> = match site {
                 LowerSite::Edge(e) => vec![
                     arrangement.half_edge(2 * e).face,
@@ -289,7 +302,7 @@ impl<'m> Decomposition<'m> {
         });
         drop(walker);
         drop(walked);
-        progress(total, total);
+        progress(all, all);
 
         Decomposition {
             map,

@@ -67,8 +67,10 @@ pub fn decompose(path: &Path, opts: &Options<'_>, format: Format) -> Result<(), 
     check_memory(map, &rays, opts.force)?;
     let bar = indicatif::ProgressBar::new(0);
     bar.set_style(
-        indicatif::ProgressStyle::with_template("{msg} {bar:40} {pos}/{len} cells ({eta})")
-            .unwrap_or_else(|_| indicatif::ProgressStyle::default_bar()),
+        indicatif::ProgressStyle::with_template(
+            "{msg} {bar:40} {pos}/{len} cells of every dimension ({eta})",
+        )
+        .unwrap_or_else(|_| indicatif::ProgressStyle::default_bar()),
     );
     bar.set_message("skeletons of cells");
     let d = Decomposition::from_rays(map, rays, &mut |done, total| {

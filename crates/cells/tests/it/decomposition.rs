@@ -405,15 +405,22 @@ fn thesis_families_small() {
     assert!(checked >= 4, "{checked}");
 }
 
-/// `with_progress` reports 0 first, the total last, never decreasing, and
-/// builds the same decomposition as `new`.
+/// `with_progress` reports 0 first, the total last (the cells of every
+/// dimension), never decreasing, through the lower-dimensional cells too,
+/// and builds the same decomposition as `new`.
 #[test]
 fn progress_is_monotone_and_complete() {
     let m: Map = wai_gen::random("random-orthogonal", 20, 3).unwrap();
     let mut calls = Vec::new();
     let d = Decomposition::with_progress(&m, &mut |done, total| calls.push((done, total)));
-    let total = d.cells().len();
+    let total = d.cells().len() + d.lower_cells().len();
     assert_eq!(calls.first(), Some(&(0, total)));
+    assert!(
+        calls
+            .iter()
+            .any(|&(done, _)| done > d.cells().len() && done < total),
+        "no progress among the 1- and 0-cells: {calls:?}"
+    );
     assert_eq!(calls.last(), Some(&(total, total)));
     assert!(calls
         .windows(2)
