@@ -4,7 +4,7 @@
 
 use crate::arrangement::{Arrangement, EdgeId, FaceId, Support, VertexId};
 use crate::assignment::BoundaryAssignment;
-use crate::fx::FxHashMap;
+use crate::fx::{FxHashMap, FxHasher};
 use crate::incremental::{Compact, Walker};
 use crate::rays::{visibility_rays, VisibilityRay};
 use rug::Integer;
@@ -233,7 +233,7 @@ impl<'m> Decomposition<'m> {
         }
         let mut walker = Walker::new(map, &arrangement, &index);
         let walked = walker.walk(&reps, &mut |done| {
-            if done % step == 0 && done < all {
+            if done.is_multiple_of(step) && done < all {
                 progress(done, all);
             }
         });
@@ -256,7 +256,7 @@ impl<'m> Decomposition<'m> {
         let mut lower: Vec<LowerCell> = Vec::new();
         walker.lower(&mut |site, rep, sk| {
             let done = total + lower.len() + 1;
-            if done % step == 0 && done < all {
+            if done.is_multiple_of(step) && done < all {
                 progress(done, all);
             }
             let faces: Vec<FaceId> = match site {
@@ -464,7 +464,9 @@ impl<'m> Decomposition<'m> {
 /// the order first seen.
 #[derive(Default)]
 struct ClassTable {
-    by_key: FxHashMap<SkeletonKey, usize>,
+    /// Classes by the hash of their key (each key is stored once, in
+    /// `skeletons`; equal hashes are told apart by comparing keys).
+    by_hash: FxHashMap<u64, Vec<usize>>,
     skeletons: Vec<SkeletonKey>,
     /// By class: its 2-cells.
     classes: Vec<Vec<FaceId>>,
@@ -472,33 +474,28 @@ struct ClassTable {
     complexity: Vec<usize>,
     /// By class: its kept lower-dimensional cells.
     lower: Vec<Vec<usize>>,
-    /// Compact skeletons seen, with their class (most repeat).
-    by_compact: FxHashMap<Compact, usize>,
 }
 
 impl ClassTable {
-    /// The class of a compact skeleton: its canonical key is built only
-    /// the first time it is seen.
+    /// The class of a compact skeleton.
     fn intern_compact(&mut self, map: &Map, sk: &Compact) -> usize {
-        if let Some(&c) = self.by_compact.get(sk) {
-            return c;
-        }
-        let c = self.intern(sk.key(map));
-        self.by_compact.insert(sk.clone(), c);
-        c
+        self.intern(sk.key(map))
     }
 
     /// The class of `key`, a new empty one if it was not seen before.
     fn intern(&mut self, key: SkeletonKey) -> usize {
-        if let Some(&c) = self.by_key.get(&key) {
+        use std::hash::{BuildHasher, BuildHasherDefault};
+        let h = BuildHasherDefault::<FxHasher>::default().hash_one(&key);
+        let bucket = self.by_hash.entry(h).or_default();
+        if let Some(&c) = bucket.iter().find(|&&c| self.skeletons[c] == key) {
             return c;
         }
         let c = self.skeletons.len();
-        self.skeletons.push(key.clone());
+        bucket.push(c);
+        self.skeletons.push(key);
         self.classes.push(Vec::new());
         self.complexity.push(0);
         self.lower.push(Vec::new());
-        self.by_key.insert(key, c);
         c
     }
 }
