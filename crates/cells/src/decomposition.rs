@@ -254,7 +254,7 @@ impl<'m> Decomposition<'m> {
         // Cells of dimension 1 and 0, each with its skeleton, absorbed by an
         // adjacent 2-cell with the same skeleton in the same embedding.
         let mut lower: Vec<LowerCell> = Vec::new();
-        walker.lower(&mut |site, rep, sk| {
+        walker.lower(&walked, &mut |site, rep, sk| {
             let done = total + lower.len() + 1;
             if done.is_multiple_of(step) && done < all {
                 progress(done, all);

@@ -197,7 +197,11 @@ impl<'a> Walker<'a> {
     /// After [`Walker::walk`]: the skeleton of every 1-cell (edge on a
     /// ray, at its midpoint) by edge id, then of every 0-cell (vertex off
     /// the map boundary) by vertex id, handed to `sink` one at a time.
-    pub(crate) fn lower(&mut self, sink: &mut dyn FnMut(LowerSite, RatPoint, Compact)) {
+    pub(crate) fn lower(
+        &mut self,
+        walked: &[Option<Compact>],
+        sink: &mut dyn FnMut(LowerSite, RatPoint, Compact),
+    ) {
         let arr = self.arr;
         for e in 0..arr.edge_count() {
             let Support::Rays(g) = arr.edge_support(e) else {
@@ -211,7 +215,8 @@ impl<'a> Walker<'a> {
             let base = self.vis[f].take().expect("faces beside rays are cells");
             let seen = self.across(&base, &[g], &mid, None);
             self.vis[f] = Some(base);
-            let sk = self.compact(&seen, &mid);
+            let faces = [f, arr.half_edge(2 * e + 1).face];
+            let sk = self.lower_skeleton(&seen, &faces, walked, &[g], &mid);
             sink(LowerSite::Edge(e), mid, sk);
         }
         for v in 0..arr.vertex_count() {
@@ -225,7 +230,12 @@ impl<'a> Walker<'a> {
             let p = arr.point(v).clone();
             let seen = self.across(&base, &groups, &p, None);
             self.vis[f] = Some(base);
-            let sk = self.compact(&seen, &p);
+            let faces: Vec<FaceId> = arr
+                .outgoing(v)
+                .into_iter()
+                .map(|h| arr.half_edge(h).face)
+                .collect();
+            let sk = self.lower_skeleton(&seen, &faces, walked, &groups, &p);
             sink(LowerSite::Vertex(v), p, sk);
         }
     }
@@ -288,24 +298,13 @@ impl<'a> Walker<'a> {
     fn compact(&mut self, vis: &[u32], q: &RatPoint) -> Compact {
         let map = self.map;
         let v = map.vertices();
-        let n = map.n();
         let k = vis.len();
         assert!(k > 0, "a point of the interior sees a map vertex ({q})");
         let eye = Eye::new(q);
         let mut edges: Vec<Option<u32>> = Vec::with_capacity(k);
         for s in 0..k {
-            let x = vis[s] as usize;
-            let y = vis[(s + 1) % k] as usize;
-            let e = if y == (x + 1) % n && k > 1 {
-                None
-            } else if eye.orientation(v[x], v[(x + 1) % n]) == Orientation::CounterClockwise {
-                Some(x)
-            } else if eye.orientation(v[(y + n - 1) % n], v[y]) == Orientation::CounterClockwise {
-                Some((y + n - 1) % n)
-            } else {
-                Some(self.beyond(x, &eye, q))
-            };
-            edges.push(e.map(|e| e as u32));
+            let (x, y) = (vis[s] as usize, vis[(s + 1) % k] as usize);
+            edges.push(self.gap(x, y, k, &eye, q));
         }
         // The origin: leftmost, then lowest, of the reflex vertices seen,
         // else of all seen.
@@ -330,6 +329,76 @@ impl<'a> Walker<'a> {
             lines,
             edges,
         }
+    }
+
+    /// The skeleton edge from x to the next vertex y that q sees (`k` of
+    /// them): `None` if full, else the map edge the artificial edge lies on
+    /// (cases 1–3 of the module documentation).
+    fn gap(&mut self, x: usize, y: usize, k: usize, eye: &Eye, q: &RatPoint) -> Option<u32> {
+        let v = self.map.vertices();
+        let n = v.len();
+        let e = if y == (x + 1) % n && k > 1 {
+            return None;
+        } else if eye.orientation(v[x], v[(x + 1) % n]) == Orientation::CounterClockwise {
+            x
+        } else if eye.orientation(v[(y + n - 1) % n], v[y]) == Orientation::CounterClockwise {
+            (y + n - 1) % n
+        } else {
+            self.beyond(x, eye, q)
+        };
+        Some(e as u32)
+    }
+
+    /// The skeleton at a point q of a 1- or 0-cell on the lines `groups`
+    /// that sees what the 2-cell with skeleton `face` sees: the same
+    /// vertices and origin, and the same artificial edges except where the
+    /// gap's ends lie on one of the lines. Elsewhere every test of
+    /// [`Walker::gap`] has the same sign at q as in the open 2-cell: a line
+    /// through a vertex x that q sees, on which q lies, is a ray line
+    /// through x (q on the extension of edge x, or on the line from a vertex
+    /// x sees through x), and the only ray lines through q are `groups`.
+    fn relabel(&mut self, face: &Compact, groups: &[usize], q: &RatPoint) -> Compact {
+        let on = |u: u32| groups.iter().any(|&g| self.lines[g].contains(u));
+        let k = face.vertices.len();
+        let touched: Vec<usize> = (0..k)
+            .filter(|&s| on(face.vertices[s]) || on(face.vertices[(s + 1) % k]))
+            .collect();
+        let mut out = face.clone();
+        if touched.is_empty() {
+            return out;
+        }
+        let eye = Eye::new(q);
+        for s in touched {
+            let (x, y) = (
+                face.vertices[s] as usize,
+                face.vertices[(s + 1) % k] as usize,
+            );
+            let e = self.gap(x, y, k, &eye, q);
+            out.edges[s] = e;
+            out.lines[s] = e.map(|e| self.edge_line[e as usize]);
+        }
+        out
+    }
+
+    /// The skeleton at q of a 1- or 0-cell on the lines `groups`, with Vis
+    /// `seen`, next to the 2-cells `faces`.
+    fn lower_skeleton(
+        &mut self,
+        seen: &[u32],
+        faces: &[FaceId],
+        walked: &[Option<Compact>],
+        groups: &[usize],
+        q: &RatPoint,
+    ) -> Compact {
+        for &f in faces {
+            if let (Some(vis), Some(sk)) = (&self.vis[f], &walked[f]) {
+                if vis.as_slice() == seen {
+                    let sk = sk.clone();
+                    return self.relabel(&sk, groups, q);
+                }
+            }
+        }
+        self.compact(seen, q)
     }
 
     /// The map edge the ray from q through x meets beyond x, taken just
