@@ -7,11 +7,14 @@
 //! by index.
 
 use crate::assignment::{assign, BoundaryAssignment, Conflict};
+use crate::eye::Eye;
 use crate::rays::{group_by_line, LineKey, VisibilityRay};
 use rug::{Integer, Rational};
 use std::cmp::Ordering;
 use std::collections::HashMap;
-use wai_exact::{construct_intersection, orientation_rat, Line, Orientation, RatPoint};
+use wai_exact::{
+    construct_intersection, orientation, orientation_rat, Line, Orientation, RatPoint,
+};
 use wai_map::Map;
 use wai_visibility::OnMap;
 
@@ -278,34 +281,39 @@ impl Arrangement {
             .zip(&ends)
             .map(|(r, &e)| bbox([&pts.points[r.anchor], &pts.points[e]]))
             .collect();
-        let dirs: Vec<(i128, i128)> = rays.iter().map(|r| primitive_dir(&r.line)).collect();
-        let span: Vec<(Rational, Rational)> = rays
-            .iter()
-            .enumerate()
-            .map(|(i, r)| {
-                (
-                    along(dirs[i], &pts.points[r.anchor]),
-                    along(dirs[i], &pts.points[ends[i]]),
-                )
-            })
-            .collect();
-        let within = |i: usize, p: &RatPoint| {
-            let t = along(dirs[i], p);
-            span[i].0 <= t && t <= span[i].1
+        // Closed segments on different lines meet iff neither has both
+        // endpoints strictly on one side of the other's line: exact
+        // orientations (the ends through `Eye`'s checked i128 path), and
+        // the point is constructed only for pairs that meet. Pairs are
+        // visited in order of their boxes' left sides, stopping once a box
+        // starts right of the current one.
+        let eyes: Vec<Eye> = ends.iter().map(|&e| Eye::new(&pts.points[e])).collect();
+        let apart = |i: usize, j: usize| {
+            let (a, b) = (rays[j].line.a(), rays[j].line.b());
+            let sa = orientation(a, b, rays[i].start());
+            let se = eyes[i].orientation(a, b);
+            sa == se && sa != Orientation::Collinear
         };
-        for i in 0..rays.len() {
-            for j in i + 1..rays.len() {
-                if group_of[i] == group_of[j] || !boxes_meet(&boxes[i], &boxes[j]) {
+        let mut order: Vec<usize> = (0..rays.len()).collect();
+        order.sort_by_key(|&i| boxes[i][0]);
+        for (k, &i) in order.iter().enumerate() {
+            for &j in &order[k + 1..] {
+                if boxes[j][0] > boxes[i][2] {
+                    break;
+                }
+                if group_of[i] == group_of[j]
+                    || !boxes_meet(&boxes[i], &boxes[j])
+                    || apart(i, j)
+                    || apart(j, i)
+                {
                     continue;
                 }
                 let Some(x) = construct_intersection(&rays[i].line, &rays[j].line) else {
                     continue; // parallel lines
                 };
-                if within(i, &x) && within(j, &x) {
-                    let id = pts.intern(x);
-                    on_line[group_of[i]].push(id);
-                    on_line[group_of[j]].push(id);
-                }
+                let id = pts.intern(x);
+                on_line[group_of[i]].push(id);
+                on_line[group_of[j]].push(id);
             }
         }
         // Points on map edges: the ends of rays in their relative interior.
