@@ -111,6 +111,7 @@ pub fn decompose(path: &Path, opts: &Options<'_>, format: Format) -> Result<(), 
             "class_cells": sizes,
             "class_complexity": complexity,
             "seconds": elapsed.as_secs_f64(),
+            "peak_memory_bytes": peak_memory_bytes(),
         });
         println!("{}", serde_json::to_string_pretty(&v).expect("plain JSON"));
     } else {
@@ -135,6 +136,13 @@ pub fn decompose(path: &Path, opts: &Options<'_>, format: Format) -> Result<(), 
         println!("max |EC|:            {}", c.max_class_complexity);
         println!("assignment conflicts:{:>4} (boundary pieces two rays assign to different sides; see `wai_cells::Conflict`)", c.conflicts);
         println!("time:                {:.3} s", elapsed.as_secs_f64());
+        match peak_memory_bytes() {
+            Some(b) => println!(
+                "peak memory:         {} MiB (resident, whole process)",
+                b.div_ceil(1 << 20)
+            ),
+            None => println!("peak memory:         unknown (no /proc/self/status)"),
+        }
     }
     if let Some(out) = opts.svg {
         let cells = cell_rings(&d);
@@ -188,4 +196,13 @@ pub(crate) fn kept_lower_cells(d: &Decomposition<'_>) -> Vec<wai_render::LowerDr
             class: l.class,
         })
         .collect()
+}
+
+/// The process's peak resident memory so far (`VmHWM` of
+/// `/proc/self/status`, Linux), in bytes; `None` where it cannot be read.
+fn peak_memory_bytes() -> Option<u64> {
+    let status = std::fs::read_to_string("/proc/self/status").ok()?;
+    let line = status.lines().find(|l| l.starts_with("VmHWM:"))?;
+    let kib: u64 = line.split_whitespace().nth(1)?.parse().ok()?;
+    Some(kib * 1024)
 }

@@ -369,6 +369,8 @@ fn decompose_counts_and_draws_cells_of_every_dimension() {
         (by["0"]["kept"].as_u64(), by["0"]["absorbed"].as_u64()),
         (Some(0), Some(0))
     );
+    // Peak memory is reported (Linux: /proc/self/status), at least 1 MiB.
+    assert!(v["peak_memory_bytes"].as_u64().unwrap() > 1 << 20, "{v}");
     let dir = std::env::temp_dir().join(format!("wai-dims-{}.svg", std::process::id()));
     let out = wai(
         &["decompose", "-", "--svg", dir.to_str().unwrap()],
