@@ -11,9 +11,11 @@ use wai_render::{cells_svg, MapStyle};
 /// Bytes per arrangement vertex assumed by the memory estimate: exact
 /// points, half-edges, edge geometry, faces, cells of every dimension and
 /// the skeleton keys of the classes. Measured as peak RSS over vertices of
-/// random-orthogonal maps (seed 1): 7.9 KiB at n = 1000 (28,273 vertices,
-/// 214 MiB) and 7.5 KiB at n = 2000 (49,559 vertices, 361 MiB); 12 KiB
-/// leaves a margin.
+/// random-orthogonal maps (seed 1), with the incremental skeletons: 5.6 KiB
+/// at n = 1000 (28,273 vertices, 155 MiB), 5.5 KiB at n = 2000 (49,559
+/// vertices, 267 MiB) and 5.7 KiB at n = 4000 (110,230 vertices, 614 MiB);
+/// comb-convex-chain k = 64, whose 80,033 classes have long keys: 9.1 KiB
+/// (80,290 vertices, 716 MiB). 12 KiB leaves a margin.
 const BYTES_PER_VERTEX: u64 = 12 * 1024;
 
 /// The memory the machine has available now, from /proc/meminfo.
