@@ -6,9 +6,14 @@
 //! and orthogonal maps (n ≤ 30).
 //!
 //! `cargo run --release -p wai-lemmas --bin stress -- [--maps N] [--start S]`
+//! or `-- --corpus`
 //!
 //! Map i is `wai_gen::random(kind, n, seed = S + i)` with the kind cycling
-//! through every random kind and n cycling through 8..=30. Prints progress,
+//! through every random kind and n cycling through 8..=30. With `--corpus`
+//! the maps are instead the fixed corpus of issue 7's acceptance: every free
+//! polyomino of up to 8 cells, every thesis family at parameters 1 to 6,
+//! and every map of `shared/datasets` that the cells tests decompose (R2V,
+//! Westport, AGPLIB up to 60 vertices). Prints progress,
 //! then per claim the instances examined and the violations; the known
 //! failures of the sec. 3.6 rule (claim A3.6: 1-cells such as
 //! `counterexamples/T3.3b-doorway-1d-cell.json`, and 0-cells) are counted
@@ -31,9 +36,11 @@ fn arg(args: &[String], name: &str, default: u64) -> u64 {
 const USAGE: &str = "\
 stress: every claim checker over seeded random maps (n from 8 to 30, every random kind)
 
-usage: stress [--maps N] [--start S]
+usage: stress [--maps N] [--start S] | stress --corpus
   --maps N    how many maps (default 10000)
   --start S   the first seed (default 0)
+  --corpus    instead: all free polyominoes up to 8 cells, the families at
+              parameters 1..=6 and the dataset maps (needs ../shared/datasets)
   -h, --help  this text
 
 Prints per claim the instances examined; exits 1 on a violation other than
@@ -45,25 +52,16 @@ fn main() {
         println!("{USAGE}");
         return;
     }
-    let total = arg(&args, "--maps", 10_000);
+    let corpus = args.iter().any(|a| a == "--corpus");
     let start = arg(&args, "--start", 0);
-    let checkers: Vec<Box<dyn Checker>> = CLAIMS
-        .iter()
-        .filter_map(|c| match c.status {
-            Status::Checker(make) => Some(make()),
-            Status::NoCheckerYet => None,
+    let all: Vec<wai_map::Map> = if corpus {
+        corpus_maps().unwrap_or_else(|e| {
+            eprintln!("stress: {e}");
+            std::process::exit(2);
         })
-        .collect();
-    let refs: Vec<&dyn Checker> = checkers.iter().map(AsRef::as_ref).collect();
-    let kinds = wai_gen::RANDOM_KINDS;
-    let mut examined: BTreeMap<&'static str, u64> = BTreeMap::new();
-    let mut conflicts: BTreeMap<String, u64> = BTreeMap::new();
-    let mut others = 0u64;
-    let batch = 100u64;
-    let t = std::time::Instant::now();
-    let mut i = 0u64;
-    while i < total {
-        let maps: Vec<wai_map::Map> = (i..(i + batch).min(total))
+    } else {
+        let kinds = wai_gen::RANDOM_KINDS;
+        (0..arg(&args, "--maps", 10_000))
             .map(|j| {
                 let kind = &kinds[(j % kinds.len() as u64) as usize];
                 let n = (8 + (j / kinds.len() as u64) % 23) as usize;
@@ -73,8 +71,26 @@ fn main() {
                     .expect("sizes within the kind's range")
                     .with_name(format!("{} n={n} seed={seed}", kind.id))
             })
-            .collect();
-        let summary = run(&refs, &maps);
+            .collect()
+    };
+    let total = all.len() as u64;
+    let checkers: Vec<Box<dyn Checker>> = CLAIMS
+        .iter()
+        .filter_map(|c| match c.status {
+            Status::Checker(make) => Some(make()),
+            Status::NoCheckerYet => None,
+        })
+        .collect();
+    let refs: Vec<&dyn Checker> = checkers.iter().map(AsRef::as_ref).collect();
+    let mut examined: BTreeMap<&'static str, u64> = BTreeMap::new();
+    let mut conflicts: BTreeMap<String, u64> = BTreeMap::new();
+    let mut others = 0u64;
+    let batch = 100u64;
+    let t = std::time::Instant::now();
+    let mut i = 0u64;
+    while i < total {
+        let maps = &all[i as usize..(i + batch).min(total) as usize];
+        let summary = run(&refs, maps);
         for tally in &summary.tallies {
             *examined.entry(tally.claim).or_default() += tally.examined;
         }
@@ -97,11 +113,18 @@ fn main() {
         );
     }
     eprintln!();
-    println!(
-        "stress: {total} maps (seeds {start}..{}), {:.1} s",
-        start + total,
-        t.elapsed().as_secs_f64()
-    );
+    if corpus {
+        println!(
+            "stress: the corpus, {total} maps (polyominoes <= 8, families, datasets), {:.1} s",
+            t.elapsed().as_secs_f64()
+        );
+    } else {
+        println!(
+            "stress: {total} maps (seeds {start}..{}), {:.1} s",
+            start + total,
+            t.elapsed().as_secs_f64()
+        );
+    }
     for (claim, count) in &examined {
         println!("  {claim:<6} examined {count}");
     }
@@ -116,4 +139,60 @@ fn main() {
     if others > 0 {
         std::process::exit(1);
     }
+}
+
+/// The fixed corpus: free polyominoes up to 8 cells, the families at
+/// parameters 1..=6, the dataset maps. An error if the datasets are missing
+/// (the run must not pass on less than it says).
+fn corpus_maps() -> Result<Vec<wai_map::Map>, String> {
+    let mut maps: Vec<wai_map::Map> =
+        wai_gen::exhaustive_polyomino_maps(8, wai_gen::Symmetry::Free)
+            .enumerate()
+            .map(|(i, m)| m.with_name(format!("polyomino #{i}")))
+            .collect();
+    for f in wai_gen::FAMILIES {
+        let before = maps.len();
+        maps.extend((1..=6).filter_map(|k| {
+            wai_gen::family(f.id, &[k])
+                .ok()
+                .map(|m| m.with_name(format!("{} k={k}", f.id)))
+        }));
+        if maps.len() == before {
+            return Err(format!("family {} gave no map at parameters 1..=6", f.id));
+        }
+    }
+    let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../../shared/datasets");
+    for (sub, max_n) in [
+        ("r2v", usize::MAX),
+        ("westport", usize::MAX),
+        ("agplib/simple", 60),
+        ("agplib/ortho", 60),
+        ("agplib/vonkoch", 60),
+    ] {
+        let dir = root.join(sub);
+        let mut files: Vec<std::path::PathBuf> = std::fs::read_dir(&dir)
+            .map_err(|e| {
+                format!(
+                    "{}: {e} (the corpus needs shared/ beside the checkout)",
+                    dir.display()
+                )
+            })?
+            .filter_map(|e| e.ok().map(|e| e.path()))
+            .filter(|p| p.extension().is_some_and(|x| x == "json") && !p.ends_with("index.json"))
+            .collect();
+        files.sort();
+        for f in files {
+            let bytes = std::fs::read(&f).map_err(|e| format!("{}: {e}", f.display()))?;
+            let loaded =
+                wai_map::json::from_json(&bytes).map_err(|e| format!("{}: {e}", f.display()))?;
+            if loaded.map.n() <= max_n {
+                let name = format!(
+                    "{sub}/{}",
+                    f.file_name().unwrap_or_default().to_string_lossy()
+                );
+                maps.push(loaded.map.with_name(name));
+            }
+        }
+    }
+    Ok(maps)
 }
