@@ -177,6 +177,24 @@ pub(crate) fn along(d: (i128, i128), p: &RatPoint) -> Rational {
 
 /// Integer bounding box `(xmin, ymin, xmax, ymax)` of rational points
 /// (floors and ceilings).
+/// Call `f(i, j)` for every pair of boxes `[x0, y0, x1, y1]` that meet
+/// (closed), visiting boxes in order of their left sides and stopping once
+/// a box starts right of the current one's right side.
+pub(crate) fn each_meeting_pair(boxes: &[[i128; 4]], mut f: impl FnMut(usize, usize)) {
+    let mut order: Vec<usize> = (0..boxes.len()).collect();
+    order.sort_by_key(|&i| boxes[i][0]);
+    for (k, &i) in order.iter().enumerate() {
+        for &j in &order[k + 1..] {
+            if boxes[j][0] > boxes[i][2] {
+                break;
+            }
+            if boxes_meet(&boxes[i], &boxes[j]) {
+                f(i, j);
+            }
+        }
+    }
+}
+
 pub(crate) fn bbox<'a>(pts: impl IntoIterator<Item = &'a RatPoint>) -> [i128; 4] {
     let mut b = [i128::MAX, i128::MAX, i128::MIN, i128::MIN];
     for p in pts {
@@ -294,28 +312,17 @@ impl Arrangement {
             let se = eyes[i].orientation(a, b);
             sa == se && sa != Orientation::Collinear
         };
-        let mut order: Vec<usize> = (0..rays.len()).collect();
-        order.sort_by_key(|&i| boxes[i][0]);
-        for (k, &i) in order.iter().enumerate() {
-            for &j in &order[k + 1..] {
-                if boxes[j][0] > boxes[i][2] {
-                    break;
-                }
-                if group_of[i] == group_of[j]
-                    || !boxes_meet(&boxes[i], &boxes[j])
-                    || apart(i, j)
-                    || apart(j, i)
-                {
-                    continue;
-                }
-                let Some(x) = construct_intersection(&rays[i].line, &rays[j].line) else {
-                    continue; // parallel lines
-                };
-                let id = pts.intern(x);
-                on_line[group_of[i]].push(id);
-                on_line[group_of[j]].push(id);
+        each_meeting_pair(&boxes, |i, j| {
+            if group_of[i] == group_of[j] || apart(i, j) || apart(j, i) {
+                return;
             }
-        }
+            let Some(x) = construct_intersection(&rays[i].line, &rays[j].line) else {
+                return; // parallel lines
+            };
+            let id = pts.intern(x);
+            on_line[group_of[i]].push(id);
+            on_line[group_of[j]].push(id);
+        });
         // Points on map edges: the ends of rays in their relative interior.
         let mut on_edge: Vec<Vec<VertexId>> = (0..n).map(|i| vec![i, (i + 1) % n]).collect();
         for (r, &e) in rays.iter().zip(&ends) {

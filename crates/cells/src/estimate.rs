@@ -1,6 +1,6 @@
 //! The size of an arrangement before it is built, from predicates only.
 
-use crate::arrangement::{bbox, boxes_meet};
+use crate::arrangement::{bbox, each_meeting_pair};
 use crate::rays::{LineKey, VisibilityRay};
 use wai_exact::{side_of_intersection, side_of_line, Line, Point, RatPoint, Side};
 use wai_map::Map;
@@ -55,25 +55,14 @@ pub fn vertex_bound(map: &Map, rays: &[VisibilityRay]) -> u64 {
             .iter()
             .filter(|r| matches!(r.end.on_map, OnMap::Edge(_)))
             .count() as u64;
-    // Sort by the left end of the box so that each ray meets only the
-    // rays whose boxes start before its own ends.
-    let mut order: Vec<usize> = (0..rays.len()).collect();
-    order.sort_by_key(|&i| boxes[i][0]);
-    for (a, &i) in order.iter().enumerate() {
-        for &j in &order[a + 1..] {
-            if boxes[j][0] > boxes[i][2] {
-                break;
-            }
-            if keys[i] == keys[j] || !boxes_meet(&boxes[i], &boxes[j]) {
-                continue;
-            }
-            if straddles(&rays[i].line, &rays[j], &ends[j])
-                && straddles(&rays[j].line, &rays[i], &ends[i])
-            {
-                count += 1;
-            }
+    each_meeting_pair(&boxes, |i, j| {
+        if keys[i] != keys[j]
+            && straddles(&rays[i].line, &rays[j], &ends[j])
+            && straddles(&rays[j].line, &rays[i], &ends[i])
+        {
+            count += 1;
         }
-    }
+    });
     count
 }
 
