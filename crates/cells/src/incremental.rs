@@ -212,39 +212,30 @@ impl<'a> Walker<'a> {
                 arr.point(arr.half_edge(2 * e).origin),
                 arr.point(arr.dest(2 * e)),
             );
-            let base = self.vis[f].take().expect("faces beside rays are cells");
-            let seen = self.across(&base, &[g], &mid, None);
-            self.vis[f] = Some(base);
             let faces = [f, arr.half_edge(2 * e + 1).face];
-            let sk = self.lower_skeleton(&seen, &faces, walked, &[g], &mid);
+            let sk = self.lower_skeleton(&faces, walked, &[g], &mid);
             sink(LowerSite::Edge(e), mid, sk);
         }
         for v in 0..arr.vertex_count() {
             if arr.is_on_map_boundary(v) {
                 continue;
             }
-            let (f, groups) = self.around(v);
-            let base = self.vis[f]
-                .take()
-                .expect("faces at interior vertices are cells");
+            let groups = self.lines_through(v);
             let p = arr.point(v).clone();
-            let seen = self.across(&base, &groups, &p, None);
-            self.vis[f] = Some(base);
             let faces: Vec<FaceId> = arr
                 .outgoing(v)
                 .into_iter()
                 .map(|h| arr.half_edge(h).face)
                 .collect();
-            let sk = self.lower_skeleton(&seen, &faces, walked, &groups, &p);
+            let sk = self.lower_skeleton(&faces, walked, &groups, &p);
             sink(LowerSite::Vertex(v), p, sk);
         }
     }
 
-    /// A face at interior vertex `v`, and the ray groups through `v`.
-    fn around(&self, v: VertexId) -> (FaceId, Vec<usize>) {
+    /// The ray groups through the interior vertex `v`.
+    fn lines_through(&self, v: VertexId) -> Vec<usize> {
         let arr = self.arr;
         let out = arr.outgoing(v);
-        let f = arr.half_edge(out[0]).face;
         let mut groups: Vec<usize> = out
             .iter()
             .filter_map(|&h| match arr.edge_support(h / 2) {
@@ -254,7 +245,7 @@ impl<'a> Walker<'a> {
             .collect();
         groups.sort_unstable();
         groups.dedup();
-        (f, groups)
+        groups
     }
 
     /// Vis at q, on the lines `groups` (or beside the one line, on
@@ -380,25 +371,49 @@ impl<'a> Walker<'a> {
         out
     }
 
-    /// The skeleton at q of a 1- or 0-cell on the lines `groups`, with Vis
-    /// `seen`, next to the 2-cells `faces`.
+    /// The skeleton at q of a 1- or 0-cell on the lines `groups`, next to
+    /// the 2-cells `faces` (all cells).
+    ///
+    /// Off its lines q sees what its 2-cells see, so Vis(q) equals Vis of
+    /// 2-cell f exactly when the vertices f sees on the lines are those q
+    /// sees on them (the nearest each way): a test on the few vertices of
+    /// the lines, not on all of Vis. Then f's skeleton is relabelled;
+    /// otherwise Vis(q) is built and its skeleton computed.
     fn lower_skeleton(
         &mut self,
-        seen: &[u32],
         faces: &[FaceId],
         walked: &[Option<Compact>],
         groups: &[usize],
         q: &RatPoint,
     ) -> Compact {
+        let mut near: Vec<u32> = Vec::new();
+        for &g in groups {
+            let l = &self.lines[g];
+            l.seen_from(&l.position_of(q), None, &mut near);
+        }
+        near.sort_unstable();
+        near.dedup();
         for &f in faces {
             if let (Some(vis), Some(sk)) = (&self.vis[f], &walked[f]) {
-                if vis.as_slice() == seen {
+                let mut seen_on: Vec<u32> = groups
+                    .iter()
+                    .flat_map(|&g| self.lines[g].vertices())
+                    .copied()
+                    .filter(|u| vis.binary_search(u).is_ok())
+                    .collect();
+                seen_on.sort_unstable();
+                if seen_on == near {
                     let sk = sk.clone();
                     return self.relabel(&sk, groups, q);
                 }
             }
         }
-        self.compact(seen, q)
+        let base = self.vis[faces[0]]
+            .take()
+            .expect("the cells next to a lower cell are walked");
+        let seen = self.across(&base, groups, q, None);
+        self.vis[faces[0]] = Some(base);
+        self.compact(&seen, q)
     }
 
     /// The map edge the ray from q through x meets beyond x, taken just

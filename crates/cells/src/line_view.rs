@@ -141,6 +141,11 @@ impl LineView {
         }
     }
 
+    /// The map vertices on the line, ascending.
+    pub(crate) fn vertices(&self) -> &[u32] {
+        &self.on_line
+    }
+
     /// Whether map vertex `v` lies on the line.
     pub(crate) fn contains(&self, v: u32) -> bool {
         self.on_line.binary_search(&v).is_ok()
