@@ -226,11 +226,7 @@ impl BoundaryRule {
                 continue;
             }
             let p = arr.point(v).clone();
-            let incident: Vec<FaceId> = arr
-                .outgoing(v)
-                .into_iter()
-                .map(|h| arr.half_edge(h).face)
-                .collect();
+            let incident = arr.faces_around(v);
             let owner = arr.owner_of_vertex(v);
             let at = skeleton_at(index, &p);
             let adjacent: Vec<&Result<Embedded, String>> =

@@ -559,6 +559,15 @@ impl Arrangement {
         out
     }
 
+    /// The faces around vertex `v`: the face of each outgoing half-edge,
+    /// counter-clockwise (a face meeting `v` in two corners appears twice).
+    pub fn faces_around(&self, v: VertexId) -> Vec<FaceId> {
+        self.outgoing(v)
+            .into_iter()
+            .map(|h| self.half_edges[h].face)
+            .collect()
+    }
+
     /// Sec. 3.6: the cell that owns the points of edge `e`'s relative
     /// interior. See [`BoundaryAssignment`] for the rule.
     pub fn owner_of_edge(&self, e: EdgeId) -> FaceId {

@@ -5,7 +5,7 @@
 use crate::arrangement::{Arrangement, EdgeId, FaceId, Support, VertexId};
 use crate::assignment::BoundaryAssignment;
 use crate::fx::{FxHashMap, FxHasher};
-use crate::incremental::{Compact, Walker};
+use crate::incremental::Walker;
 use crate::rays::{visibility_rays, VisibilityRay};
 use rug::Integer;
 use wai_exact::{orientation_rat, Orientation, RatPoint};
@@ -24,8 +24,9 @@ const NOT_A_CELL: usize = usize::MAX;
 /// skeleton, found by walking the arrangement from one visibility query
 /// (sec. 3.9.2: crossing an edge on a ray line changes the visibility of
 /// the map vertices on that line only; see the `incremental` module), and
-/// the canonical [`SkeletonKey`] of each distinct skeleton. Cells with equal
-/// keys form a class.
+/// the canonical [`SkeletonKey`] of every 2-cell's skeleton and of every
+/// 1- or 0-cell's that is not an adjacent 2-cell's in the same embedding.
+/// Cells with equal keys form a class.
 ///
 /// # Cells of every dimension
 /// The decomposition has open cells of dimension 2 (the faces, "cells" in
@@ -244,7 +245,7 @@ impl<'m> Decomposition<'m> {
         for (i, &f) in cells.iter().enumerate() {
             let sk = walked[f].as_ref().expect("every cell is walked");
             origins.push(sk.origin());
-            let class = table.intern_compact(map, sk);
+            let class = table.intern(sk.key(map));
             table.classes[class].push(f);
             table.complexity[class] += 2 * sizes[i];
             representatives.push(reps[f].take().expect("a cell"));
@@ -254,22 +255,11 @@ impl<'m> Decomposition<'m> {
         // Cells of dimension 1 and 0, each with its skeleton, absorbed by an
         // adjacent 2-cell with the same skeleton in the same embedding.
         let mut lower: Vec<LowerCell> = Vec::new();
-        walker.lower(&walked, &mut |site, rep, sk| {
+        walker.lower(&walked, &mut |site, rep, faces, sk| {
             let done = total + lower.len() + 1;
             if done.is_multiple_of(step) && done < all {
                 progress(done, all);
             }
-            let faces: Vec<FaceId> = match site {
-                LowerSite::Edge(e) => vec![
-                    arrangement.half_edge(2 * e).face,
-                    arrangement.half_edge(2 * e + 1).face,
-                ],
-                LowerSite::Vertex(v) => arrangement
-                    .outgoing(v)
-                    .into_iter()
-                    .map(|h| arrangement.half_edge(h).face)
-                    .collect(),
-            };
             // Most are absorbed: equal compact skeletons are equal
             // skeletons in the same embedding, and need no class lookup.
             let same = faces
@@ -279,7 +269,7 @@ impl<'m> Decomposition<'m> {
             let (class, absorbed_by) = match same {
                 Some(f) => (skeleton_index[position[f]], Some(f)),
                 None => {
-                    let class = table.intern_compact(map, &sk);
+                    let class = table.intern(sk.key(map));
                     // Collinear map edges make the converse need the key.
                     let by = faces.iter().copied().find(|&f| {
                         position[f] != NOT_A_CELL
@@ -477,11 +467,6 @@ struct ClassTable {
 }
 
 impl ClassTable {
-    /// The class of a compact skeleton.
-    fn intern_compact(&mut self, map: &Map, sk: &Compact) -> usize {
-        self.intern(sk.key(map))
-    }
-
     /// The class of `key`, a new empty one if it was not seen before.
     fn intern(&mut self, key: SkeletonKey) -> usize {
         use std::hash::{BuildHasher, BuildHasherDefault};

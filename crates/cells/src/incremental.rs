@@ -47,7 +47,7 @@ use wai_visibility::{LineLabel, Skeleton, SkeletonKey, VisibilityIndex};
 /// artificial edge lies on. Equal compact skeletons are equal skeletons in
 /// the same embedding; the converse holds too, since line ids identify
 /// lines (collinear map edges share one).
-#[derive(Clone, Debug, PartialEq, Eq, Hash)]
+#[derive(Clone, Debug, PartialEq, Eq)]
 pub(crate) struct Compact {
     pub(crate) vertices: Vec<u32>,
     pub(crate) lines: Vec<Option<u32>>,
@@ -88,6 +88,10 @@ impl Compact {
         }
     }
 }
+
+/// Receives each 1- or 0-cell: where it is, its point, the 2-cells next
+/// to it and its skeleton.
+pub(crate) type LowerSink<'s> = dyn FnMut(LowerSite, RatPoint, &[FaceId], Compact) + 's;
 
 /// The skeletons of all cells of an arrangement, by walking it.
 pub(crate) struct Walker<'a> {
@@ -196,12 +200,9 @@ impl<'a> Walker<'a> {
 
     /// After [`Walker::walk`]: the skeleton of every 1-cell (edge on a
     /// ray, at its midpoint) by edge id, then of every 0-cell (vertex off
-    /// the map boundary) by vertex id, handed to `sink` one at a time.
-    pub(crate) fn lower(
-        &mut self,
-        walked: &[Option<Compact>],
-        sink: &mut dyn FnMut(LowerSite, RatPoint, Compact),
-    ) {
+    /// the map boundary) by vertex id, handed to `sink` one at a time with
+    /// its point and the 2-cells next to it.
+    pub(crate) fn lower(&mut self, walked: &[Option<Compact>], sink: &mut LowerSink<'_>) {
         let arr = self.arr;
         for e in 0..arr.edge_count() {
             let Support::Rays(g) = arr.edge_support(e) else {
@@ -214,7 +215,7 @@ impl<'a> Walker<'a> {
             );
             let faces = [f, arr.half_edge(2 * e + 1).face];
             let sk = self.lower_skeleton(&faces, walked, &[g], &mid);
-            sink(LowerSite::Edge(e), mid, sk);
+            sink(LowerSite::Edge(e), mid, &faces, sk);
         }
         for v in 0..arr.vertex_count() {
             if arr.is_on_map_boundary(v) {
@@ -222,13 +223,9 @@ impl<'a> Walker<'a> {
             }
             let groups = self.lines_through(v);
             let p = arr.point(v).clone();
-            let faces: Vec<FaceId> = arr
-                .outgoing(v)
-                .into_iter()
-                .map(|h| arr.half_edge(h).face)
-                .collect();
+            let faces = arr.faces_around(v);
             let sk = self.lower_skeleton(&faces, walked, &groups, &p);
-            sink(LowerSite::Vertex(v), p, sk);
+            sink(LowerSite::Vertex(v), p, &faces, sk);
         }
     }
 

@@ -132,11 +132,7 @@ fn check_laws(d: &Decomposition) -> usize {
     for (i, l) in d.lower_cells().iter().enumerate() {
         let beside: Vec<usize> = match l.site {
             LowerSite::Edge(e) => vec![arr.half_edge(2 * e).face, arr.half_edge(2 * e + 1).face],
-            LowerSite::Vertex(v) => arr
-                .outgoing(v)
-                .into_iter()
-                .map(|h| arr.half_edge(h).face)
-                .collect(),
+            LowerSite::Vertex(v) => arr.faces_around(v),
         };
         match l.absorbed_by {
             Some(f) => {
