@@ -8,10 +8,10 @@
 
 use crate::assignment::{assign, BoundaryAssignment, Conflict};
 use crate::eye::Eye;
+use crate::fx::FxHashMap;
 use crate::rays::{group_by_line, LineKey, VisibilityRay};
 use rug::{Integer, Rational};
 use std::cmp::Ordering;
-use std::collections::HashMap;
 use wai_exact::{
     construct_intersection, orientation, orientation_rat, Line, Orientation, RatPoint,
 };
@@ -159,7 +159,13 @@ pub(crate) fn cross_sign(u: (i128, i128), v: (i128, i128)) -> Ordering {
 
 /// The sign of the dot product `u · v`, exactly.
 pub(crate) fn dot_sign(u: (i128, i128), v: (i128, i128)) -> Ordering {
-    (Integer::from(u.0) * v.0 + Integer::from(u.1) * v.1).cmp0()
+    let fast =
+        u.0.checked_mul(v.0)
+            .and_then(|p| p.checked_add(u.1.checked_mul(v.1)?));
+    match fast {
+        Some(d) => d.cmp(&0),
+        None => (Integer::from(u.0) * v.0 + Integer::from(u.1) * v.1).cmp0(),
+    }
 }
 
 /// Counter-clockwise angular order of nonzero directions, starting at the
@@ -220,7 +226,7 @@ pub(crate) fn boxes_meet(a: &[i128; 4], b: &[i128; 4]) -> bool {
 
 struct Points {
     points: Vec<RatPoint>,
-    index: HashMap<RatPoint, VertexId>,
+    index: FxHashMap<RatPoint, VertexId>,
 }
 
 impl Points {
@@ -242,13 +248,58 @@ impl Points {
     }
 }
 
+/// A position along a line, `d · p` as a fraction: `i128` numerator and
+/// (positive) denominator when they fit, else a GMP rational. Compared
+/// exactly either way.
+#[derive(Clone, Debug)]
+pub(crate) enum Along {
+    Small(i128, i128),
+    Big(Rational),
+}
+
+impl Along {
+    pub(crate) fn of(d: (i128, i128), p: &RatPoint) -> Along {
+        let fast = || -> Option<Along> {
+            let (x, y, w) = (p.hx().to_i128()?, p.hy().to_i128()?, p.hw().to_i128()?);
+            let num = x.checked_mul(d.0)?.checked_add(y.checked_mul(d.1)?)?;
+            Some(Along::Small(num, w))
+        };
+        fast().unwrap_or_else(|| Along::Big(along(d, p)))
+    }
+
+    /// A rational, small if it fits.
+    pub(crate) fn from_rational(r: Rational) -> Along {
+        match (r.numer().to_i128(), r.denom().to_i128()) {
+            (Some(n), Some(w)) => Along::Small(n, w),
+            _ => Along::Big(r),
+        }
+    }
+
+    fn big(&self) -> Rational {
+        match self {
+            Along::Small(n, w) => Rational::from((*n, *w)),
+            Along::Big(r) => r.clone(),
+        }
+    }
+
+    /// Exact comparison (denominators are positive).
+    pub(crate) fn cmp(&self, other: &Along) -> Ordering {
+        if let (Along::Small(a, w), Along::Small(b, v)) = (self, other) {
+            if let (Some(x), Some(y)) = (a.checked_mul(*v), b.checked_mul(*w)) {
+                return x.cmp(&y);
+            }
+        }
+        self.big().cmp(&other.big())
+    }
+}
+
 /// Sort point ids by `d · p` and drop duplicates.
 fn sort_along(d: (i128, i128), ids: &mut Vec<VertexId>, points: &[RatPoint]) {
     ids.sort_unstable();
     ids.dedup();
-    let mut keyed: Vec<(Rational, VertexId)> =
-        ids.iter().map(|&i| (along(d, &points[i]), i)).collect();
-    keyed.sort();
+    let mut keyed: Vec<(Along, VertexId)> =
+        ids.iter().map(|&i| (Along::of(d, &points[i]), i)).collect();
+    keyed.sort_by(|a, b| a.0.cmp(&b.0).then(a.1.cmp(&b.1)));
     *ids = keyed.into_iter().map(|(_, i)| i).collect();
 }
 
@@ -261,7 +312,7 @@ impl Arrangement {
         let n = v.len();
         let mut pts = Points {
             points: Vec::new(),
-            index: HashMap::new(),
+            index: FxHashMap::default(),
         };
         for &p in v {
             pts.intern(RatPoint::from(p));
@@ -353,7 +404,7 @@ impl Arrangement {
         for (g, ids) in on_line.iter_mut().enumerate() {
             let d = groups[g].dir;
             sort_along(d, ids, &points);
-            let pos: HashMap<VertexId, usize> =
+            let pos: FxHashMap<VertexId, usize> =
                 ids.iter().enumerate().map(|(k, &i)| (i, k)).collect();
             let mut cover: Vec<Vec<usize>> = vec![Vec::new(); ids.len().saturating_sub(1)];
             for &r in &groups[g].rays {
@@ -521,6 +572,19 @@ impl Arrangement {
             (-d.0, -d.1)
         }
     }
+    /// The half-edges of the boundary cycle of face `f`, from its `outer`,
+    /// without collecting them.
+    pub fn face_cycle(&self, f: FaceId) -> impl Iterator<Item = HalfEdgeId> + '_ {
+        let start = self.faces[f].outer;
+        let mut h = Some(start);
+        std::iter::from_fn(move || {
+            let cur = h?;
+            let next = self.half_edges[cur].next;
+            h = (next != start).then_some(next);
+            Some(cur)
+        })
+    }
+
     /// The half-edges of the boundary cycle of face `f`, from its `outer`.
     pub fn face_half_edges(&self, f: FaceId) -> Vec<HalfEdgeId> {
         let start = self.faces[f].outer;

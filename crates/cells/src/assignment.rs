@@ -98,13 +98,13 @@ impl BoundaryAssignment {
     }
 }
 
-/// If every ray in `rays` points the same way along `dir` (or against it),
-/// the one whose anchor is nearest behind the edge: the last obstruction
-/// the rays pass before reaching it. `None` if the rays point both ways.
-fn nearest_anchor_ray(arr: &Arrangement, rays: &[usize], dir: (i128, i128)) -> Option<usize> {
+/// If every ray in `rays` points the same way along the edge's line (by
+/// `forward`, per ray), the one whose anchor is nearest behind the edge:
+/// the last obstruction the rays pass before reaching it. `None` if the
+/// rays point both ways.
+fn nearest_anchor_ray(arr: &Arrangement, rays: &[usize], forward: &[bool]) -> Option<usize> {
     let first = *rays.first()?;
-    let forward = ray_along(arr, first, dir);
-    if rays.iter().any(|&r| ray_along(arr, r, dir) != forward) {
+    if rays.iter().any(|&r| forward[r] != forward[first]) {
         return None;
     }
     // All rays share the supporting line and direction: compare anchors
@@ -116,13 +116,17 @@ fn nearest_anchor_ray(arr: &Arrangement, rays: &[usize], dir: (i128, i128)) -> O
     })
 }
 
-/// Whether ray `r` points along `g`'s direction.
-fn ray_along(arr: &Arrangement, r: usize, dir: (i128, i128)) -> bool {
-    dot_sign(primitive_dir(&arr.rays[r].line), dir) == Ordering::Greater
-}
-
 pub(crate) fn assign(arr: &Arrangement) -> BoundaryAssignment {
     let mut conflicts = Vec::new();
+    // By ray: its primitive direction, and whether it points along its
+    // group's direction.
+    let ray_dir: Vec<(i128, i128)> = arr.rays.iter().map(|r| primitive_dir(&r.line)).collect();
+    let mut forward = vec![false; arr.rays.len()];
+    for g in &arr.groups {
+        for &r in &g.rays {
+            forward[r] = dot_sign(ray_dir[r], g.dir) == Ordering::Greater;
+        }
+    }
     let mut edge_owner = Vec::with_capacity(arr.edges.len());
     for (e, geom) in arr.edges.iter().enumerate() {
         let (f0, f1) = (arr.half_edges[2 * e].face, arr.half_edges[2 * e + 1].face);
@@ -130,19 +134,18 @@ pub(crate) fn assign(arr: &Arrangement) -> BoundaryAssignment {
             Support::MapEdge(_) => {
                 edge_owner.push(if f0 != arr.outer_face() { f0 } else { f1 });
             }
-            Support::Rays(g) => {
-                let dir = arr.groups[g].dir;
+            Support::Rays(_) => {
                 let (mut left, mut right) = (Vec::new(), Vec::new());
                 for &r in &geom.rays {
                     // Half-edge 2e points along `dir`; its face is on its left.
-                    let to_left = (arr.rays[r].side == RaySide::Left) == ray_along(arr, r, dir);
+                    let to_left = (arr.rays[r].side == RaySide::Left) == forward[r];
                     if to_left {
                         left.push(r);
                     } else {
                         right.push(r);
                     }
                 }
-                let nearest = nearest_anchor_ray(arr, &geom.rays, dir);
+                let nearest = nearest_anchor_ray(arr, &geom.rays, &forward);
                 let owner = match nearest {
                     // One way along the edge: the last obstruction passed
                     // decides (its anchor is nearest behind the edge).
@@ -203,7 +206,7 @@ pub(crate) fn assign(arr: &Arrangement) -> BoundaryAssignment {
                 Ordering::Equal => (-d.1, d.0),
             };
             let fits = through.iter().all(|&r| {
-                let side = match cross_sign(primitive_dir(&arr.rays[r].line), w) {
+                let side = match cross_sign(ray_dir[r], w) {
                     Ordering::Greater => Some(RaySide::Left),
                     Ordering::Less => Some(RaySide::Right),
                     Ordering::Equal => None,

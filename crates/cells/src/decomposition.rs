@@ -2,13 +2,15 @@
 //! boundary assignment (sec. 3.6), the skeleton of every cell (Def 3.9) and
 //! the equivalence classes of cells (Def 3.10).
 
-use crate::arrangement::{Arrangement, EdgeId, FaceId, Support, VertexId};
+use crate::arrangement::{cross_sign, Arrangement, EdgeId, FaceId, Support, VertexId};
 use crate::assignment::BoundaryAssignment;
-use crate::fx::{FxHashMap, FxHasher};
-use crate::incremental::Walker;
+use crate::fx::FxHashMap;
+use crate::incremental::{Compact, EdgeLines, LowerSkeleton, Walker};
 use crate::rays::{visibility_rays, VisibilityRay};
 use rug::Integer;
-use wai_exact::{orientation_rat, Orientation, RatPoint};
+use std::cmp::Ordering;
+use std::sync::OnceLock;
+use wai_exact::RatPoint;
 use wai_map::Map;
 use wai_visibility::{SkeletonKey, VisibilityIndex};
 
@@ -88,7 +90,10 @@ pub struct Decomposition<'m> {
     skeleton_index: Vec<usize>,
     /// By cell position: the map vertex that is the skeleton's origin v0.
     origins: Vec<usize>,
-    skeletons: Vec<SkeletonKey>,
+    /// By class: the compact skeleton of one of its cells.
+    class_skeletons: Vec<Compact>,
+    /// The keys of `class_skeletons`, built when first asked for.
+    skeletons: OnceLock<Vec<SkeletonKey>>,
     classes: Vec<Vec<FaceId>>,
     class_complexity: Vec<usize>,
     /// The 1-cells (ray edges), then the 0-cells (interior vertices).
@@ -118,8 +123,6 @@ pub enum LowerSite {
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct LowerCell {
     pub site: LowerSite,
-    /// An exact point of the cell: the edge's midpoint, or the vertex.
-    pub representative: RatPoint,
     /// Its skeleton's index in [`Decomposition::skeletons`] (= its class).
     pub class: usize,
     /// The map vertex that is its skeleton's origin v0: with `class`, the
@@ -228,9 +231,8 @@ impl<'m> Decomposition<'m> {
         let mut reps: Vec<Option<RatPoint>> = vec![None; arrangement.face_count()];
         let mut sizes = Vec::with_capacity(total);
         for &f in &cells {
-            let vs = arrangement.face_vertices(f);
-            sizes.push(vs.len());
-            reps[f] = Some(interior_point(&arrangement, &vs));
+            sizes.push(arrangement.face_half_edges(f).len());
+            reps[f] = Some(interior_point(&arrangement, f));
         }
         let mut walker = Walker::new(map, &arrangement, &index);
         let walked = walker.walk(&reps, &mut |done| {
@@ -238,14 +240,14 @@ impl<'m> Decomposition<'m> {
                 progress(done, all);
             }
         });
-        let mut table = ClassTable::default();
+        let mut table = ClassTable::new(map);
         let mut representatives = Vec::with_capacity(total);
         let mut skeleton_index = Vec::with_capacity(total);
         let mut origins: Vec<usize> = Vec::with_capacity(total);
         for (i, &f) in cells.iter().enumerate() {
             let sk = walked[f].as_ref().expect("every cell is walked");
             origins.push(sk.origin());
-            let class = table.intern(sk.key(map));
+            let class = table.intern(sk);
             table.classes[class].push(f);
             table.complexity[class] += 2 * sizes[i];
             representatives.push(reps[f].take().expect("a cell"));
@@ -255,28 +257,38 @@ impl<'m> Decomposition<'m> {
         // Cells of dimension 1 and 0, each with its skeleton, absorbed by an
         // adjacent 2-cell with the same skeleton in the same embedding.
         let mut lower: Vec<LowerCell> = Vec::new();
-        walker.lower(&walked, &mut |site, rep, faces, sk| {
+        walker.lower(&walked, &mut |site, faces, sk| {
             let done = total + lower.len() + 1;
             if done.is_multiple_of(step) && done < all {
                 progress(done, all);
             }
-            // Most are absorbed: equal compact skeletons are equal
-            // skeletons in the same embedding, and need no class lookup.
-            let same = faces
-                .iter()
-                .copied()
-                .find(|&f| walked[f].as_ref().is_some_and(|w| *w == sk));
-            let (class, absorbed_by) = match same {
-                Some(f) => (skeleton_index[position[f]], Some(f)),
-                None => {
-                    let class = table.intern(sk.key(map));
-                    // Collinear map edges make the converse need the key.
-                    let by = faces.iter().copied().find(|&f| {
-                        position[f] != NOT_A_CELL
-                            && skeleton_index[position[f]] == class
-                            && origins[position[f]] == sk.origin()
-                    });
-                    (class, by)
+            let (class, origin, absorbed_by) = match sk {
+                LowerSkeleton::Face(f) => {
+                    let i = position[f];
+                    (skeleton_index[i], origins[i], Some(f))
+                }
+                LowerSkeleton::Own(sk) => {
+                    // Equal compact skeletons are equal skeletons in the
+                    // same embedding, and need no class lookup.
+                    let same = faces
+                        .iter()
+                        .copied()
+                        .find(|&f| walked[f].as_ref().is_some_and(|w| *w == sk));
+                    let origin = sk.origin();
+                    match same {
+                        Some(f) => (skeleton_index[position[f]], origin, Some(f)),
+                        None => {
+                            let class = table.intern(&sk);
+                            // Collinear map edges make the converse need
+                            // the class.
+                            let by = faces.iter().copied().find(|&f| {
+                                position[f] != NOT_A_CELL
+                                    && skeleton_index[position[f]] == class
+                                    && origins[position[f]] == origin
+                            });
+                            (class, origin, by)
+                        }
+                    }
                 }
             };
             if absorbed_by.is_none() {
@@ -284,9 +296,8 @@ impl<'m> Decomposition<'m> {
             }
             lower.push(LowerCell {
                 site,
-                representative: rep,
                 class,
-                origin: sk.origin(),
+                origin,
                 absorbed_by,
             });
         });
@@ -303,7 +314,8 @@ impl<'m> Decomposition<'m> {
             representatives,
             skeleton_index,
             origins,
-            skeletons: table.skeletons,
+            class_skeletons: table.skeletons,
+            skeletons: OnceLock::new(),
             classes: table.classes,
             class_complexity: table.complexity,
             lower,
@@ -381,9 +393,37 @@ impl<'m> Decomposition<'m> {
         self.origins[self.pos(cell)]
     }
 
-    /// The distinct skeleton keys, one per class, in class order.
+    /// The distinct skeleton keys, one per class, in class order. Built
+    /// on the first call (classes are told apart without them).
     pub fn skeletons(&self) -> &[SkeletonKey] {
-        &self.skeletons
+        self.skeletons.get_or_init(|| {
+            self.class_skeletons
+                .iter()
+                .map(|c| c.key(self.map))
+                .collect()
+        })
+    }
+
+    /// The key of class `class`'s skeleton, built alone (see
+    /// [`Decomposition::skeletons`] for all of them).
+    pub fn skeleton_key(&self, class: usize) -> SkeletonKey {
+        match self.skeletons.get() {
+            Some(keys) => keys[class].clone(),
+            None => self.class_skeletons[class].key(self.map),
+        }
+    }
+
+    /// An exact point of a 1- or 0-cell: the edge's midpoint, or the
+    /// vertex (where its skeleton was computed).
+    pub fn lower_representative(&self, cell: &LowerCell) -> RatPoint {
+        let arr = &self.arrangement;
+        match cell.site {
+            LowerSite::Edge(e) => RatPoint::midpoint(
+                arr.point(arr.half_edge(2 * e).origin),
+                arr.point(arr.dest(2 * e)),
+            ),
+            LowerSite::Vertex(v) => arr.point(v).clone(),
+        }
     }
 
     /// The equivalence classes (Def 3.10): `classes()[i]` are the 2-cells
@@ -450,14 +490,18 @@ impl<'m> Decomposition<'m> {
     }
 }
 
-/// The classes as they are found: one row per distinct skeleton key, in
-/// the order first seen.
-#[derive(Default)]
-struct ClassTable {
-    /// Classes by the hash of their key (each key is stored once, in
-    /// `skeletons`; equal hashes are told apart by comparing keys).
+/// The classes as they are found: one row per distinct skeleton, in the
+/// order first seen. Skeletons are compared as compact skeletons up to
+/// translation ([`Compact::same_skeleton`]), which is comparing keys
+/// without building them.
+struct ClassTable<'m> {
+    map: &'m Map,
+    lines: EdgeLines,
+    /// Classes by the hash of their skeleton (equal hashes are told apart
+    /// by comparing skeletons).
     by_hash: FxHashMap<u64, Vec<usize>>,
-    skeletons: Vec<SkeletonKey>,
+    /// By class: the compact skeleton of its first cell.
+    skeletons: Vec<Compact>,
     /// By class: its 2-cells.
     classes: Vec<Vec<FaceId>>,
     /// By class: |EC| of its 2-cells.
@@ -466,18 +510,33 @@ struct ClassTable {
     lower: Vec<Vec<usize>>,
 }
 
-impl ClassTable {
-    /// The class of `key`, a new empty one if it was not seen before.
-    fn intern(&mut self, key: SkeletonKey) -> usize {
-        use std::hash::{BuildHasher, BuildHasherDefault};
-        let h = BuildHasherDefault::<FxHasher>::default().hash_one(&key);
+impl<'m> ClassTable<'m> {
+    fn new(map: &'m Map) -> ClassTable<'m> {
+        ClassTable {
+            map,
+            lines: EdgeLines::new(map),
+            by_hash: FxHashMap::default(),
+            skeletons: Vec::new(),
+            classes: Vec::new(),
+            complexity: Vec::new(),
+            lower: Vec::new(),
+        }
+    }
+
+    /// The class of skeleton `sk`, a new empty one if it was not seen
+    /// before.
+    fn intern(&mut self, sk: &Compact) -> usize {
+        let h = sk.class_hash(self.map, &self.lines);
         let bucket = self.by_hash.entry(h).or_default();
-        if let Some(&c) = bucket.iter().find(|&&c| self.skeletons[c] == key) {
+        if let Some(&c) = bucket
+            .iter()
+            .find(|&&c| self.skeletons[c].same_skeleton(sk, self.map, &self.lines))
+        {
             return c;
         }
         let c = self.skeletons.len();
         bucket.push(c);
-        self.skeletons.push(key);
+        self.skeletons.push(sk.clone());
         self.classes.push(Vec::new());
         self.complexity.push(0);
         self.lower.push(Vec::new());
@@ -485,20 +544,43 @@ impl ClassTable {
     }
 }
 
-/// The centroid of three non-collinear vertices of a convex face given by
-/// its vertex ids `vs` (counter-clockwise): an interior point.
-fn interior_point(arr: &Arrangement, vs: &[usize]) -> RatPoint {
-    let (a, b) = (arr.point(vs[0]), arr.point(vs[1]));
-    let c = vs[2..]
-        .iter()
-        .map(|&v| arr.point(v))
-        .find(|c| orientation_rat(a, b, c) != Orientation::Collinear)
+/// The centroid of three non-collinear vertices of the convex face `f`:
+/// an interior point. The three are the ends of two consecutive boundary
+/// edges that turn (their directions are not parallel), so no
+/// orientation test on rational points is needed.
+fn interior_point(arr: &Arrangement, f: FaceId) -> RatPoint {
+    let hs = arr.face_half_edges(f);
+    let k = hs.len();
+    let i = (0..k)
+        .find(|&i| {
+            cross_sign(arr.direction(hs[i]), arr.direction(hs[(i + 1) % k])) != Ordering::Equal
+        })
         .expect("a cell has three non-collinear vertices");
-    centroid3(a, b, c)
+    let at = |j: usize| arr.point(arr.half_edge(hs[j % k]).origin);
+    centroid3(at(i), at(i + 1), at(i + 2))
 }
 
-/// `(a + b + c) / 3`, exactly.
+/// `(a + b + c) / 3`, exactly (checked `i128` first, GMP on overflow).
 fn centroid3(a: &RatPoint, b: &RatPoint, c: &RatPoint) -> RatPoint {
+    let small = |p: &RatPoint| Some((p.hx().to_i128()?, p.hy().to_i128()?, p.hw().to_i128()?));
+    let fast = || -> Option<RatPoint> {
+        let ((ax, ay, aw), (bx, by, bw), (cx, cy, cw)) = (small(a)?, small(b)?, small(c)?);
+        let (bc, ac, ab) = (
+            bw.checked_mul(cw)?,
+            aw.checked_mul(cw)?,
+            aw.checked_mul(bw)?,
+        );
+        let sum = |u: i128, v: i128, w: i128| -> Option<i128> {
+            u.checked_mul(bc)?
+                .checked_add(v.checked_mul(ac)?)?
+                .checked_add(w.checked_mul(ab)?)
+        };
+        let w = aw.checked_mul(bc)?.checked_mul(3)?;
+        RatPoint::from_i128(sum(ax, bx, cx)?, sum(ay, by, cy)?, w)
+    };
+    if let Some(p) = fast() {
+        return p;
+    }
     let (aw, bw, cw) = (a.hw(), b.hw(), c.hw());
     let bc = Integer::from(bw * cw);
     let ac = Integer::from(aw * cw);

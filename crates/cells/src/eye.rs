@@ -77,7 +77,9 @@ pub(crate) fn angle_cmp(base: &Dir, u: &Dir, v: &Dir) -> Ordering {
     half(u).cmp(&half(v)).then_with(|| v.cross(u))
 }
 
-/// A rational viewpoint q = (X, Y) / W, for signs against map vertices.
+/// A rational viewpoint q = (X, Y) / W, for signs against map vertices
+/// (any W > 0: not necessarily in lowest terms).
+#[derive(Debug)]
 pub(crate) enum Eye {
     Small { x: i128, y: i128, w: i128 },
     Big { x: Integer, y: Integer, w: Integer },
@@ -93,6 +95,21 @@ impl Eye {
                 w: q.hw().clone(),
             },
         }
+    }
+
+    /// The midpoint of `a` and `b`, without reducing it (checked `i128`
+    /// first, GMP on overflow).
+    pub(crate) fn midpoint(a: &RatPoint, b: &RatPoint) -> Eye {
+        let small = |p: &RatPoint| Some((p.hx().to_i128()?, p.hy().to_i128()?, p.hw().to_i128()?));
+        let fast = || -> Option<Eye> {
+            let ((ax, ay, aw), (bx, by, bw)) = (small(a)?, small(b)?);
+            Some(Eye::Small {
+                x: ax.checked_mul(bw)?.checked_add(bx.checked_mul(aw)?)?,
+                y: ay.checked_mul(bw)?.checked_add(by.checked_mul(aw)?)?,
+                w: aw.checked_mul(bw)?.checked_mul(2)?,
+            })
+        };
+        fast().unwrap_or_else(|| Eye::new(&RatPoint::midpoint(a, b)))
     }
 
     /// The direction from q to the map vertex `a`, scaled by W > 0.

@@ -31,12 +31,12 @@
 //! dimension of the test maps, and the T3.3b checker compares the two on
 //! every cell of every stress map.
 
-use crate::arrangement::{Arrangement, FaceId, Support, VertexId};
+use crate::arrangement::{Arrangement, FaceId, Support};
 use crate::decomposition::LowerSite;
 use crate::eye::{angle_cmp, dir, Eye};
-use crate::fx::FxHashMap;
+use crate::fx::{FxHashMap, FxHasher};
 use crate::line_view::{Beside, LineView};
-use rug::Rational;
+use rug::Integer;
 use std::collections::{HashMap, VecDeque};
 use wai_exact::{Orientation, Point, RatPoint};
 use wai_map::Map;
@@ -89,9 +89,154 @@ impl Compact {
     }
 }
 
-/// Receives each 1- or 0-cell: where it is, its point, the 2-cells next
-/// to it and its skeleton.
-pub(crate) type LowerSink<'s> = dyn FnMut(LowerSite, RatPoint, &[FaceId], Compact) + 's;
+/// An integer that is usually small: normalised, so equal values are
+/// equal and hash alike whichever way they were computed.
+#[derive(Clone, Debug, PartialEq, Eq, Hash)]
+enum Wide {
+    Small(i128),
+    Big(Integer),
+}
+
+impl Wide {
+    fn of(x: Integer) -> Wide {
+        match x.to_i128() {
+            Some(v) => Wide::Small(v),
+            None => Wide::Big(x),
+        }
+    }
+}
+
+/// The lines of the map's edges in a form that translates cheaply, for
+/// telling skeletons apart without building their [`SkeletonKey`]s: the
+/// line a·x + b·y = c with (a, b) primitive and sign-normalised (a > 0,
+/// or a = 0 and b > 0), which is unique for the line, as the key's
+/// [`LineLabel`] is (that one is also reduced by the gcd with c).
+pub(crate) struct EdgeLines {
+    /// By map edge: (a, b, c), c also as an `i128` if it fits.
+    by_edge: Vec<(i128, i128, Integer, Option<i128>)>,
+    /// By map edge: (a, b, c mod 2^128), for hashing.
+    wrapping: Vec<(i128, i128, i128)>,
+}
+
+impl EdgeLines {
+    pub(crate) fn new(map: &Map) -> EdgeLines {
+        let v = map.vertices();
+        let n = v.len();
+        let by_edge: Vec<(i128, i128, Integer, Option<i128>)> = (0..n)
+            .map(|i| {
+                let (p, q) = (v[i], v[(i + 1) % n]);
+                // Differences of coordinates below 2^MAX_COORD_BITS fit.
+                let (mut a, mut b) = (q.y - p.y, p.x - q.x);
+                let g = gcd(a.unsigned_abs(), b.unsigned_abs()) as i128;
+                (a, b) = (a / g, b / g);
+                if a < 0 || (a == 0 && b < 0) {
+                    (a, b) = (-a, -b);
+                }
+                let c = Integer::from(a) * p.x + Integer::from(b) * p.y;
+                let small = c.to_i128();
+                (a, b, c, small)
+            })
+            .collect();
+        let wrapping = by_edge
+            .iter()
+            .map(|(a, b, c, _)| (*a, *b, c.to_i128_wrapping()))
+            .collect();
+        EdgeLines { by_edge, wrapping }
+    }
+
+    /// A hash of edge e's line relative to `o`: (a, b, c − a·o.x − b·o.y)
+    /// modulo 2^128, mixed into one value. Arithmetic modulo 2^128 is a
+    /// ring homomorphism, so equal lines give equal values however large.
+    fn relative_wrapping(&self, e: u32, o: Point) -> i128 {
+        let (a, b, c) = self.wrapping[e as usize];
+        let c = c
+            .wrapping_sub(a.wrapping_mul(o.x))
+            .wrapping_sub(b.wrapping_mul(o.y));
+        c ^ a.wrapping_mul(0x9e37_79b9_7f4a_7c15) ^ b.rotate_left(32)
+    }
+
+    /// Edge e's line relative to `o`: (a, b, c − a·o.x − b·o.y).
+    fn relative(&self, e: u32, o: Point) -> (i128, i128, Wide) {
+        let (a, b, c, small) = &self.by_edge[e as usize];
+        let fast = small.and_then(|c| {
+            c.checked_sub(a.checked_mul(o.x)?)?
+                .checked_sub(b.checked_mul(o.y)?)
+        });
+        let c = match fast {
+            Some(c) => Wide::Small(c),
+            None => Wide::of((c - Integer::from(*a) * o.x) - Integer::from(*b) * o.y),
+        };
+        (*a, *b, c)
+    }
+}
+
+fn gcd(mut x: u128, mut y: u128) -> u128 {
+    while y != 0 {
+        (x, y) = (y, x % y);
+    }
+    x
+}
+
+impl Compact {
+    /// A hash of the skeleton up to translation: equal for compact
+    /// skeletons whose keys are equal ([`Compact::same_skeleton`]).
+    pub(crate) fn class_hash(&self, map: &Map, lines: &EdgeLines) -> u64 {
+        use std::hash::Hasher;
+        let v = map.vertices();
+        let o = v[self.origin()];
+        let mut h = FxHasher::default();
+        // One word per vertex and per edge: the hash only sorts skeletons
+        // into buckets, [`Compact::same_skeleton`] decides.
+        h.write_usize(self.vertices.len());
+        for &u in &self.vertices {
+            // Below 2^(MAX_COORD_BITS + 1): no overflow.
+            let p = v[u as usize];
+            h.write_u64((p.x - o.x) as u64 ^ ((p.y - o.y) as u64).rotate_left(32));
+        }
+        for e in &self.edges {
+            match e {
+                None => h.write_u8(0),
+                Some(e) => h.write_u64(lines.relative_wrapping(*e, o) as u64),
+            }
+        }
+        h.finish()
+    }
+
+    /// Whether two compact skeletons are one skeleton, i.e. have equal
+    /// keys: the same vertex offsets from their origins, and artificial
+    /// edges on the same lines relative to them.
+    pub(crate) fn same_skeleton(&self, other: &Compact, map: &Map, lines: &EdgeLines) -> bool {
+        let v = map.vertices();
+        let (o, p) = (v[self.origin()], v[other.origin()]);
+        self.vertices.len() == other.vertices.len()
+            && self.vertices.iter().zip(&other.vertices).all(|(&x, &y)| {
+                let (x, y) = (v[x as usize], v[y as usize]);
+                x.x - o.x == y.x - p.x && x.y - o.y == y.y - p.y
+            })
+            && self
+                .edges
+                .iter()
+                .zip(&other.edges)
+                .all(|(e, f)| match (e, f) {
+                    (None, None) => true,
+                    (Some(e), Some(f)) => lines.relative(*e, o) == lines.relative(*f, p),
+                    _ => false,
+                })
+    }
+}
+
+/// The skeleton of a 1- or 0-cell.
+pub(crate) enum LowerSkeleton {
+    /// That of the adjacent 2-cell, in the same embedding: the compact
+    /// skeletons are equal.
+    Face(FaceId),
+    /// Its own, which may still equal an adjacent 2-cell's.
+    Own(Compact),
+}
+
+/// Receives each 1- or 0-cell: where it is, the 2-cells next to it and its
+/// skeleton.
+pub(crate) type LowerSink<'s> = dyn FnMut(LowerSite, &[FaceId], LowerSkeleton) + 's;
 
 /// The skeletons of all cells of an arrangement, by walking it.
 pub(crate) struct Walker<'a> {
@@ -100,6 +245,9 @@ pub(crate) struct Walker<'a> {
     index: &'a VisibilityIndex<'a>,
     /// By ray group.
     lines: Vec<LineView>,
+    /// By arrangement edge on rays: its slot on its line
+    /// ([`LineView::slot`]); `u32::MAX` for map edges.
+    edge_slot: Vec<u32>,
     /// By map edge: the id of its line.
     edge_line: Vec<u32>,
     /// Views from map vertices, computed when first needed.
@@ -108,6 +256,8 @@ pub(crate) struct Walker<'a> {
     reflex: Vec<bool>,
     /// By face id, after the walk: Vis of each cell (ascending map ids).
     vis: Vec<Option<Vec<u32>>>,
+    /// Buffers reused from lower cell to lower cell.
+    scratch: (Vec<u32>, Vec<u32>),
 }
 
 impl<'a> Walker<'a> {
@@ -116,6 +266,22 @@ impl<'a> Walker<'a> {
             .ray_groups()
             .iter()
             .map(|g| LineView::new(map, arr.rays()[g.rays[0]].source(), g.dir))
+            .collect::<Vec<LineView>>();
+        let edge_slot = (0..arr.edge_count())
+            .map(|e| {
+                let Support::Rays(g) = arr.edge_support(e) else {
+                    return u32::MAX;
+                };
+                let l = &lines[g];
+                let (a, b) = (arr.half_edge(2 * e).origin, arr.dest(2 * e));
+                let slot = l.slot(&l.position_of(arr.point(a)));
+                debug_assert_eq!(
+                    slot,
+                    l.slot_before(&l.position_of(arr.point(b))),
+                    "an event strictly inside arrangement edge {e}"
+                );
+                u32::try_from(slot).expect("fewer than 2^32 events on a line")
+            })
             .collect();
         let v = map.vertices();
         let n = v.len();
@@ -133,9 +299,11 @@ impl<'a> Walker<'a> {
             arr,
             index,
             lines,
+            edge_slot,
             edge_line,
             views: FxHashMap::default(),
             vis: Vec::new(),
+            scratch: (Vec::new(), Vec::new()),
             reflex: (0..n).map(|i| map.is_reflex(i)).collect(),
         }
     }
@@ -164,17 +332,18 @@ impl<'a> Walker<'a> {
             vis[start] = Some(self.queried(rep));
             queue.push_back(start);
             while let Some(f) = queue.pop_front() {
-                let here = vis[f].clone().expect("queued faces have Vis");
-                faces[f] = Some(self.compact(&here, reps[f].as_ref().expect("a cell")));
+                let here = vis[f].take().expect("queued faces have Vis");
+                let eye = Eye::new(reps[f].as_ref().expect("a cell"));
+                faces[f] = Some(self.compact(&here, &eye));
                 done += 1;
                 progress(done);
-                for h in arr.face_half_edges(f) {
+                for h in arr.face_cycle(f) {
                     let Support::Rays(g) = arr.edge_support(h / 2) else {
                         continue;
                     };
                     let t = arr.half_edge(h).twin;
                     let other = arr.half_edge(t).face;
-                    if other == arr.outer_face() || vis[other].is_some() {
+                    if other == arr.outer_face() || other == f || vis[other].is_some() {
                         continue;
                     }
                     // Half-edge 2e runs along the group's direction, its
@@ -184,13 +353,11 @@ impl<'a> Walker<'a> {
                     } else {
                         Beside::Right
                     };
-                    let mid = RatPoint::midpoint(
-                        arr.point(arr.half_edge(h).origin),
-                        arr.point(arr.dest(h)),
-                    );
-                    vis[other] = Some(self.across(&here, &[g], &mid, Some(side)));
+                    let slot = self.edge_slot[h / 2];
+                    vis[other] = Some(self.across(&here, &[(g, slot)], Some(side)));
                     queue.push_back(other);
                 }
+                vis[f] = Some(here);
             }
         }
 
@@ -199,71 +366,61 @@ impl<'a> Walker<'a> {
     }
 
     /// After [`Walker::walk`]: the skeleton of every 1-cell (edge on a
-    /// ray, at its midpoint) by edge id, then of every 0-cell (vertex off
-    /// the map boundary) by vertex id, handed to `sink` one at a time with
-    /// its point and the 2-cells next to it.
+    /// ray) by edge id, then of every 0-cell (vertex off the map boundary)
+    /// by vertex id, handed to `sink` one at a time with the 2-cells next
+    /// to it.
     pub(crate) fn lower(&mut self, walked: &[Option<Compact>], sink: &mut LowerSink<'_>) {
         let arr = self.arr;
         for e in 0..arr.edge_count() {
             let Support::Rays(g) = arr.edge_support(e) else {
                 continue;
             };
-            let f = arr.half_edge(2 * e).face;
-            let mid = RatPoint::midpoint(
-                arr.point(arr.half_edge(2 * e).origin),
-                arr.point(arr.dest(2 * e)),
-            );
-            let faces = [f, arr.half_edge(2 * e + 1).face];
-            let sk = self.lower_skeleton(&faces, walked, &[g], &mid);
-            sink(LowerSite::Edge(e), mid, &faces, sk);
+            let faces = [arr.half_edge(2 * e).face, arr.half_edge(2 * e + 1).face];
+            let site = LowerSite::Edge(e);
+            let sk = self.lower_skeleton(site, &faces, walked, &[(g, self.edge_slot[e])]);
+            sink(site, &faces, sk);
         }
         for v in 0..arr.vertex_count() {
             if arr.is_on_map_boundary(v) {
                 continue;
             }
-            let groups = self.lines_through(v);
-            let p = arr.point(v).clone();
-            let faces = arr.faces_around(v);
-            let sk = self.lower_skeleton(&faces, walked, &groups, &p);
-            sink(LowerSite::Vertex(v), p, &faces, sk);
+            let out = arr.outgoing(v);
+            let faces: Vec<FaceId> = out.iter().map(|&h| arr.half_edge(h).face).collect();
+            let site = LowerSite::Vertex(v);
+            let lines = self.lines_through(&out);
+            let sk = self.lower_skeleton(site, &faces, walked, &lines);
+            sink(site, &faces, sk);
         }
     }
 
-    /// The ray groups through the interior vertex `v`.
-    fn lines_through(&self, v: VertexId) -> Vec<usize> {
+    /// The ray groups through an interior vertex with outgoing half-edges
+    /// `out`, each with the vertex's slot on it. The vertex is no event of
+    /// the line, so it shares the slot of the edges on the line next to it.
+    fn lines_through(&self, out: &[usize]) -> Vec<(usize, u32)> {
         let arr = self.arr;
-        let out = arr.outgoing(v);
-        let mut groups: Vec<usize> = out
+        let mut lines: Vec<(usize, u32)> = out
             .iter()
             .filter_map(|&h| match arr.edge_support(h / 2) {
-                Support::Rays(g) => Some(g),
+                Support::Rays(g) => Some((g, self.edge_slot[h / 2])),
                 Support::MapEdge(_) => None,
             })
             .collect();
-        groups.sort_unstable();
-        groups.dedup();
-        groups
+        lines.sort_unstable();
+        lines.dedup_by_key(|l| l.0);
+        lines
     }
 
-    /// Vis at q, on the lines `groups` (or beside the one line, on
-    /// `beside`), from Vis of a 2-cell next to q: unchanged off the lines,
-    /// recomputed on them.
-    fn across(
-        &self,
-        base: &[u32],
-        groups: &[usize],
-        q: &RatPoint,
-        beside: Option<Beside>,
-    ) -> Vec<u32> {
+    /// Vis at a point q on the lines `lines` (ray group and q's slot on
+    /// it), or beside the one line on side `beside`, from Vis of a 2-cell
+    /// next to q: unchanged off the lines, recomputed on them.
+    fn across(&self, base: &[u32], lines: &[(usize, u32)], beside: Option<Beside>) -> Vec<u32> {
         let mut out: Vec<u32> = base
             .iter()
             .copied()
-            .filter(|&u| groups.iter().all(|&g| !self.lines[g].contains(u)))
+            .filter(|&u| lines.iter().all(|&(g, _)| !self.lines[g].contains(u)))
             .collect();
-        for &g in groups {
-            let l = &self.lines[g];
-            let t: Rational = l.position_of(q);
-            l.seen_from(&t, beside, &mut out);
+        for &(g, slot) in lines {
+            self.lines[g].seen_in(slot as usize, beside, &mut out);
         }
         out.sort_unstable();
         out.dedup();
@@ -283,16 +440,15 @@ impl<'a> Walker<'a> {
     }
 
     /// The compact skeleton of q from Vis(q) (ascending map ids).
-    fn compact(&mut self, vis: &[u32], q: &RatPoint) -> Compact {
+    fn compact(&mut self, vis: &[u32], eye: &Eye) -> Compact {
         let map = self.map;
         let v = map.vertices();
         let k = vis.len();
-        assert!(k > 0, "a point of the interior sees a map vertex ({q})");
-        let eye = Eye::new(q);
+        assert!(k > 0, "a point of the interior sees a map vertex ({eye:?})");
         let mut edges: Vec<Option<u32>> = Vec::with_capacity(k);
         for s in 0..k {
             let (x, y) = (vis[s] as usize, vis[(s + 1) % k] as usize);
-            edges.push(self.gap(x, y, k, &eye, q));
+            edges.push(self.gap(x, y, k, eye));
         }
         // The origin: leftmost, then lowest, of the reflex vertices seen,
         // else of all seen.
@@ -322,7 +478,7 @@ impl<'a> Walker<'a> {
     /// The skeleton edge from x to the next vertex y that q sees (`k` of
     /// them): `None` if full, else the map edge the artificial edge lies on
     /// (cases 1–3 of the module documentation).
-    fn gap(&mut self, x: usize, y: usize, k: usize, eye: &Eye, q: &RatPoint) -> Option<u32> {
+    fn gap(&mut self, x: usize, y: usize, k: usize, eye: &Eye) -> Option<u32> {
         let v = self.map.vertices();
         let n = v.len();
         let e = if y == (x + 1) % n && k > 1 {
@@ -332,90 +488,141 @@ impl<'a> Walker<'a> {
         } else if eye.orientation(v[(y + n - 1) % n], v[y]) == Orientation::CounterClockwise {
             (y + n - 1) % n
         } else {
-            self.beyond(x, eye, q)
+            self.beyond(x, eye)
         };
         Some(e as u32)
     }
 
-    /// The skeleton at a point q of a 1- or 0-cell on the lines `groups`
-    /// that sees what the 2-cell with skeleton `face` sees: the same
-    /// vertices and origin, and the same artificial edges except where the
-    /// gap's ends lie on one of the lines. Elsewhere every test of
-    /// [`Walker::gap`] has the same sign at q as in the open 2-cell: a line
-    /// through a vertex x that q sees, on which q lies, is a ray line
-    /// through x (q on the extension of edge x, or on the line from a vertex
-    /// x sees through x), and the only ray lines through q are `groups`.
-    fn relabel(&mut self, face: &Compact, groups: &[usize], q: &RatPoint) -> Compact {
-        let on = |u: u32| groups.iter().any(|&g| self.lines[g].contains(u));
-        let k = face.vertices.len();
-        let touched: Vec<usize> = (0..k)
-            .filter(|&s| on(face.vertices[s]) || on(face.vertices[(s + 1) % k]))
-            .collect();
-        let mut out = face.clone();
-        if touched.is_empty() {
-            return out;
+    /// The point of a lower cell where its skeleton is computed: the
+    /// midpoint of an edge, the vertex itself.
+    fn site_eye(&self, site: LowerSite) -> Eye {
+        let arr = self.arr;
+        match site {
+            LowerSite::Edge(e) => Eye::midpoint(
+                arr.point(arr.half_edge(2 * e).origin),
+                arr.point(arr.dest(2 * e)),
+            ),
+            LowerSite::Vertex(v) => Eye::new(arr.point(v)),
         }
-        let eye = Eye::new(q);
+    }
+
+    /// The skeleton at the point q of a lower cell on `lines` that sees
+    /// what 2-cell `f` (skeleton `face`) sees: the same vertices and
+    /// origin, and the same artificial edges except where the gap's ends
+    /// lie on one of the lines. Elsewhere every test of [`Walker::gap`]
+    /// has the same sign at q as in the open 2-cell: a line through a
+    /// vertex x that q sees, on which q lies, is a ray line through x (q on
+    /// the extension of edge x, or on the line from a vertex x sees through
+    /// x), and the only ray lines through q are `lines`.
+    fn relabel(
+        &mut self,
+        f: FaceId,
+        face: &Compact,
+        lines: &[(usize, u32)],
+        site: LowerSite,
+    ) -> LowerSkeleton {
+        // The gaps at the vertices of the lines that f sees: found in f's
+        // Vis (ascending), which the skeleton's vertices are rotated from.
+        let k = face.vertices.len();
+        let vis = self.vis[f].as_deref().expect("a walked cell has Vis");
+        let at = |u: u32| vis.binary_search(&u).ok();
+        let shift = at(face.vertices[0]).expect("the origin is seen");
+        let mut touched: Vec<usize> = Vec::new();
+        for &(g, _) in lines {
+            for &u in self.lines[g].vertices() {
+                if let Some(j) = at(u) {
+                    let s = (j + k - shift) % k;
+                    touched.extend([s, (s + k - 1) % k]);
+                }
+            }
+        }
+        touched.sort_unstable();
+        touched.dedup();
+        if touched.is_empty() {
+            return LowerSkeleton::Face(f);
+        }
+        let eye = self.site_eye(site);
+        let mut changed: Vec<(usize, Option<u32>)> = Vec::new();
         for s in touched {
             let (x, y) = (
                 face.vertices[s] as usize,
                 face.vertices[(s + 1) % k] as usize,
             );
-            let e = self.gap(x, y, k, &eye, q);
+            let e = self.gap(x, y, k, &eye);
+            if e != face.edges[s] {
+                changed.push((s, e));
+            }
+        }
+        if changed.is_empty() {
+            return LowerSkeleton::Face(f);
+        }
+        let mut out = face.clone();
+        for (s, e) in changed {
             out.edges[s] = e;
             out.lines[s] = e.map(|e| self.edge_line[e as usize]);
         }
-        out
+        LowerSkeleton::Own(out)
     }
 
-    /// The skeleton at q of a 1- or 0-cell on the lines `groups`, next to
-    /// the 2-cells `faces` (all cells).
+    /// The skeleton of a 1- or 0-cell on `lines` (ray group and the cell's
+    /// slot on it), next to the 2-cells `faces` (all cells).
     ///
-    /// Off its lines q sees what its 2-cells see, so Vis(q) equals Vis of
-    /// 2-cell f exactly when the vertices f sees on the lines are those q
-    /// sees on them (the nearest each way): a test on the few vertices of
-    /// the lines, not on all of Vis. Then f's skeleton is relabelled;
-    /// otherwise Vis(q) is built and its skeleton computed.
+    /// Off its lines the cell sees what its 2-cells see, so its Vis equals
+    /// Vis of 2-cell f exactly when the vertices f sees on the lines are
+    /// those the cell sees on them (the nearest each way): a test on the
+    /// few vertices of the lines, not on all of Vis. Then f's skeleton is
+    /// relabelled; otherwise Vis is built and its skeleton computed.
     fn lower_skeleton(
         &mut self,
+        site: LowerSite,
         faces: &[FaceId],
         walked: &[Option<Compact>],
-        groups: &[usize],
-        q: &RatPoint,
-    ) -> Compact {
-        let mut near: Vec<u32> = Vec::new();
-        for &g in groups {
-            let l = &self.lines[g];
-            l.seen_from(&l.position_of(q), None, &mut near);
+        lines: &[(usize, u32)],
+    ) -> LowerSkeleton {
+        let mut near = std::mem::take(&mut self.scratch.0);
+        let mut seen_on = std::mem::take(&mut self.scratch.1);
+        near.clear();
+        for &(g, slot) in lines {
+            self.lines[g].seen_in(slot as usize, None, &mut near);
         }
         near.sort_unstable();
         near.dedup();
+        let mut same = None;
         for &f in faces {
-            if let (Some(vis), Some(sk)) = (&self.vis[f], &walked[f]) {
-                let mut seen_on: Vec<u32> = groups
-                    .iter()
-                    .flat_map(|&g| self.lines[g].vertices())
-                    .copied()
-                    .filter(|u| vis.binary_search(u).is_ok())
-                    .collect();
+            if let (Some(vis), Some(_)) = (&self.vis[f], &walked[f]) {
+                seen_on.clear();
+                seen_on.extend(
+                    lines
+                        .iter()
+                        .flat_map(|&(g, _)| self.lines[g].vertices())
+                        .copied()
+                        .filter(|u| vis.binary_search(u).is_ok()),
+                );
                 seen_on.sort_unstable();
+                seen_on.dedup();
                 if seen_on == near {
-                    let sk = sk.clone();
-                    return self.relabel(&sk, groups, q);
+                    same = Some(f);
+                    break;
                 }
             }
+        }
+        self.scratch = (near, seen_on);
+        if let Some(f) = same {
+            let sk = walked[f].as_ref().expect("checked above");
+            return self.relabel(f, sk, lines, site);
         }
         let base = self.vis[faces[0]]
             .take()
             .expect("the cells next to a lower cell are walked");
-        let seen = self.across(&base, groups, q, None);
+        let seen = self.across(&base, lines, None);
         self.vis[faces[0]] = Some(base);
-        self.compact(&seen, q)
+        let eye = self.site_eye(site);
+        LowerSkeleton::Own(self.compact(&seen, &eye))
     }
 
     /// The map edge the ray from q through x meets beyond x, taken just
     /// counter-clockwise of the ray.
-    fn beyond(&mut self, x: usize, eye: &Eye, q: &RatPoint) -> usize {
+    fn beyond(&mut self, x: usize, eye: &Eye) -> usize {
         let index = self.index;
         let view = self.views.entry(x).or_insert_with(|| index.vertex_view(x));
         let v = self.map.vertices();
@@ -427,7 +634,7 @@ impl<'a> Walker<'a> {
         });
         assert!(
             at > 0,
-            "the ray from {q} through map vertex {x} does not enter the map beyond it"
+            "the ray from {eye:?} through map vertex {x} does not enter the map beyond it"
         );
         view[at - 1].1
     }

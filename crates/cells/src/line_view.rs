@@ -6,6 +6,7 @@
 //! lies on lines through v). Those are found by walking along the line:
 //! this is the whole update of the incremental skeletons (sec. 3.9.2).
 
+use crate::arrangement::Along;
 use crate::eye::{angle_cmp, dir, Dir};
 use rug::{Integer, Rational};
 use std::cmp::Ordering;
@@ -44,7 +45,7 @@ enum Stretch {
 #[derive(Clone, Debug)]
 pub(crate) struct LineView {
     dir: (i128, i128),
-    events: Vec<(Rational, Event)>,
+    events: Vec<(Along, Event)>,
     /// `stretches[i]` lies between events `i` and `i + 1`.
     stretches: Vec<Stretch>,
     /// The map vertices on the line, ascending.
@@ -64,12 +65,12 @@ impl LineView {
         let ld = Dir::Small(d.0, d.1);
         let side = |p: Point| ld.cross(&dir(through, p));
         let sides: Vec<Ordering> = v.iter().map(|&p| side(p)).collect();
-        let mut events: Vec<(Rational, Event)> = Vec::new();
+        let mut events: Vec<(Along, Event)> = Vec::new();
         for (i, &p) in v.iter().enumerate() {
             if sides[i] == Ordering::Equal {
                 let nb = [sides[(i + n - 1) % n], sides[(i + 1) % n]];
                 events.push((
-                    position(p, d),
+                    Along::from_rational(position(p, d)),
                     Event::Vertex {
                         v: i as u32,
                         left: nb.contains(&Ordering::Greater),
@@ -86,10 +87,13 @@ impl LineView {
                 let cb = Integer::from(d.0) * (b.y - a.y) - Integer::from(d.1) * (b.x - a.x);
                 let along = Integer::from(b.x - a.x) * d.0 + Integer::from(b.y - a.y) * d.1;
                 let t = position(a, d) - Rational::from((ca * along, cb));
-                events.push((t, Event::Crossing));
+                events.push((Along::from_rational(t), Event::Crossing));
             }
         }
         events.sort_by(|a, b| a.0.cmp(&b.0));
+        debug_assert!(events
+            .windows(2)
+            .all(|w| w[0].0.cmp(&w[1].0) == Ordering::Less));
         let mut stretches = Vec::with_capacity(events.len().saturating_sub(1));
         let forward = Dir::Small(d.0, d.1);
         let backward = Dir::Small(-d.0, -d.1);
@@ -152,30 +156,39 @@ impl LineView {
     }
 
     /// The position along the line of a point on it.
-    pub(crate) fn position_of(&self, q: &RatPoint) -> Rational {
-        Rational::from((
-            Integer::from(q.hx() * self.dir.0) + Integer::from(q.hy() * self.dir.1),
-            q.hw().clone(),
-        ))
+    pub(crate) fn position_of(&self, q: &RatPoint) -> Along {
+        Along::of(self.dir, q)
+    }
+
+    /// The slot of a point of the line at position `t` that is not an
+    /// event: the number of events before it. Points in one open stretch
+    /// share a slot; points of an arrangement edge on the line do too,
+    /// since every event inside a ray's segment is an arrangement vertex.
+    pub(crate) fn slot(&self, t: &Along) -> usize {
+        self.events
+            .partition_point(|(s, _)| s.cmp(t) != Ordering::Greater)
+    }
+
+    /// The number of events strictly before position `t`.
+    pub(crate) fn slot_before(&self, t: &Along) -> usize {
+        self.events
+            .partition_point(|(s, _)| s.cmp(t) == Ordering::Less)
     }
 
     /// The map vertices on the line seen from a point of the interior of
-    /// the map at position `t` on the line (`beside = None`), or from
-    /// viewpoints just beside it on that side, pushed to `out`.
+    /// the map in slot `slot` ([`LineView::slot`]) (`beside = None`), or
+    /// from viewpoints just beside it on that side, pushed to `out`.
     ///
     /// On the line a viewpoint sees only the nearest vertex each way, if
     /// the stretch to it is interior (the open segment must avoid the
     /// boundary). Beside it, the view runs on past a vertex unless one of
     /// its edges leaves to that side, and along a map edge whose interior
     /// is on that side.
-    pub(crate) fn seen_from(&self, t: &Rational, beside: Option<Beside>, out: &mut Vec<u32>) {
-        let first_after = self.events.partition_point(|(s, _)| s <= t);
-        // Forward: events first_after, first_after + 1, ...
-        self.walk(first_after, true, beside, out);
-        // Backward: the last event before t.
-        let last_before = self.events.partition_point(|(s, _)| s < t);
-        if last_before > 0 {
-            self.walk(last_before - 1, false, beside, out);
+    pub(crate) fn seen_in(&self, slot: usize, beside: Option<Beside>, out: &mut Vec<u32>) {
+        // Forward: events slot, slot + 1, ...; backward: slot − 1, ...
+        self.walk(slot, true, beside, out);
+        if slot > 0 {
+            self.walk(slot - 1, false, beside, out);
         }
     }
 

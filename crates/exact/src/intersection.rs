@@ -9,7 +9,6 @@ use crate::line::Line;
 use crate::point::{fits_bits, Point, RatPoint};
 use crate::predicates::Side;
 use crate::reference;
-use rug::Integer;
 use std::cmp::Ordering;
 
 /// Input coordinates below `2^INTERSECTION_FAST_BITS` in magnitude take the
@@ -42,20 +41,24 @@ fn cross(ux: i128, uy: i128, vx: i128, vy: i128) -> i128 {
 /// The meeting point of `l1` and `l2`; `None` if they are parallel
 /// (including equal).
 pub fn construct_intersection(l1: &Line, l2: &Line) -> Option<RatPoint> {
+    // Checked i128 first: exact by construction (any overflow takes the
+    // GMP path of `reference`), so no bit bound is assumed.
     let (a1, b1, a2, b2) = (l1.a(), l1.b(), l2.a(), l2.b());
-    let big = |v: i128| Integer::from(v);
-    let (d1x, d1y) = (big(b1.x) - a1.x, big(b1.y) - a1.y);
-    let (d2x, d2y) = (big(b2.x) - a2.x, big(b2.y) - a2.y);
-    let den = Integer::from(&d1x * &d2y) - Integer::from(&d1y * &d2x);
-    if den == 0 {
-        return None;
-    }
-    let (ex, ey) = (big(a2.x) - a1.x, big(a2.y) - a1.y);
-    let num = ex * &d2y - ey * &d2x;
-    // a1 + (num / den) · d1, in homogeneous form over den.
-    let x = Integer::from(&den * a1.x) + Integer::from(&num * &d1x);
-    let y = Integer::from(&den * a1.y) + Integer::from(&num * &d1y);
-    RatPoint::new(x, y, den)
+    let fast = || -> Option<Option<RatPoint>> {
+        let (d1x, d1y) = (b1.x.checked_sub(a1.x)?, b1.y.checked_sub(a1.y)?);
+        let (d2x, d2y) = (b2.x.checked_sub(a2.x)?, b2.y.checked_sub(a2.y)?);
+        let den = d1x.checked_mul(d2y)?.checked_sub(d1y.checked_mul(d2x)?)?;
+        if den == 0 {
+            return Some(None);
+        }
+        let (ex, ey) = (a2.x.checked_sub(a1.x)?, a2.y.checked_sub(a1.y)?);
+        let num = ex.checked_mul(d2y)?.checked_sub(ey.checked_mul(d2x)?)?;
+        // a1 + (num / den) · d1, in homogeneous form over den.
+        let x = den.checked_mul(a1.x)?.checked_add(num.checked_mul(d1x)?)?;
+        let y = den.checked_mul(a1.y)?.checked_add(num.checked_mul(d1y)?)?;
+        Some(RatPoint::from_i128(x, y, den))
+    };
+    fast().unwrap_or_else(|| reference::construct_intersection(l1, l2))
 }
 
 /// The side of the directed line `l3` on which the meeting point of `l1` and

@@ -85,6 +85,35 @@ impl RatPoint {
         Some(p)
     }
 
+    /// [`RatPoint::new`] from `i128` values, reduced in `i128` (GMP only
+    /// if a sign change overflows); `None` if `w == 0`.
+    pub fn from_i128(x: i128, y: i128, w: i128) -> Option<Self> {
+        if w == 0 {
+            return None;
+        }
+        let g = gcd_u128(
+            gcd_u128(x.unsigned_abs(), y.unsigned_abs()),
+            w.unsigned_abs(),
+        );
+        // g ≥ 1 divides |w| ≤ 2^127, so the quotients fit unless g = 1 and
+        // a value is i128::MIN, which only a negation below can hit.
+        let (mut x, mut y, mut w) = match i128::try_from(g) {
+            Ok(g) => (x / g, y / g, w / g),
+            Err(_) => return RatPoint::new(Integer::from(x), Integer::from(y), Integer::from(w)),
+        };
+        if w < 0 {
+            match (x.checked_neg(), y.checked_neg(), w.checked_neg()) {
+                (Some(a), Some(b), Some(c)) => (x, y, w) = (a, b, c),
+                _ => return RatPoint::new(Integer::from(x), Integer::from(y), Integer::from(w)),
+            }
+        }
+        Some(RatPoint {
+            x: Integer::from(x),
+            y: Integer::from(y),
+            w: Integer::from(w),
+        })
+    }
+
     pub fn from_point(p: Point) -> Self {
         RatPoint {
             x: Integer::from(p.x),
@@ -116,6 +145,19 @@ impl RatPoint {
 
     /// The midpoint of `a` and `b`, exactly.
     pub fn midpoint(a: &RatPoint, b: &RatPoint) -> RatPoint {
+        // Checked i128 first (exact: overflow takes the GMP path).
+        let small = |v: &Integer| v.to_i128();
+        let fast = || -> Option<RatPoint> {
+            let (ax, ay, aw) = (small(&a.x)?, small(&a.y)?, small(&a.w)?);
+            let (bx, by, bw) = (small(&b.x)?, small(&b.y)?, small(&b.w)?);
+            let x = ax.checked_mul(bw)?.checked_add(bx.checked_mul(aw)?)?;
+            let y = ay.checked_mul(bw)?.checked_add(by.checked_mul(aw)?)?;
+            let w = aw.checked_mul(bw)?.checked_mul(2)?;
+            RatPoint::from_i128(x, y, w)
+        };
+        if let Some(m) = fast() {
+            return m;
+        }
         let x = Integer::from(&a.x * &b.w) + Integer::from(&b.x * &a.w);
         let y = Integer::from(&a.y * &b.w) + Integer::from(&b.y * &a.w);
         let w = Integer::from(&a.w * &b.w) * 2u32;
@@ -141,5 +183,52 @@ impl fmt::Display for RatPoint {
             }
         };
         write!(f, "({}, {})", show(&self.x), show(&self.y))
+    }
+}
+
+/// Binary gcd (Stein): shifts and subtractions, no 128-bit division.
+fn gcd_u128(mut x: u128, mut y: u128) -> u128 {
+    if let (Ok(a), Ok(b)) = (u64::try_from(x), u64::try_from(y)) {
+        return u128::from(gcd_u64(a, b));
+    }
+    if x == 0 {
+        return y;
+    }
+    if y == 0 {
+        return x;
+    }
+    let shift = (x | y).trailing_zeros();
+    x >>= x.trailing_zeros();
+    loop {
+        y >>= y.trailing_zeros();
+        if x > y {
+            std::mem::swap(&mut x, &mut y);
+        }
+        y -= x;
+        if y == 0 {
+            return x << shift;
+        }
+    }
+}
+
+/// [`gcd_u128`] on 64 bits.
+fn gcd_u64(mut x: u64, mut y: u64) -> u64 {
+    if x == 0 {
+        return y;
+    }
+    if y == 0 {
+        return x;
+    }
+    let shift = (x | y).trailing_zeros();
+    x >>= x.trailing_zeros();
+    loop {
+        y >>= y.trailing_zeros();
+        if x > y {
+            std::mem::swap(&mut x, &mut y);
+        }
+        y -= x;
+        if y == 0 {
+            return x << shift;
+        }
     }
 }

@@ -5,7 +5,7 @@
 //! two on random and adversarial inputs at and beyond the bounds.
 
 use crate::line::Line;
-use crate::point::Point;
+use crate::point::{Point, RatPoint};
 use crate::predicates::{Orientation, Side};
 use rug::Integer;
 use std::cmp::Ordering;
@@ -71,4 +71,21 @@ pub fn compare_intersections_along(l0: &Line, l1: &Line, l2: &Line) -> Option<Or
     let s = n1 * e2 - n2 * e1;
     let ord = s.cmp0();
     Some(if flip { ord.reverse() } else { ord })
+}
+
+/// [`crate::construct_intersection`] on GMP integers.
+pub fn construct_intersection(l1: &Line, l2: &Line) -> Option<RatPoint> {
+    let (a1, b1, a2, b2) = (l1.a(), l1.b(), l2.a(), l2.b());
+    let (d1x, d1y) = diff(b1, a1);
+    let (d2x, d2y) = diff(b2, a2);
+    let den = cross(&d1x, &d1y, &d2x, &d2y);
+    if den == 0 {
+        return None;
+    }
+    let (ex, ey) = diff(a2, a1);
+    let num = cross(&ex, &ey, &d2x, &d2y);
+    // a1 + (num / den) · d1, in homogeneous form over den.
+    let x = Integer::from(&den * a1.x) + Integer::from(&num * &d1x);
+    let y = Integer::from(&den * a1.y) + Integer::from(&num * &d1y);
+    RatPoint::new(x, y, den)
 }

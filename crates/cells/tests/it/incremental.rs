@@ -33,8 +33,9 @@ pub fn compare(map: &Map) -> Result<usize, String> {
     }
     for c in d.lower_cells() {
         let walked = (v[c.origin], d.skeletons()[c.class].clone());
-        if fresh(&c.representative) != walked {
-            return Err(format!("{:?} at {}", c.site, c.representative));
+        let at = d.lower_representative(c);
+        if fresh(&at) != walked {
+            return Err(format!("{:?} at {at}", c.site));
         }
         count += 1;
     }

@@ -469,3 +469,51 @@ fn threshold_straddling_cases() {
     check_side_of_intersection(&l4, &l1, &l2);
     check_compare_intersections_along(&l4, &l1, &l2);
 }
+
+// ---------------------------------------------------------------------------
+// Constructions with a checked `i128` path: equal to the GMP formulas in
+// every regime, including values where the checked path overflows.
+
+fn any_i128() -> impl Strategy<Value = i128> + Clone {
+    prop_oneof![
+        small(8),
+        at_bound(I),
+        beyond(I),
+        Just(i128::MIN),
+        Just(i128::MAX),
+        any::<i128>(),
+    ]
+}
+
+proptest! {
+    #![proptest_config(config(3000))]
+
+    #[test]
+    fn construct_intersection_equals_reference(l1 in line(any_i128()), l2 in line(any_i128())) {
+        prop_assert_eq!(construct_intersection(&l1, &l2), reference::construct_intersection(&l1, &l2));
+    }
+
+    #[test]
+    fn construct_intersection_equals_reference_small(l1 in line(small(6)), l2 in line(small(6))) {
+        prop_assert_eq!(construct_intersection(&l1, &l2), reference::construct_intersection(&l1, &l2));
+    }
+
+    #[test]
+    fn rat_point_from_i128_equals_new(x in any_i128(), y in any_i128(), w in any_i128()) {
+        let gmp = wai_exact::RatPoint::new(Integer::from(x), Integer::from(y), Integer::from(w));
+        prop_assert_eq!(wai_exact::RatPoint::from_i128(x, y, w), gmp);
+    }
+
+    #[test]
+    fn midpoint_equals_rational_average(
+        p in (any_i128(), any_i128(), any_i128()),
+        q in (any_i128(), any_i128(), any_i128()),
+    ) {
+        let make = |(x, y, w): (i128, i128, i128)| wai_exact::RatPoint::from_i128(x, y, w);
+        let (Some(p), Some(q)) = (make(p), make(q)) else { return Ok(()) };
+        let m = wai_exact::RatPoint::midpoint(&p, &q);
+        let ((mx, my), (px, py), (qx, qy)) = (coords(&m), coords(&p), coords(&q));
+        prop_assert_eq!(mx * 2u32, px + qx);
+        prop_assert_eq!(my * 2u32, py + qy);
+    }
+}
