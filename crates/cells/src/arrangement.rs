@@ -7,7 +7,7 @@
 //! by index.
 
 use crate::assignment::{assign, BoundaryAssignment, Conflict};
-use crate::eye::Eye;
+use crate::eye::{mul, Eye};
 use crate::fx::FxHashMap;
 use crate::rays::{group_by_line, LineKey, VisibilityRay};
 use rug::{Integer, Rational};
@@ -151,7 +151,7 @@ fn gcd(mut x: u128, mut y: u128) -> u128 {
 
 /// The sign of the cross product `u × v`, exactly.
 pub(crate) fn cross_sign(u: (i128, i128), v: (i128, i128)) -> Ordering {
-    match (u.0.checked_mul(v.1), u.1.checked_mul(v.0)) {
+    match (mul(u.0, v.1), mul(u.1, v.0)) {
         (Some(p), Some(q)) if p.checked_sub(q).is_some() => (p - q).cmp(&0),
         _ => (Integer::from(u.0) * v.1 - Integer::from(u.1) * v.0).cmp0(),
     }
@@ -159,9 +159,7 @@ pub(crate) fn cross_sign(u: (i128, i128), v: (i128, i128)) -> Ordering {
 
 /// The sign of the dot product `u · v`, exactly.
 pub(crate) fn dot_sign(u: (i128, i128), v: (i128, i128)) -> Ordering {
-    let fast =
-        u.0.checked_mul(v.0)
-            .and_then(|p| p.checked_add(u.1.checked_mul(v.1)?));
+    let fast = mul(u.0, v.0).and_then(|p| p.checked_add(mul(u.1, v.1)?));
     match fast {
         Some(d) => d.cmp(&0),
         None => (Integer::from(u.0) * v.0 + Integer::from(u.1) * v.1).cmp0(),
@@ -261,7 +259,7 @@ impl Along {
     pub(crate) fn of(d: (i128, i128), p: &RatPoint) -> Along {
         let fast = || -> Option<Along> {
             let (x, y, w) = (p.hx().to_i128()?, p.hy().to_i128()?, p.hw().to_i128()?);
-            let num = x.checked_mul(d.0)?.checked_add(y.checked_mul(d.1)?)?;
+            let num = mul(x, d.0)?.checked_add(mul(y, d.1)?)?;
             Some(Along::Small(num, w))
         };
         fast().unwrap_or_else(|| Along::Big(along(d, p)))
@@ -285,7 +283,7 @@ impl Along {
     /// Exact comparison (denominators are positive).
     pub(crate) fn cmp(&self, other: &Along) -> Ordering {
         if let (Along::Small(a, w), Along::Small(b, v)) = (self, other) {
-            if let (Some(x), Some(y)) = (a.checked_mul(*v), b.checked_mul(*w)) {
+            if let (Some(x), Some(y)) = (mul(*a, *v), mul(*b, *w)) {
                 return x.cmp(&y);
             }
         }
@@ -308,6 +306,12 @@ impl Arrangement {
     /// `rays` (normally [`crate::visibility_rays`]`(map)`; any subset gives
     /// a valid subdivision, though its faces need not be convex).
     pub fn new(map: &Map, rays: &[VisibilityRay]) -> Arrangement {
+        Arrangement::from_rays(map, rays.to_vec())
+    }
+
+    /// Same as [`Arrangement::new`], keeping `rays` without copying them.
+    pub fn from_rays(map: &Map, owned: Vec<VisibilityRay>) -> Arrangement {
+        let rays = &owned[..];
         let v = map.vertices();
         let n = v.len();
         let mut pts = Points {
@@ -486,7 +490,7 @@ impl Arrangement {
             edges,
             groups,
             map: map.clone(),
-            rays: rays.to_vec(),
+            rays: owned,
             assignment: BoundaryAssignment::default(),
         };
         arr.assignment = assign(&arr);
@@ -588,7 +592,8 @@ impl Arrangement {
     /// The half-edges of the boundary cycle of face `f`, from its `outer`.
     pub fn face_half_edges(&self, f: FaceId) -> Vec<HalfEdgeId> {
         let start = self.faces[f].outer;
-        let mut out = vec![start];
+        let mut out = Vec::with_capacity(8);
+        out.push(start);
         let mut h = self.half_edges[start].next;
         while h != start && out.len() <= self.half_edges.len() {
             out.push(h);
@@ -614,7 +619,8 @@ impl Arrangement {
     /// The half-edges leaving `v`, counter-clockwise.
     pub fn outgoing(&self, v: VertexId) -> Vec<HalfEdgeId> {
         let start = self.vertices[v].out;
-        let mut out = vec![start];
+        let mut out = Vec::with_capacity(8);
+        out.push(start);
         let mut h = self.half_edges[self.half_edges[start].prev].twin;
         while h != start && out.len() <= self.half_edges.len() {
             out.push(h);

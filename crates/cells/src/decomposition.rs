@@ -4,6 +4,7 @@
 
 use crate::arrangement::{cross_sign, Arrangement, EdgeId, FaceId, Support, VertexId};
 use crate::assignment::BoundaryAssignment;
+use crate::eye::mul;
 use crate::fx::FxHashMap;
 use crate::incremental::{Compact, EdgeLines, LowerSkeleton, Walker};
 use crate::rays::{visibility_rays, VisibilityRay};
@@ -209,7 +210,7 @@ impl<'m> Decomposition<'m> {
         rays: Vec<VisibilityRay>,
         progress: &mut dyn FnMut(usize, usize),
     ) -> Decomposition<'m> {
-        let arrangement = Arrangement::new(map, &rays);
+        let arrangement = Arrangement::from_rays(map, rays);
         let cells: Vec<FaceId> = arrangement.cells().collect();
         let total = cells.len();
         // Progress counts the cells of every dimension.
@@ -247,7 +248,7 @@ impl<'m> Decomposition<'m> {
         for (i, &f) in cells.iter().enumerate() {
             let sk = walked[f].as_ref().expect("every cell is walked");
             origins.push(sk.origin());
-            let class = table.intern(sk);
+            let class = table.intern(sk, Rep::Face(f), &walked);
             table.classes[class].push(f);
             table.complexity[class] += 2 * sizes[i];
             representatives.push(reps[f].take().expect("a cell"));
@@ -278,7 +279,7 @@ impl<'m> Decomposition<'m> {
                     match same {
                         Some(f) => (skeleton_index[position[f]], origin, Some(f)),
                         None => {
-                            let class = table.intern(&sk);
+                            let class = table.intern(&sk, Rep::Own(sk.clone()), &walked);
                             // Collinear map edges make the converse need
                             // the class.
                             let by = faces.iter().copied().find(|&f| {
@@ -302,6 +303,15 @@ impl<'m> Decomposition<'m> {
             });
         });
         drop(walker);
+        let mut walked = walked;
+        let class_skeletons = table
+            .skeletons
+            .into_iter()
+            .map(|r| match r {
+                Rep::Face(f) => walked[f].take().expect("every cell is walked"),
+                Rep::Own(c) => c,
+            })
+            .collect();
         drop(walked);
         progress(all, all);
 
@@ -314,7 +324,7 @@ impl<'m> Decomposition<'m> {
             representatives,
             skeleton_index,
             origins,
-            class_skeletons: table.skeletons,
+            class_skeletons,
             skeletons: OnceLock::new(),
             classes: table.classes,
             class_complexity: table.complexity,
@@ -501,7 +511,7 @@ struct ClassTable<'m> {
     /// by comparing skeletons).
     by_hash: FxHashMap<u64, Vec<usize>>,
     /// By class: the compact skeleton of its first cell.
-    skeletons: Vec<Compact>,
+    skeletons: Vec<Rep>,
     /// By class: its 2-cells.
     classes: Vec<Vec<FaceId>>,
     /// By class: |EC| of its 2-cells.
@@ -523,24 +533,41 @@ impl<'m> ClassTable<'m> {
         }
     }
 
-    /// The class of skeleton `sk`, a new empty one if it was not seen
-    /// before.
-    fn intern(&mut self, sk: &Compact) -> usize {
+    /// The class of skeleton `sk`, a new empty one (with `rep`, which is
+    /// `sk`) if it was not seen before. `walked`: the 2-cells' skeletons.
+    fn intern(&mut self, sk: &Compact, rep: Rep, walked: &[Option<Compact>]) -> usize {
         let h = sk.class_hash(self.map, &self.lines);
         let bucket = self.by_hash.entry(h).or_default();
-        if let Some(&c) = bucket
-            .iter()
-            .find(|&&c| self.skeletons[c].same_skeleton(sk, self.map, &self.lines))
-        {
+        if let Some(&c) = bucket.iter().find(|&&c| {
+            self.skeletons[c]
+                .get(walked)
+                .same_skeleton(sk, self.map, &self.lines)
+        }) {
             return c;
         }
         let c = self.skeletons.len();
         bucket.push(c);
-        self.skeletons.push(sk.clone());
+        self.skeletons.push(rep);
         self.classes.push(Vec::new());
         self.complexity.push(0);
         self.lower.push(Vec::new());
         c
+    }
+}
+
+/// A class's skeleton while the classes are found: a 2-cell's (in the
+/// walk's results, not copied) or a lower cell's own.
+enum Rep {
+    Face(FaceId),
+    Own(Compact),
+}
+
+impl Rep {
+    fn get<'a>(&'a self, walked: &'a [Option<Compact>]) -> &'a Compact {
+        match self {
+            Rep::Face(f) => walked[*f].as_ref().expect("every cell is walked"),
+            Rep::Own(c) => c,
+        }
     }
 }
 
@@ -565,17 +592,13 @@ fn centroid3(a: &RatPoint, b: &RatPoint, c: &RatPoint) -> RatPoint {
     let small = |p: &RatPoint| Some((p.hx().to_i128()?, p.hy().to_i128()?, p.hw().to_i128()?));
     let fast = || -> Option<RatPoint> {
         let ((ax, ay, aw), (bx, by, bw), (cx, cy, cw)) = (small(a)?, small(b)?, small(c)?);
-        let (bc, ac, ab) = (
-            bw.checked_mul(cw)?,
-            aw.checked_mul(cw)?,
-            aw.checked_mul(bw)?,
-        );
+        let (bc, ac, ab) = (mul(bw, cw)?, mul(aw, cw)?, mul(aw, bw)?);
         let sum = |u: i128, v: i128, w: i128| -> Option<i128> {
-            u.checked_mul(bc)?
-                .checked_add(v.checked_mul(ac)?)?
-                .checked_add(w.checked_mul(ab)?)
+            mul(u, bc)?
+                .checked_add(mul(v, ac)?)?
+                .checked_add(mul(w, ab)?)
         };
-        let w = aw.checked_mul(bc)?.checked_mul(3)?;
+        let w = mul(aw, bc)?.checked_mul(3)?;
         RatPoint::from_i128(sum(ax, bx, cx)?, sum(ay, by, cy)?, w)
     };
     if let Some(p) = fast() {

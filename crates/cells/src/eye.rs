@@ -9,6 +9,8 @@ use rug::Integer;
 use std::cmp::Ordering;
 use wai_exact::{Orientation, Point, RatPoint};
 
+pub(crate) use wai_exact::mul_checked as mul;
+
 /// A direction with integer coordinates, small or large.
 #[derive(Clone, Debug)]
 pub(crate) enum Dir {
@@ -34,7 +36,7 @@ impl Dir {
     /// The sign of `self × other` (`Greater`: other is counter-clockwise).
     pub(crate) fn cross(&self, other: &Dir) -> Ordering {
         if let (Dir::Small(a, b), Dir::Small(c, d)) = (self, other) {
-            if let (Some(p), Some(q)) = (a.checked_mul(*d), b.checked_mul(*c)) {
+            if let (Some(p), Some(q)) = (mul(*a, *d), mul(*b, *c)) {
                 return p.cmp(&q);
             }
         }
@@ -45,7 +47,7 @@ impl Dir {
     /// The sign of `self · other`.
     pub(crate) fn dot(&self, other: &Dir) -> Ordering {
         if let (Dir::Small(a, b), Dir::Small(c, d)) = (self, other) {
-            if let (Some(p), Some(q)) = (a.checked_mul(*c), b.checked_mul(*d)) {
+            if let (Some(p), Some(q)) = (mul(*a, *c), mul(*b, *d)) {
                 // p + q > 0  <=>  p > -q (no overflow: -q of a product of
                 // two i128 that did not overflow can only fail at i128::MIN).
                 if let Some(nq) = q.checked_neg() {
@@ -104,9 +106,9 @@ impl Eye {
         let fast = || -> Option<Eye> {
             let ((ax, ay, aw), (bx, by, bw)) = (small(a)?, small(b)?);
             Some(Eye::Small {
-                x: ax.checked_mul(bw)?.checked_add(bx.checked_mul(aw)?)?,
-                y: ay.checked_mul(bw)?.checked_add(by.checked_mul(aw)?)?,
-                w: aw.checked_mul(bw)?.checked_mul(2)?,
+                x: mul(ax, bw)?.checked_add(mul(bx, aw)?)?,
+                y: mul(ay, bw)?.checked_add(mul(by, aw)?)?,
+                w: mul(aw, bw)?.checked_mul(2)?,
             })
         };
         fast().unwrap_or_else(|| Eye::new(&RatPoint::midpoint(a, b)))
@@ -116,8 +118,8 @@ impl Eye {
     pub(crate) fn toward(&self, a: Point) -> Dir {
         match self {
             Eye::Small { x, y, w } => {
-                let dx = w.checked_mul(a.x).and_then(|p| p.checked_sub(*x));
-                let dy = w.checked_mul(a.y).and_then(|p| p.checked_sub(*y));
+                let dx = mul(*w, a.x).and_then(|p| p.checked_sub(*x));
+                let dy = mul(*w, a.y).and_then(|p| p.checked_sub(*y));
                 match (dx, dy) {
                     (Some(dx), Some(dy)) => Dir::Small(dx, dy),
                     _ => Dir::from_integers(

@@ -31,27 +31,26 @@
 //! dimension of the test maps, and the T3.3b checker compares the two on
 //! every cell of every stress map.
 
-use crate::arrangement::{Arrangement, FaceId, Support};
+use crate::arrangement::{cross_sign, Arrangement, FaceId, Support};
 use crate::decomposition::LowerSite;
-use crate::eye::{angle_cmp, dir, Eye};
+use crate::eye::{angle_cmp, dir, mul, Eye};
 use crate::fx::{FxHashMap, FxHasher};
 use crate::line_view::{Beside, LineView};
 use rug::Integer;
-use std::collections::{HashMap, VecDeque};
+use std::cmp::Ordering;
+use std::collections::VecDeque;
 use wai_exact::{Orientation, Point, RatPoint};
 use wai_map::Map;
 use wai_visibility::{LineLabel, Skeleton, SkeletonKey, VisibilityIndex};
 
 /// A skeleton in map terms: its vertices (map vertex ids) from the origin,
-/// and for each edge `None` (full) or the id of the line of the map edge an
-/// artificial edge lies on. Equal compact skeletons are equal skeletons in
-/// the same embedding; the converse holds too, since line ids identify
-/// lines (collinear map edges share one).
+/// and for each edge `None` (full) or the map edge an artificial edge lies
+/// on. Equal compact skeletons are equal skeletons in the same embedding;
+/// the converse fails only where an artificial edge's line holds several
+/// collinear map edges, which [`Compact::same_skeleton`] settles.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub(crate) struct Compact {
     pub(crate) vertices: Vec<u32>,
-    pub(crate) lines: Vec<Option<u32>>,
-    /// By edge: the map edge of an artificial edge (for the key's label).
     edges: Vec<Option<u32>>,
 }
 
@@ -158,10 +157,7 @@ impl EdgeLines {
     /// Edge e's line relative to `o`: (a, b, c − a·o.x − b·o.y).
     fn relative(&self, e: u32, o: Point) -> (i128, i128, Wide) {
         let (a, b, c, small) = &self.by_edge[e as usize];
-        let fast = small.and_then(|c| {
-            c.checked_sub(a.checked_mul(o.x)?)?
-                .checked_sub(b.checked_mul(o.y)?)
-        });
+        let fast = small.and_then(|c| c.checked_sub(mul(*a, o.x)?)?.checked_sub(mul(*b, o.y)?));
         let c = match fast {
             Some(c) => Wide::Small(c),
             None => Wide::of((c - Integer::from(*a) * o.x) - Integer::from(*b) * o.y),
@@ -248,8 +244,6 @@ pub(crate) struct Walker<'a> {
     /// By arrangement edge on rays: its slot on its line
     /// ([`LineView::slot`]); `u32::MAX` for map edges.
     edge_slot: Vec<u32>,
-    /// By map edge: the id of its line.
-    edge_line: Vec<u32>,
     /// Views from map vertices, computed when first needed.
     views: FxHashMap<usize, Vec<(usize, usize)>>,
     /// By map vertex: reflex in the map.
@@ -285,22 +279,12 @@ impl<'a> Walker<'a> {
             .collect();
         let v = map.vertices();
         let n = v.len();
-        let mut ids: HashMap<crate::rays::LineKey, u32> = HashMap::new();
-        let edge_line = (0..n)
-            .map(|i| {
-                let l = wai_exact::Line::new(v[i], v[(i + 1) % n]).expect("distinct vertices");
-                let k = crate::rays::LineKey::of(&l);
-                let next = ids.len() as u32;
-                *ids.entry(k).or_insert(next)
-            })
-            .collect();
         Walker {
             map,
             arr,
             index,
             lines,
             edge_slot,
-            edge_line,
             views: FxHashMap::default(),
             vis: Vec::new(),
             scratch: (Vec::new(), Vec::new()),
@@ -377,7 +361,10 @@ impl<'a> Walker<'a> {
             };
             let faces = [arr.half_edge(2 * e).face, arr.half_edge(2 * e + 1).face];
             let site = LowerSite::Edge(e);
-            let sk = self.lower_skeleton(site, &faces, walked, &[(g, self.edge_slot[e])]);
+            // Half-edge 2e runs along the line, its face on the left.
+            let sides = [Beside::Left, Beside::Right];
+            let lines = [(g, self.edge_slot[e])];
+            let sk = self.lower_skeleton(site, &faces, walked, &lines, &sides);
             sink(site, &faces, sk);
         }
         for v in 0..arr.vertex_count() {
@@ -388,7 +375,26 @@ impl<'a> Walker<'a> {
             let faces: Vec<FaceId> = out.iter().map(|&h| arr.half_edge(h).face).collect();
             let site = LowerSite::Vertex(v);
             let lines = self.lines_through(&out);
-            let sk = self.lower_skeleton(site, &faces, walked, &lines);
+            // The side of each line each face lies on: that of a direction
+            // strictly inside its corner, between its outgoing half-edge
+            // and the next counter-clockwise.
+            let k = out.len();
+            let mut sides = Vec::with_capacity(k * lines.len());
+            for i in 0..k {
+                let (d, d2) = (arr.direction(out[i]), arr.direction(out[(i + 1) % k]));
+                let w = match cross_sign(d, d2) {
+                    Ordering::Greater => (d.0 + d2.0, d.1 + d2.1),
+                    Ordering::Less => (-(d.0 + d2.0), -(d.1 + d2.1)),
+                    Ordering::Equal => (-d.1, d.0),
+                };
+                for &(g, _) in &lines {
+                    sides.push(match cross_sign(arr.ray_group(g).dir, w) {
+                        Ordering::Less => Beside::Right,
+                        _ => Beside::Left,
+                    });
+                }
+            }
+            let sk = self.lower_skeleton(site, &faces, walked, &lines, &sides);
             sink(site, &faces, sk);
         }
     }
@@ -414,11 +420,26 @@ impl<'a> Walker<'a> {
     /// it), or beside the one line on side `beside`, from Vis of a 2-cell
     /// next to q: unchanged off the lines, recomputed on them.
     fn across(&self, base: &[u32], lines: &[(usize, u32)], beside: Option<Beside>) -> Vec<u32> {
-        let mut out: Vec<u32> = base
-            .iter()
-            .copied()
-            .filter(|&u| lines.iter().all(|&(g, _)| !self.lines[g].contains(u)))
-            .collect();
+        let mut out: Vec<u32> = Vec::with_capacity(base.len() + 4);
+        if let [(g, _)] = lines {
+            // One line: base minus its vertices, both ascending.
+            let on = self.lines[*g].vertices();
+            let mut j = 0;
+            for &u in base {
+                while j < on.len() && on[j] < u {
+                    j += 1;
+                }
+                if j == on.len() || on[j] != u {
+                    out.push(u);
+                }
+            }
+        } else {
+            out.extend(
+                base.iter()
+                    .copied()
+                    .filter(|&u| lines.iter().all(|&(g, _)| !self.lines[g].contains(u))),
+            );
+        }
         for &(g, slot) in lines {
             self.lines[g].seen_in(slot as usize, beside, &mut out);
         }
@@ -464,15 +485,7 @@ impl<'a> Walker<'a> {
         let mut vertices = vis.to_vec();
         vertices.rotate_left(o);
         edges.rotate_left(o);
-        let lines = edges
-            .iter()
-            .map(|e| e.map(|e| self.edge_line[e as usize]))
-            .collect();
-        Compact {
-            vertices,
-            lines,
-            edges,
-        }
+        Compact { vertices, edges }
     }
 
     /// The skeleton edge from x to the next vertex y that q sees (`k` of
@@ -518,23 +531,21 @@ impl<'a> Walker<'a> {
         &mut self,
         f: FaceId,
         face: &Compact,
-        lines: &[(usize, u32)],
+        near: &[u32],
         site: LowerSite,
     ) -> LowerSkeleton {
-        // The gaps at the vertices of the lines that f sees: found in f's
-        // Vis (ascending), which the skeleton's vertices are rotated from.
+        // The gaps at the vertices of the lines that f sees (those the cell
+        // sees on them, `near`): found in f's Vis (ascending), which the
+        // skeleton's vertices are rotated from.
         let k = face.vertices.len();
         let vis = self.vis[f].as_deref().expect("a walked cell has Vis");
         let at = |u: u32| vis.binary_search(&u).ok();
         let shift = at(face.vertices[0]).expect("the origin is seen");
-        let mut touched: Vec<usize> = Vec::new();
-        for &(g, _) in lines {
-            for &u in self.lines[g].vertices() {
-                if let Some(j) = at(u) {
-                    let s = (j + k - shift) % k;
-                    touched.extend([s, (s + k - 1) % k]);
-                }
-            }
+        let mut touched: Vec<usize> = Vec::with_capacity(2 * near.len());
+        for &u in near {
+            let j = at(u).expect("f sees the vertices the cell sees on its lines");
+            let s = (j + k - shift) % k;
+            touched.extend([s, (s + k - 1) % k]);
         }
         touched.sort_unstable();
         touched.dedup();
@@ -559,7 +570,6 @@ impl<'a> Walker<'a> {
         let mut out = face.clone();
         for (s, e) in changed {
             out.edges[s] = e;
-            out.lines[s] = e.map(|e| self.edge_line[e as usize]);
         }
         LowerSkeleton::Own(out)
     }
@@ -578,6 +588,7 @@ impl<'a> Walker<'a> {
         faces: &[FaceId],
         walked: &[Option<Compact>],
         lines: &[(usize, u32)],
+        sides: &[Beside],
     ) -> LowerSkeleton {
         let mut near = std::mem::take(&mut self.scratch.0);
         let mut seen_on = std::mem::take(&mut self.scratch.1);
@@ -588,36 +599,43 @@ impl<'a> Walker<'a> {
         near.sort_unstable();
         near.dedup();
         let mut same = None;
-        for &f in faces {
-            if let (Some(vis), Some(_)) = (&self.vis[f], &walked[f]) {
-                seen_on.clear();
-                seen_on.extend(
-                    lines
-                        .iter()
-                        .flat_map(|&(g, _)| self.lines[g].vertices())
-                        .copied()
-                        .filter(|u| vis.binary_search(u).is_ok()),
-                );
-                seen_on.sort_unstable();
-                seen_on.dedup();
-                if seen_on == near {
-                    same = Some(f);
-                    break;
-                }
+        for (i, &f) in faces.iter().enumerate() {
+            let (Some(vis), Some(_)) = (&self.vis[f], &walked[f]) else {
+                continue;
+            };
+            // What f sees on the lines is what is seen from just beside
+            // each line there, on f's side (the walk's own update).
+            seen_on.clear();
+            for (j, &(g, slot)) in lines.iter().enumerate() {
+                let side = sides[i * lines.len() + j];
+                self.lines[g].seen_in(slot as usize, Some(side), &mut seen_on);
+            }
+            seen_on.sort_unstable();
+            seen_on.dedup();
+            // (That this agrees with f's Vis is the T3.3b checker's to
+            // test; here it only may not panic.)
+            if seen_on == near && near.iter().all(|u| vis.binary_search(u).is_ok()) {
+                same = Some(f);
+                break;
             }
         }
+        let result = match same {
+            Some(f) => {
+                let sk = walked[f].as_ref().expect("checked above");
+                self.relabel(f, sk, &near, site)
+            }
+            None => {
+                let base = self.vis[faces[0]]
+                    .take()
+                    .expect("the cells next to a lower cell are walked");
+                let seen = self.across(&base, lines, None);
+                self.vis[faces[0]] = Some(base);
+                let eye = self.site_eye(site);
+                LowerSkeleton::Own(self.compact(&seen, &eye))
+            }
+        };
         self.scratch = (near, seen_on);
-        if let Some(f) = same {
-            let sk = walked[f].as_ref().expect("checked above");
-            return self.relabel(f, sk, lines, site);
-        }
-        let base = self.vis[faces[0]]
-            .take()
-            .expect("the cells next to a lower cell are walked");
-        let seen = self.across(&base, lines, None);
-        self.vis[faces[0]] = Some(base);
-        let eye = self.site_eye(site);
-        LowerSkeleton::Own(self.compact(&seen, &eye))
+        result
     }
 
     /// The map edge the ray from q through x meets beyond x, taken just

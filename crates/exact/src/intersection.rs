@@ -33,6 +33,17 @@ fn fast(ps: &[Point]) -> bool {
         .all(|p| fits_bits(p.x, INTERSECTION_FAST_BITS) && fits_bits(p.y, INTERSECTION_FAST_BITS))
 }
 
+/// `a · b`, or `None` on overflow; factors that fit in `i64` skip the
+/// (slow) overflow check, their product being below 2^126.
+#[inline]
+pub fn mul_checked(a: i128, b: i128) -> Option<i128> {
+    if i64::try_from(a).is_ok() && i64::try_from(b).is_ok() {
+        Some(a * b)
+    } else {
+        a.checked_mul(b)
+    }
+}
+
 #[inline]
 fn cross(ux: i128, uy: i128, vx: i128, vy: i128) -> i128 {
     ux * vy - uy * vx
@@ -47,15 +58,15 @@ pub fn construct_intersection(l1: &Line, l2: &Line) -> Option<RatPoint> {
     let fast = || -> Option<Option<RatPoint>> {
         let (d1x, d1y) = (b1.x.checked_sub(a1.x)?, b1.y.checked_sub(a1.y)?);
         let (d2x, d2y) = (b2.x.checked_sub(a2.x)?, b2.y.checked_sub(a2.y)?);
-        let den = d1x.checked_mul(d2y)?.checked_sub(d1y.checked_mul(d2x)?)?;
+        let den = mul_checked(d1x, d2y)?.checked_sub(mul_checked(d1y, d2x)?)?;
         if den == 0 {
             return Some(None);
         }
         let (ex, ey) = (a2.x.checked_sub(a1.x)?, a2.y.checked_sub(a1.y)?);
-        let num = ex.checked_mul(d2y)?.checked_sub(ey.checked_mul(d2x)?)?;
+        let num = mul_checked(ex, d2y)?.checked_sub(mul_checked(ey, d2x)?)?;
         // a1 + (num / den) · d1, in homogeneous form over den.
-        let x = den.checked_mul(a1.x)?.checked_add(num.checked_mul(d1x)?)?;
-        let y = den.checked_mul(a1.y)?.checked_add(num.checked_mul(d1y)?)?;
+        let x = mul_checked(den, a1.x)?.checked_add(mul_checked(num, d1x)?)?;
+        let y = mul_checked(den, a1.y)?.checked_add(mul_checked(num, d1y)?)?;
         Some(RatPoint::from_i128(x, y, den))
     };
     fast().unwrap_or_else(|| reference::construct_intersection(l1, l2))

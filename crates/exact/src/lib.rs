@@ -28,7 +28,7 @@ mod segment;
 mod visibility;
 
 pub use intersection::{
-    compare_intersections_along, construct_intersection, side_of_intersection,
+    compare_intersections_along, construct_intersection, mul_checked, side_of_intersection,
     INTERSECTION_FAST_BITS,
 };
 pub use line::Line;

@@ -1,5 +1,6 @@
 //! Points: integer input points and exact rational (homogeneous) points.
 
+use crate::intersection::mul_checked as mul;
 use rug::Integer;
 use serde::{Deserialize, Serialize};
 use std::fmt;
@@ -150,9 +151,9 @@ impl RatPoint {
         let fast = || -> Option<RatPoint> {
             let (ax, ay, aw) = (small(&a.x)?, small(&a.y)?, small(&a.w)?);
             let (bx, by, bw) = (small(&b.x)?, small(&b.y)?, small(&b.w)?);
-            let x = ax.checked_mul(bw)?.checked_add(bx.checked_mul(aw)?)?;
-            let y = ay.checked_mul(bw)?.checked_add(by.checked_mul(aw)?)?;
-            let w = aw.checked_mul(bw)?.checked_mul(2)?;
+            let x = mul(ax, bw)?.checked_add(mul(bx, aw)?)?;
+            let y = mul(ay, bw)?.checked_add(mul(by, aw)?)?;
+            let w = mul(aw, bw)?.checked_mul(2)?;
             RatPoint::from_i128(x, y, w)
         };
         if let Some(m) = fast() {

@@ -517,3 +517,17 @@ proptest! {
         prop_assert_eq!(my * 2u32, py + qy);
     }
 }
+
+proptest! {
+    #![proptest_config(config(5000))]
+
+    /// The unchecked branch (both factors in `i64`) never differs from
+    /// `checked_mul`, at the `i64` bounds included.
+    #[test]
+    fn mul_checked_equals_checked_mul(
+        a in prop_oneof![any_i128(), Just(i128::from(i64::MIN)), Just(i128::from(i64::MAX)), any::<i64>().prop_map(i128::from)],
+        b in prop_oneof![any_i128(), Just(i128::from(i64::MIN)), Just(i128::from(i64::MAX)), any::<i64>().prop_map(i128::from)],
+    ) {
+        prop_assert_eq!(wai_exact::mul_checked(a, b), a.checked_mul(b));
+    }
+}
