@@ -4,7 +4,7 @@
 
 use crate::arrangement::{cross_sign, Arrangement, EdgeId, FaceId, Support, VertexId};
 use crate::assignment::BoundaryAssignment;
-use crate::eye::mul;
+use crate::eye::Eye;
 use crate::fx::FxHashMap;
 use crate::incremental::{Compact, EdgeLines, LowerSkeleton, Walker};
 use crate::rays::{visibility_rays, VisibilityRay};
@@ -22,14 +22,15 @@ const NOT_A_CELL: usize = usize::MAX;
 /// of each cell (Def 3.9) and its equivalence classes (Def 3.10).
 ///
 /// Built in one pass: [`visibility_rays`], [`Arrangement::new`] (which
-/// applies the boundary assignment of sec. 3.6), then for every cell one
-/// exact interior point ([`Decomposition::representative`]) and its
+/// applies the boundary assignment of sec. 3.6), then for every cell its
 /// skeleton, found by walking the arrangement from one visibility query
 /// (sec. 3.9.2: crossing an edge on a ray line changes the visibility of
-/// the map vertices on that line only; see the `incremental` module), and
-/// the canonical [`SkeletonKey`] of every 2-cell's skeleton and of every
-/// 1- or 0-cell's that is not an adjacent 2-cell's in the same embedding.
-/// Cells with equal keys form a class.
+/// the map vertices on that line only; see the `incremental` module).
+/// Cells with equal skeletons (equal canonical [`SkeletonKey`]s) form a
+/// class. Skeletons are compared in map terms, up to translation, exactly
+/// and without building their keys; the keys
+/// ([`Decomposition::skeletons`]) and the cells' exact interior points
+/// ([`Decomposition::representative`]) are built when first asked for.
 ///
 /// # Cells of every dimension
 /// The decomposition has open cells of dimension 2 (the faces, "cells" in
@@ -85,8 +86,11 @@ pub struct Decomposition<'m> {
     position: Vec<usize>,
     /// By cell position.
     sizes: Vec<usize>,
-    /// By cell position.
-    representatives: Vec<RatPoint>,
+    /// By cell position: three non-collinear boundary vertices, whose
+    /// centroid is the representative.
+    corners: Vec<[VertexId; 3]>,
+    /// By cell position: the representatives, built when first asked for.
+    representatives: OnceLock<Vec<RatPoint>>,
     /// By cell position: index into `skeletons`.
     skeleton_index: Vec<usize>,
     /// By cell position: the map vertex that is the skeleton's origin v0.
@@ -229,20 +233,20 @@ impl<'m> Decomposition<'m> {
         let step = (all / 100).max(1);
 
         let index = VisibilityIndex::new(map);
-        let mut reps: Vec<Option<RatPoint>> = vec![None; arrangement.face_count()];
+        let mut corners: Vec<Option<[VertexId; 3]>> = vec![None; arrangement.face_count()];
         let mut sizes = Vec::with_capacity(total);
         for &f in &cells {
             sizes.push(arrangement.face_half_edges(f).len());
-            reps[f] = Some(interior_point(&arrangement, f));
+            corners[f] = Some(interior_corners(&arrangement, f));
         }
         let mut walker = Walker::new(map, &arrangement, &index);
-        let walked = walker.walk(&reps, &mut |done| {
+        let walked = walker.walk(&corners, &mut |done| {
             if done.is_multiple_of(step) && done < all {
                 progress(done, all);
             }
         });
         let mut table = ClassTable::new(map);
-        let mut representatives = Vec::with_capacity(total);
+        let mut cell_corners = Vec::with_capacity(total);
         let mut skeleton_index = Vec::with_capacity(total);
         let mut origins: Vec<usize> = Vec::with_capacity(total);
         for (i, &f) in cells.iter().enumerate() {
@@ -251,7 +255,7 @@ impl<'m> Decomposition<'m> {
             let class = table.intern(sk, Rep::Face(f), &walked);
             table.classes[class].push(f);
             table.complexity[class] += 2 * sizes[i];
-            representatives.push(reps[f].take().expect("a cell"));
+            cell_corners.push(corners[f].expect("a cell"));
             skeleton_index.push(class);
         }
 
@@ -321,7 +325,8 @@ impl<'m> Decomposition<'m> {
             cells,
             position,
             sizes,
-            representatives,
+            corners: cell_corners,
+            representatives: OnceLock::new(),
             skeleton_index,
             origins,
             class_skeletons,
@@ -387,7 +392,13 @@ impl<'m> Decomposition<'m> {
     /// one after them not on their line). Interior because the cell is
     /// convex (Thm 3.3 (1), checked by the arrangement's sanity check).
     pub fn representative(&self, cell: FaceId) -> &RatPoint {
-        &self.representatives[self.pos(cell)]
+        let all = self.representatives.get_or_init(|| {
+            self.corners
+                .iter()
+                .map(|c| centroid(&self.arrangement, *c))
+                .collect()
+        });
+        &all[self.pos(cell)]
     }
 
     /// The index of `cell`'s skeleton (Def 3.9) in
@@ -571,11 +582,11 @@ impl Rep {
     }
 }
 
-/// The centroid of three non-collinear vertices of the convex face `f`:
-/// an interior point. The three are the ends of two consecutive boundary
-/// edges that turn (their directions are not parallel), so no
-/// orientation test on rational points is needed.
-fn interior_point(arr: &Arrangement, f: FaceId) -> RatPoint {
+/// Three non-collinear vertices of the convex face `f`, whose centroid is
+/// an interior point: the ends of two consecutive boundary edges that turn
+/// (their directions are not parallel), so no orientation test on rational
+/// points is needed.
+pub(crate) fn interior_corners(arr: &Arrangement, f: FaceId) -> [VertexId; 3] {
     let hs = arr.face_half_edges(f);
     let k = hs.len();
     let i = (0..k)
@@ -583,27 +594,25 @@ fn interior_point(arr: &Arrangement, f: FaceId) -> RatPoint {
             cross_sign(arr.direction(hs[i]), arr.direction(hs[(i + 1) % k])) != Ordering::Equal
         })
         .expect("a cell has three non-collinear vertices");
-    let at = |j: usize| arr.point(arr.half_edge(hs[j % k]).origin);
-    centroid3(at(i), at(i + 1), at(i + 2))
+    let at = |j: usize| arr.half_edge(hs[j % k]).origin;
+    [at(i), at(i + 1), at(i + 2)]
 }
 
-/// `(a + b + c) / 3`, exactly (checked `i128` first, GMP on overflow).
-fn centroid3(a: &RatPoint, b: &RatPoint, c: &RatPoint) -> RatPoint {
-    let small = |p: &RatPoint| Some((p.hx().to_i128()?, p.hy().to_i128()?, p.hw().to_i128()?));
-    let fast = || -> Option<RatPoint> {
-        let ((ax, ay, aw), (bx, by, bw), (cx, cy, cw)) = (small(a)?, small(b)?, small(c)?);
-        let (bc, ac, ab) = (mul(bw, cw)?, mul(aw, cw)?, mul(aw, bw)?);
-        let sum = |u: i128, v: i128, w: i128| -> Option<i128> {
-            mul(u, bc)?
-                .checked_add(mul(v, ac)?)?
-                .checked_add(mul(w, ab)?)
-        };
-        let w = mul(aw, bc)?.checked_mul(3)?;
-        RatPoint::from_i128(sum(ax, bx, cx)?, sum(ay, by, cy)?, w)
-    };
-    if let Some(p) = fast() {
-        return p;
+/// The centroid of the points of three arrangement vertices.
+pub(crate) fn centroid(arr: &Arrangement, c: [VertexId; 3]) -> RatPoint {
+    centroid3(arr.point(c[0]), arr.point(c[1]), arr.point(c[2]))
+}
+
+/// `(a + b + c) / 3`, exactly (through `i128` when it fits).
+pub(crate) fn centroid3(a: &RatPoint, b: &RatPoint, c: &RatPoint) -> RatPoint {
+    match Eye::centroid(a, b, c) {
+        Eye::Small { x, y, w } => RatPoint::from_i128(x, y, w).expect("w > 0"),
+        Eye::Big { .. } => centroid3_gmp(a, b, c),
     }
+}
+
+/// [`centroid3`] on GMP integers.
+pub(crate) fn centroid3_gmp(a: &RatPoint, b: &RatPoint, c: &RatPoint) -> RatPoint {
     let (aw, bw, cw) = (a.hw(), b.hw(), c.hw());
     let bc = Integer::from(bw * cw);
     let ac = Integer::from(aw * cw);
@@ -612,4 +621,32 @@ fn centroid3(a: &RatPoint, b: &RatPoint, c: &RatPoint) -> RatPoint {
     let y = Integer::from(a.hy() * &bc) + Integer::from(b.hy() * &ac) + Integer::from(c.hy() * &ab);
     let w = Integer::from(aw * &bc) * 3u32;
     RatPoint::new(x, y, w).expect("positive denominators")
+}
+
+#[cfg(test)]
+mod tests {
+    use super::{centroid3, centroid3_gmp};
+    use rug::Integer;
+    use wai_exact::RatPoint;
+
+    /// The `i128` path and the GMP path agree, across the `i128` limits.
+    #[test]
+    fn centroid_paths_agree() {
+        let big = |v: i128| Integer::from(v);
+        let p = |x: i128, y: i128, w: i128| RatPoint::new(big(x), big(y), big(w)).unwrap();
+        let huge = 1i128 << 100;
+        let cases = [
+            [p(0, 0, 1), p(3, 0, 1), p(0, 3, 1)],
+            [p(1, 2, 3), p(-5, 7, 11), p(13, -17, 19)],
+            [p(huge, 1, 3), p(-huge, huge, 7), p(1, -huge, 1 << 40)],
+            [
+                p(i128::MAX, 0, 1),
+                p(i128::MIN + 1, 5, 1),
+                p(0, i128::MAX, 2),
+            ],
+        ];
+        for [a, b, c] in &cases {
+            assert_eq!(centroid3(a, b, c), centroid3_gmp(a, b, c), "{a} {b} {c}");
+        }
+    }
 }

@@ -114,6 +114,27 @@ impl Eye {
         fast().unwrap_or_else(|| Eye::new(&RatPoint::midpoint(a, b)))
     }
 
+    /// The centroid of `a`, `b` and `c`, without reducing it (checked
+    /// `i128` first, GMP on overflow).
+    pub(crate) fn centroid(a: &RatPoint, b: &RatPoint, c: &RatPoint) -> Eye {
+        let small = |p: &RatPoint| Some((p.hx().to_i128()?, p.hy().to_i128()?, p.hw().to_i128()?));
+        let fast = || -> Option<Eye> {
+            let ((ax, ay, aw), (bx, by, bw), (cx, cy, cw)) = (small(a)?, small(b)?, small(c)?);
+            let (bc, ac, ab) = (mul(bw, cw)?, mul(aw, cw)?, mul(aw, bw)?);
+            let sum = |u: i128, v: i128, w: i128| -> Option<i128> {
+                mul(u, bc)?
+                    .checked_add(mul(v, ac)?)?
+                    .checked_add(mul(w, ab)?)
+            };
+            Some(Eye::Small {
+                x: sum(ax, bx, cx)?,
+                y: sum(ay, by, cy)?,
+                w: mul(aw, bc)?.checked_mul(3)?,
+            })
+        };
+        fast().unwrap_or_else(|| Eye::new(&crate::decomposition::centroid3_gmp(a, b, c)))
+    }
+
     /// The direction from q to the map vertex `a`, scaled by W > 0.
     pub(crate) fn toward(&self, a: Point) -> Dir {
         match self {

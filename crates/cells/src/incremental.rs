@@ -31,7 +31,7 @@
 //! dimension of the test maps, and the T3.3b checker compares the two on
 //! every cell of every stress map.
 
-use crate::arrangement::{cross_sign, Arrangement, FaceId, Support};
+use crate::arrangement::{cross_sign, Arrangement, FaceId, Support, VertexId};
 use crate::decomposition::LowerSite;
 use crate::eye::{angle_cmp, dir, mul, Eye};
 use crate::fx::{FxHashMap, FxHasher};
@@ -297,7 +297,7 @@ impl<'a> Walker<'a> {
     /// by face id. `progress(done)` is called after each 2-cell.
     pub(crate) fn walk(
         &mut self,
-        reps: &[Option<RatPoint>],
+        corners: &[Option<[VertexId; 3]>],
         progress: &mut dyn FnMut(usize),
     ) -> Vec<Option<Compact>> {
         let arr = self.arr;
@@ -312,12 +312,13 @@ impl<'a> Walker<'a> {
             if vis[start].is_some() {
                 continue;
             }
-            let rep = reps[start].as_ref().expect("cells have a point");
-            vis[start] = Some(self.queried(rep));
+            let c = corners[start].expect("cells have a point");
+            vis[start] = Some(self.queried(&crate::decomposition::centroid(arr, c)));
             queue.push_back(start);
             while let Some(f) = queue.pop_front() {
                 let here = vis[f].take().expect("queued faces have Vis");
-                let eye = Eye::new(reps[f].as_ref().expect("a cell"));
+                let c = corners[f].expect("a cell");
+                let eye = Eye::centroid(arr.point(c[0]), arr.point(c[1]), arr.point(c[2]));
                 faces[f] = Some(self.compact(&here, &eye));
                 done += 1;
                 progress(done);
