@@ -127,6 +127,8 @@ pub struct Arrangement {
     pub(crate) points: Vec<RatPoint>,
     pub(crate) on_boundary: Vec<bool>,
     pub(crate) edges: Vec<EdgeGeometry>,
+    /// By edge: the primitive direction of half-edge 2e.
+    pub(crate) dirs: Vec<(i128, i128)>,
     pub(crate) groups: Vec<RayGroup>,
     pub(crate) map: Map,
     pub(crate) rays: Vec<VisibilityRay>,
@@ -222,19 +224,25 @@ pub(crate) fn boxes_meet(a: &[i128; 4], b: &[i128; 4]) -> bool {
     a[0] <= b[2] && b[0] <= a[2] && a[1] <= b[3] && b[1] <= a[3]
 }
 
+/// The arrangement's points, each stored once: found again by hash and
+/// exact equality.
 struct Points {
     points: Vec<RatPoint>,
-    index: FxHashMap<RatPoint, VertexId>,
+    /// By the hash of a point: the ids of the points with that hash.
+    index: FxHashMap<u64, Vec<VertexId>>,
 }
 
 impl Points {
     fn intern(&mut self, p: RatPoint) -> VertexId {
-        if let Some(&i) = self.index.get(&p) {
+        use std::hash::BuildHasher;
+        let h = std::hash::BuildHasherDefault::<crate::fx::FxHasher>::default().hash_one(&p);
+        let bucket = self.index.entry(h).or_default();
+        if let Some(&i) = bucket.iter().find(|&&i| self.points[i] == p) {
             return i;
         }
         let i = self.points.len();
-        self.points.push(p.clone());
-        self.index.insert(p, i);
+        self.points.push(p);
+        bucket.push(i);
         i
     }
 
@@ -488,6 +496,7 @@ impl Arrangement {
             points,
             on_boundary,
             edges,
+            dirs: dir_of,
             groups,
             map: map.clone(),
             rays: owned,
@@ -563,13 +572,7 @@ impl Arrangement {
     }
     /// The primitive integer direction of half-edge `h`.
     pub fn direction(&self, h: HalfEdgeId) -> (i128, i128) {
-        let d = match self.edges[h / 2].support {
-            Support::MapEdge(i) => {
-                let v = self.map.vertices();
-                primitive_dir(&Line::new(v[i], v[(i + 1) % v.len()]).expect("distinct"))
-            }
-            Support::Rays(g) => self.groups[g].dir,
-        };
+        let d = self.dirs[h / 2];
         if h.is_multiple_of(2) {
             d
         } else {

@@ -305,6 +305,8 @@ impl<'a> Walker<'a> {
         let mut vis: Vec<Option<Vec<u32>>> = vec![None; nf];
         let mut faces: Vec<Option<Compact>> = vec![None; nf];
         let mut queue = VecDeque::new();
+        // By face: the walked face it was reached from, across which line.
+        let mut from: Vec<Option<(FaceId, usize)>> = vec![None; nf];
         let mut done = 0;
         // Every cell is reached from the first one: the interior of the
         // map is connected and cells meet across ray edges.
@@ -319,7 +321,15 @@ impl<'a> Walker<'a> {
                 let here = vis[f].take().expect("queued faces have Vis");
                 let c = corners[f].expect("a cell");
                 let eye = Eye::centroid(arr.point(c[0]), arr.point(c[1]), arr.point(c[2]));
-                faces[f] = Some(self.compact(&here, &eye));
+                let sk = match from[f] {
+                    Some((p, g)) => {
+                        let (pvis, parent) = (vis[p].as_deref(), faces[p].as_ref());
+                        let (pvis, parent) = (pvis.expect("walked"), parent.expect("walked"));
+                        self.compact_across(&here, &eye, pvis, parent, g)
+                    }
+                    None => self.compact(&here, &eye),
+                };
+                faces[f] = Some(sk);
                 done += 1;
                 progress(done);
                 for h in arr.face_cycle(f) {
@@ -340,6 +350,7 @@ impl<'a> Walker<'a> {
                     };
                     let slot = self.edge_slot[h / 2];
                     vis[other] = Some(self.across(&here, &[(g, slot)], Some(side)));
+                    from[other] = Some((f, g));
                     queue.push_back(other);
                 }
                 vis[f] = Some(here);
@@ -463,8 +474,6 @@ impl<'a> Walker<'a> {
 
     /// The compact skeleton of q from Vis(q) (ascending map ids).
     fn compact(&mut self, vis: &[u32], eye: &Eye) -> Compact {
-        let map = self.map;
-        let v = map.vertices();
         let k = vis.len();
         assert!(k > 0, "a point of the interior sees a map vertex ({eye:?})");
         let mut edges: Vec<Option<u32>> = Vec::with_capacity(k);
@@ -472,8 +481,61 @@ impl<'a> Walker<'a> {
             let (x, y) = (vis[s] as usize, vis[(s + 1) % k] as usize);
             edges.push(self.gap(x, y, k, eye));
         }
-        // The origin: leftmost, then lowest, of the reflex vertices seen,
-        // else of all seen.
+        self.rotated(vis, edges)
+    }
+
+    /// [`Walker::compact`] for a 2-cell reached from the 2-cell `parent`
+    /// (Vis `pvis`) across ray group `g`: the artificial edge of a gap
+    /// x → y with neither end on the line, consecutive in both Vis, is the
+    /// parent's. Every test of [`Walker::gap`] for it changes sign only on
+    /// a line through x or y (the line of edge x or of edge y − 1, or a
+    /// line from x through a vertex it sees), and between the two cells
+    /// only the line of `g` is crossed.
+    fn compact_across(
+        &mut self,
+        vis: &[u32],
+        eye: &Eye,
+        pvis: &[u32],
+        parent: &Compact,
+        g: usize,
+    ) -> Compact {
+        let (k, pk) = (vis.len(), pvis.len());
+        if k < 2 || pk < 2 {
+            return self.compact(vis, eye);
+        }
+        let shift = pvis
+            .binary_search(&parent.vertices[0])
+            .expect("the parent's origin is in its Vis");
+        let line = &self.lines[g];
+        let mut edges: Vec<Option<u32>> = Vec::with_capacity(k);
+        let mut todo: Vec<usize> = Vec::new();
+        for s in 0..k {
+            let (x, y) = (vis[s], vis[(s + 1) % k]);
+            let kept = (!line.contains(x) && !line.contains(y))
+                .then(|| pvis.binary_search(&x).ok())
+                .flatten()
+                .filter(|&j| pvis[(j + 1) % pk] == y);
+            match kept {
+                Some(j) => edges.push(parent.edges[(j + pk - shift) % pk]),
+                None => {
+                    edges.push(None);
+                    todo.push(s);
+                }
+            }
+        }
+        for s in todo {
+            let (x, y) = (vis[s] as usize, vis[(s + 1) % k] as usize);
+            edges[s] = self.gap(x, y, k, eye);
+        }
+        self.rotated(vis, edges)
+    }
+
+    /// The compact skeleton from Vis and its edges in Vis order, rotated to
+    /// the origin: the leftmost, then lowest, of the reflex vertices seen,
+    /// else of all seen.
+    fn rotated(&self, vis: &[u32], mut edges: Vec<Option<u32>>) -> Compact {
+        let v = self.map.vertices();
+        let k = vis.len();
         let pick = |pool: &mut dyn Iterator<Item = usize>| {
             pool.min_by_key(|&s| {
                 let p: Point = v[vis[s] as usize];
