@@ -13,7 +13,7 @@ use crate::rays::{group_by_line, LineKey, VisibilityRay};
 use rug::{Integer, Rational};
 use std::cmp::Ordering;
 use wai_exact::{
-    construct_intersection, orientation, orientation_rat, Line, Orientation, RatPoint,
+    construct_intersection, gcd_u128, orientation, orientation_rat, Line, Orientation, RatPoint,
 };
 use wai_map::Map;
 use wai_visibility::OnMap;
@@ -139,16 +139,9 @@ pub struct Arrangement {
 pub(crate) fn primitive_dir(line: &Line) -> (i128, i128) {
     let (a, b) = (line.a(), line.b());
     let (dx, dy) = (b.x - a.x, b.y - a.y);
-    let g = gcd(dx.unsigned_abs(), dy.unsigned_abs());
+    let g = gcd_u128(dx.unsigned_abs(), dy.unsigned_abs());
     let g = i128::try_from(g).expect("a coordinate difference fits an i128");
     (dx / g, dy / g)
-}
-
-fn gcd(mut x: u128, mut y: u128) -> u128 {
-    while y != 0 {
-        (x, y) = (y, x % y);
-    }
-    x
 }
 
 /// The sign of the cross product `u × v`, exactly.

@@ -39,7 +39,7 @@ use crate::line_view::{Beside, LineView};
 use rug::Integer;
 use std::cmp::Ordering;
 use std::collections::VecDeque;
-use wai_exact::{Orientation, Point, RatPoint};
+use wai_exact::{gcd_u128, Orientation, Point, RatPoint};
 use wai_map::Map;
 use wai_visibility::{LineLabel, Skeleton, SkeletonKey, VisibilityIndex};
 
@@ -126,7 +126,7 @@ impl EdgeLines {
                 let (p, q) = (v[i], v[(i + 1) % n]);
                 // Differences of coordinates below 2^MAX_COORD_BITS fit.
                 let (mut a, mut b) = (q.y - p.y, p.x - q.x);
-                let g = gcd(a.unsigned_abs(), b.unsigned_abs()) as i128;
+                let g = gcd_u128(a.unsigned_abs(), b.unsigned_abs()) as i128;
                 (a, b) = (a / g, b / g);
                 if a < 0 || (a == 0 && b < 0) {
                     (a, b) = (-a, -b);
@@ -164,13 +164,6 @@ impl EdgeLines {
         };
         (*a, *b, c)
     }
-}
-
-fn gcd(mut x: u128, mut y: u128) -> u128 {
-    while y != 0 {
-        (x, y) = (y, x % y);
-    }
-    x
 }
 
 impl Compact {

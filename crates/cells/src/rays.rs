@@ -4,8 +4,8 @@ use rug::Integer;
 use std::cmp::Ordering;
 use std::collections::BTreeMap;
 use wai_exact::{
-    compare_along, compare_intersections_along, construct_intersection, orientation, side_of_line,
-    Line, Orientation, Point, RatPoint, Side,
+    compare_along, compare_intersections_along, construct_intersection, gcd_u128, orientation,
+    side_of_line, Line, Orientation, Point, RatPoint, Side,
 };
 use wai_map::Map;
 use wai_visibility::{OnMap, VisibilityIndex};
@@ -112,7 +112,7 @@ impl LineKey {
     pub fn of(line: &Line) -> LineKey {
         let (p, q) = (line.a(), line.b());
         let (mut a, mut b) = (q.y - p.y, p.x - q.x);
-        let g = gcd(a.unsigned_abs(), b.unsigned_abs());
+        let g = gcd_u128(a.unsigned_abs(), b.unsigned_abs());
         let g = i128::try_from(g).expect("a coordinate difference fits an i128");
         a /= g;
         b /= g;
@@ -143,13 +143,6 @@ impl LineKey {
     pub fn contains(&self, p: Point) -> bool {
         Integer::from(self.a) * p.x + Integer::from(self.b) * p.y == self.c
     }
-}
-
-fn gcd(mut x: u128, mut y: u128) -> u128 {
-    while y != 0 {
-        (x, y) = (y, x % y);
-    }
-    x
 }
 
 /// Edge case (c): the rays grouped by supporting line, for the arrangement

@@ -32,7 +32,7 @@ pub use intersection::{
     INTERSECTION_FAST_BITS,
 };
 pub use line::Line;
-pub use point::{Point, RatPoint, MAX_COORD_BITS};
+pub use point::{gcd_u128, Point, RatPoint, MAX_COORD_BITS};
 pub use polygon::{locate, locate_rat, signed_area_twice, Containment};
 pub use predicates::{
     compare_along, orientation, orientation_rat, side_of_line, side_of_line_rat, Orientation, Side,

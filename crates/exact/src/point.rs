@@ -187,49 +187,40 @@ impl fmt::Display for RatPoint {
     }
 }
 
-/// Binary gcd (Stein): shifts and subtractions, no 128-bit division.
-fn gcd_u128(mut x: u128, mut y: u128) -> u128 {
-    if let (Ok(a), Ok(b)) = (u64::try_from(x), u64::try_from(y)) {
-        return u128::from(gcd_u64(a, b));
-    }
-    if x == 0 {
-        return y;
-    }
-    if y == 0 {
-        return x;
-    }
-    let shift = (x | y).trailing_zeros();
-    x >>= x.trailing_zeros();
-    loop {
-        y >>= y.trailing_zeros();
-        if x > y {
-            std::mem::swap(&mut x, &mut y);
+/// Binary gcd (Stein) on one unsigned type: shifts and subtractions, no
+/// division.
+macro_rules! binary_gcd {
+    ($name:ident, $t:ty) => {
+        fn $name(mut x: $t, mut y: $t) -> $t {
+            if x == 0 {
+                return y;
+            }
+            if y == 0 {
+                return x;
+            }
+            let shift = (x | y).trailing_zeros();
+            x >>= x.trailing_zeros();
+            loop {
+                y >>= y.trailing_zeros();
+                if x > y {
+                    std::mem::swap(&mut x, &mut y);
+                }
+                y -= x;
+                if y == 0 {
+                    return x << shift;
+                }
+            }
         }
-        y -= x;
-        if y == 0 {
-            return x << shift;
-        }
-    }
+    };
 }
 
-/// [`gcd_u128`] on 64 bits.
-fn gcd_u64(mut x: u64, mut y: u64) -> u64 {
-    if x == 0 {
-        return y;
-    }
-    if y == 0 {
-        return x;
-    }
-    let shift = (x | y).trailing_zeros();
-    x >>= x.trailing_zeros();
-    loop {
-        y >>= y.trailing_zeros();
-        if x > y {
-            std::mem::swap(&mut x, &mut y);
-        }
-        y -= x;
-        if y == 0 {
-            return x << shift;
-        }
+binary_gcd!(gcd_u64, u64);
+binary_gcd!(gcd_u128_wide, u128);
+
+/// The gcd of two `u128` (`gcd(0, 0) = 0`), on 64 bits when both fit.
+pub fn gcd_u128(x: u128, y: u128) -> u128 {
+    match (u64::try_from(x), u64::try_from(y)) {
+        (Ok(a), Ok(b)) => u128::from(gcd_u64(a, b)),
+        _ => gcd_u128_wide(x, y),
     }
 }

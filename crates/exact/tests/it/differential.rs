@@ -531,3 +531,17 @@ proptest! {
         prop_assert_eq!(wai_exact::mul_checked(a, b), a.checked_mul(b));
     }
 }
+
+proptest! {
+    #![proptest_config(config(3000))]
+
+    /// Both paths of the binary gcd (64 and 128 bits) equal GMP's gcd.
+    #[test]
+    fn gcd_u128_equals_gmp(
+        x in prop_oneof![any::<u64>().prop_map(u128::from), any::<u128>(), Just(0u128), Just(u128::MAX)],
+        y in prop_oneof![any::<u64>().prop_map(u128::from), any::<u128>(), Just(0u128), Just(u128::MAX)],
+    ) {
+        let gmp = Integer::from(x).gcd(&Integer::from(y));
+        prop_assert_eq!(Integer::from(wai_exact::gcd_u128(x, y)), gmp);
+    }
+}
