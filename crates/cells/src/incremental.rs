@@ -471,7 +471,7 @@ impl<'a> Walker<'a> {
         assert!(k > 0, "a point of the interior sees a map vertex ({eye:?})");
         let mut edges: Vec<Option<u32>> = Vec::with_capacity(k);
         for s in 0..k {
-            let (x, y) = (vis[s] as usize, vis[(s + 1) % k] as usize);
+            let (x, y) = (vis[s] as usize, vis[next(s, k)] as usize);
             edges.push(self.gap(x, y, k, eye));
         }
         self.rotated(vis, edges)
@@ -499,25 +499,41 @@ impl<'a> Walker<'a> {
         let shift = pvis
             .binary_search(&parent.vertices[0])
             .expect("the parent's origin is in its Vis");
-        let line = &self.lines[g];
+        // Which of Vis lie on the line, and where each x sits in the
+        // parent's Vis: merges of ascending lists.
+        let on = self.lines[g].vertices();
+        let mut m = 0;
+        let on_line: Vec<bool> = vis
+            .iter()
+            .map(|&x| {
+                while m < on.len() && on[m] < x {
+                    m += 1;
+                }
+                m < on.len() && on[m] == x
+            })
+            .collect();
         let mut edges: Vec<Option<u32>> = Vec::with_capacity(k);
         let mut todo: Vec<usize> = Vec::new();
+        let mut j = 0;
         for s in 0..k {
-            let (x, y) = (vis[s], vis[(s + 1) % k]);
-            let kept = (!line.contains(x) && !line.contains(y))
-                .then(|| pvis.binary_search(&x).ok())
-                .flatten()
-                .filter(|&j| pvis[(j + 1) % pk] == y);
-            match kept {
-                Some(j) => edges.push(parent.edges[(j + pk - shift) % pk]),
-                None => {
-                    edges.push(None);
-                    todo.push(s);
-                }
+            let (x, y) = (vis[s], vis[next(s, k)]);
+            while j < pk && pvis[j] < x {
+                j += 1;
+            }
+            let kept = !on_line[s]
+                && !on_line[next(s, k)]
+                && j < pk
+                && pvis[j] == x
+                && pvis[next(j, pk)] == y;
+            if kept {
+                edges.push(parent.edges[back(j, shift, pk)]);
+            } else {
+                edges.push(None);
+                todo.push(s);
             }
         }
         for s in todo {
-            let (x, y) = (vis[s] as usize, vis[(s + 1) % k] as usize);
+            let (x, y) = (vis[s] as usize, vis[next(s, k)] as usize);
             edges[s] = self.gap(x, y, k, eye);
         }
         self.rotated(vis, edges)
@@ -550,12 +566,12 @@ impl<'a> Walker<'a> {
     fn gap(&mut self, x: usize, y: usize, k: usize, eye: &Eye) -> Option<u32> {
         let v = self.map.vertices();
         let n = v.len();
-        let e = if y == (x + 1) % n && k > 1 {
+        let e = if y == next(x, n) && k > 1 {
             return None;
-        } else if eye.orientation(v[x], v[(x + 1) % n]) == Orientation::CounterClockwise {
+        } else if eye.orientation(v[x], v[next(x, n)]) == Orientation::CounterClockwise {
             x
-        } else if eye.orientation(v[(y + n - 1) % n], v[y]) == Orientation::CounterClockwise {
-            (y + n - 1) % n
+        } else if eye.orientation(v[back(y, 1, n)], v[y]) == Orientation::CounterClockwise {
+            back(y, 1, n)
         } else {
             self.beyond(x, eye)
         };
@@ -600,8 +616,8 @@ impl<'a> Walker<'a> {
         let mut touched: Vec<usize> = Vec::with_capacity(2 * near.len());
         for &u in near {
             let j = at(u).expect("f sees the vertices the cell sees on its lines");
-            let s = (j + k - shift) % k;
-            touched.extend([s, (s + k - 1) % k]);
+            let s = back(j, shift, k);
+            touched.extend([s, back(s, 1, k)]);
         }
         touched.sort_unstable();
         touched.dedup();
@@ -613,7 +629,7 @@ impl<'a> Walker<'a> {
         for s in touched {
             let (x, y) = (
                 face.vertices[s] as usize,
-                face.vertices[(s + 1) % k] as usize,
+                face.vertices[next(s, k)] as usize,
             );
             let e = self.gap(x, y, k, &eye);
             if e != face.edges[s] {
@@ -711,5 +727,25 @@ impl<'a> Walker<'a> {
             "the ray from {eye:?} through map vertex {x} does not enter the map beyond it"
         );
         view[at - 1].1
+    }
+}
+
+/// `(i + 1) mod k` for `i < k`, without a division (hot loops).
+#[inline]
+fn next(i: usize, k: usize) -> usize {
+    if i + 1 == k {
+        0
+    } else {
+        i + 1
+    }
+}
+
+/// `(i − d) mod k` for `i, d < k`, without a division.
+#[inline]
+fn back(i: usize, d: usize, k: usize) -> usize {
+    if i >= d {
+        i - d
+    } else {
+        i + k - d
     }
 }
