@@ -152,6 +152,18 @@ pub(crate) fn cross_sign(u: (i128, i128), v: (i128, i128)) -> Ordering {
     }
 }
 
+/// A direction strictly inside the corner that runs counter-clockwise from
+/// direction `d` to direction `d2` (consecutive edges around a vertex): the
+/// sum of the two, negated for a reflex corner, or `d` turned left for a
+/// straight one. Primitive directions are below 2^101, so the sums fit.
+pub(crate) fn inside_corner(d: (i128, i128), d2: (i128, i128)) -> (i128, i128) {
+    match cross_sign(d, d2) {
+        Ordering::Greater => (d.0 + d2.0, d.1 + d2.1),
+        Ordering::Less => (-(d.0 + d2.0), -(d.1 + d2.1)),
+        Ordering::Equal => (-d.1, d.0),
+    }
+}
+
 /// The sign of the dot product `u · v`, exactly.
 pub(crate) fn dot_sign(u: (i128, i128), v: (i128, i128)) -> Ordering {
     let fast = mul(u.0, v.0).and_then(|p| p.checked_add(mul(u.1, v.1)?));

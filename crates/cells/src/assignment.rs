@@ -3,7 +3,8 @@
 //! cell.
 
 use crate::arrangement::{
-    cross_sign, dot_sign, primitive_dir, Arrangement, EdgeId, FaceId, Support, VertexId,
+    cross_sign, dot_sign, inside_corner, primitive_dir, Arrangement, EdgeId, FaceId, Support,
+    VertexId,
 };
 use crate::rays::RaySide;
 use std::cmp::Ordering;
@@ -198,13 +199,7 @@ pub(crate) fn assign(arr: &Arrangement) -> BoundaryAssignment {
             if f == arr.outer_face() {
                 continue;
             }
-            let (d, d2) = (arr.direction(out[i]), arr.direction(out[(i + 1) % k]));
-            // A direction strictly inside the wedge of f at v.
-            let w = match cross_sign(d, d2) {
-                Ordering::Greater => (d.0 + d2.0, d.1 + d2.1),
-                Ordering::Less => (-(d.0 + d2.0), -(d.1 + d2.1)),
-                Ordering::Equal => (-d.1, d.0),
-            };
+            let w = inside_corner(arr.direction(out[i]), arr.direction(out[(i + 1) % k]));
             let fits = through.iter().all(|&r| {
                 let side = match cross_sign(ray_dir[r], w) {
                     Ordering::Greater => Some(RaySide::Left),

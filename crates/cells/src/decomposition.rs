@@ -2,7 +2,7 @@
 //! boundary assignment (sec. 3.6), the skeleton of every cell (Def 3.9) and
 //! the equivalence classes of cells (Def 3.10).
 
-use crate::arrangement::{cross_sign, Arrangement, EdgeId, FaceId, Support, VertexId};
+use crate::arrangement::{cross_sign, Arrangement, EdgeId, FaceId, HalfEdgeId, Support, VertexId};
 use crate::assignment::BoundaryAssignment;
 use crate::eye::Eye;
 use crate::fx::FxHashMap;
@@ -236,8 +236,9 @@ impl<'m> Decomposition<'m> {
         let mut corners: Vec<Option<[VertexId; 3]>> = vec![None; arrangement.face_count()];
         let mut sizes = Vec::with_capacity(total);
         for &f in &cells {
-            sizes.push(arrangement.face_half_edges(f).len());
-            corners[f] = Some(interior_corners(&arrangement, f));
+            let hs = arrangement.face_half_edges(f);
+            sizes.push(hs.len());
+            corners[f] = Some(interior_corners(&arrangement, &hs));
         }
         let mut walker = Walker::new(map, &arrangement, &index);
         let walked = walker.walk(&corners, &mut |done| {
@@ -582,12 +583,11 @@ impl Rep {
     }
 }
 
-/// Three non-collinear vertices of the convex face `f`, whose centroid is
-/// an interior point: the ends of two consecutive boundary edges that turn
-/// (their directions are not parallel), so no orientation test on rational
-/// points is needed.
-pub(crate) fn interior_corners(arr: &Arrangement, f: FaceId) -> [VertexId; 3] {
-    let hs = arr.face_half_edges(f);
+/// Three non-collinear vertices of a convex face with boundary cycle
+/// `hs`, whose centroid is an interior point: the ends of two consecutive
+/// boundary edges that turn (their directions are not parallel), so no
+/// orientation test on rational points is needed.
+pub(crate) fn interior_corners(arr: &Arrangement, hs: &[HalfEdgeId]) -> [VertexId; 3] {
     let k = hs.len();
     let i = (0..k)
         .find(|&i| {

@@ -31,15 +31,16 @@
 //! dimension of the test maps, and the T3.3b checker compares the two on
 //! every cell of every stress map.
 
-use crate::arrangement::{cross_sign, Arrangement, FaceId, Support, VertexId};
+use crate::arrangement::{cross_sign, inside_corner, Arrangement, FaceId, Support, VertexId};
 use crate::decomposition::LowerSite;
 use crate::eye::{angle_cmp, dir, mul, Eye};
 use crate::fx::{FxHashMap, FxHasher};
 use crate::line_view::{Beside, LineView};
+use crate::rays::LineKey;
 use rug::Integer;
 use std::cmp::Ordering;
 use std::collections::VecDeque;
-use wai_exact::{gcd_u128, Orientation, Point, RatPoint};
+use wai_exact::{Line, Orientation, Point, RatPoint};
 use wai_map::Map;
 use wai_visibility::{LineLabel, Skeleton, SkeletonKey, VisibilityIndex};
 
@@ -106,9 +107,8 @@ impl Wide {
 }
 
 /// The lines of the map's edges in a form that translates cheaply, for
-/// telling skeletons apart without building their [`SkeletonKey`]s: the
-/// line a·x + b·y = c with (a, b) primitive and sign-normalised (a > 0,
-/// or a = 0 and b > 0), which is unique for the line, as the key's
+/// telling skeletons apart without building their [`SkeletonKey`]s: each
+/// line's [`LineKey`] a·x + b·y = c, unique for the line, as the key's
 /// [`LineLabel`] is (that one is also reduced by the gcd with c).
 pub(crate) struct EdgeLines {
     /// By map edge: (a, b, c), c also as an `i128` if it fits.
@@ -123,17 +123,11 @@ impl EdgeLines {
         let n = v.len();
         let by_edge: Vec<(i128, i128, Integer, Option<i128>)> = (0..n)
             .map(|i| {
-                let (p, q) = (v[i], v[(i + 1) % n]);
-                // Differences of coordinates below 2^MAX_COORD_BITS fit.
-                let (mut a, mut b) = (q.y - p.y, p.x - q.x);
-                let g = gcd_u128(a.unsigned_abs(), b.unsigned_abs()) as i128;
-                (a, b) = (a / g, b / g);
-                if a < 0 || (a == 0 && b < 0) {
-                    (a, b) = (-a, -b);
-                }
-                let c = Integer::from(a) * p.x + Integer::from(b) * p.y;
+                let line = Line::new(v[i], v[next(i, n)]).expect("distinct vertices");
+                let key = LineKey::of(&line);
+                let c = key.c().clone();
                 let small = c.to_i128();
-                (a, b, c, small)
+                (key.a(), key.b(), c, small)
             })
             .collect();
         let wrapping = by_edge
@@ -386,12 +380,7 @@ impl<'a> Walker<'a> {
             let k = out.len();
             let mut sides = Vec::with_capacity(k * lines.len());
             for i in 0..k {
-                let (d, d2) = (arr.direction(out[i]), arr.direction(out[(i + 1) % k]));
-                let w = match cross_sign(d, d2) {
-                    Ordering::Greater => (d.0 + d2.0, d.1 + d2.1),
-                    Ordering::Less => (-(d.0 + d2.0), -(d.1 + d2.1)),
-                    Ordering::Equal => (-d.1, d.0),
-                };
+                let w = inside_corner(arr.direction(out[i]), arr.direction(out[next(i, k)]));
                 for &(g, _) in &lines {
                     sides.push(match cross_sign(arr.ray_group(g).dir, w) {
                         Ordering::Less => Beside::Right,
