@@ -1,6 +1,10 @@
 //! The decomposition (rays, arrangement, assignment, a skeleton per cell,
 //! classes) of thesis-size and family maps. Ids `decompose/{map}/{param}`.
 
+// The allocator of every binary of the workspace (see Cargo.toml).
+#[global_allocator]
+static ALLOCATOR: mimalloc::MiMalloc = mimalloc::MiMalloc;
+
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion, Throughput};
 use std::time::Duration;
 use wai_cells::Decomposition;

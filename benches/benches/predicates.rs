@@ -4,6 +4,10 @@
 //! Ids: `predicates/<predicate>/{fast,rug}`; each iteration runs the whole
 //! batch.
 
+// The allocator of every binary of the workspace (see Cargo.toml).
+#[global_allocator]
+static ALLOCATOR: mimalloc::MiMalloc = mimalloc::MiMalloc;
+
 use criterion::{black_box, criterion_group, criterion_main, Criterion};
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;

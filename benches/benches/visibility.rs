@@ -11,6 +11,10 @@
 //! also forces the exact value of every output coordinate, the fair
 //! comparison for exact output; `cgal-lazy` leaves Epeck's lazy values.
 
+// The allocator of every binary of the workspace (see Cargo.toml).
+#[global_allocator]
+static ALLOCATOR: mimalloc::MiMalloc = mimalloc::MiMalloc;
+
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion};
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;

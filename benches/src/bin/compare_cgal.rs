@@ -62,6 +62,10 @@
 //!
 //! Progress goes to stderr, the report to stdout.
 
+// The allocator of every binary of the workspace (see Cargo.toml).
+#[global_allocator]
+static ALLOCATOR: mimalloc::MiMalloc = mimalloc::MiMalloc;
+
 use rug::Integer;
 use std::collections::BTreeMap;
 use std::fmt::Write as _;

@@ -10,6 +10,10 @@
     reason = "plots, fits and timings are output only"
 )]
 
+// The allocator of every binary of the workspace (see Cargo.toml).
+#[global_allocator]
+static ALLOCATOR: mimalloc::MiMalloc = mimalloc::MiMalloc;
+
 use plotters::prelude::*;
 use std::io::Write;
 use std::path::PathBuf;

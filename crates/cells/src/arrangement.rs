@@ -7,13 +7,15 @@
 //! by index.
 
 use crate::assignment::{assign, BoundaryAssignment, Conflict};
-use crate::eye::{mul, Eye};
+use crate::eye::{mul, small_of, Eye, Pt};
 use crate::fx::FxHashMap;
 use crate::rays::{group_by_line, LineKey, VisibilityRay};
+use rayon::prelude::*;
 use rug::{Integer, Rational};
 use std::cmp::Ordering;
 use wai_exact::{
-    construct_intersection, gcd_u128, orientation, orientation_rat, Line, Orientation, RatPoint,
+    construct_intersection, construct_intersection_i128, gcd_u128, orientation, orientation_rat,
+    Line, Orientation, RatPoint,
 };
 use wai_map::Map;
 use wai_visibility::OnMap;
@@ -125,6 +127,9 @@ pub struct Arrangement {
     pub(crate) faces: Vec<Face>,
     // Geometry, by index.
     pub(crate) points: Vec<RatPoint>,
+    /// By vertex: its point's homogeneous coordinates as `i128`s, if they
+    /// fit (the fast paths start from these).
+    pub(crate) small: Vec<Option<[i128; 3]>>,
     pub(crate) on_boundary: Vec<bool>,
     pub(crate) edges: Vec<EdgeGeometry>,
     /// By edge: the primitive direction of half-edge 2e.
@@ -206,6 +211,31 @@ pub(crate) fn each_meeting_pair(boxes: &[[i128; 4]], mut f: impl FnMut(usize, us
     }
 }
 
+/// [`each_meeting_pair`] in parallel: `f(i, j)` for every pair of boxes
+/// that meet, its `Some` results in the order the sequential version
+/// visits the pairs.
+pub(crate) fn par_meeting_pairs<T: Send>(
+    boxes: &[[i128; 4]],
+    f: impl Fn(usize, usize) -> Option<T> + Sync,
+) -> Vec<T> {
+    let mut order: Vec<usize> = (0..boxes.len()).collect();
+    order.sort_by_key(|&i| boxes[i][0]);
+    let order = &order;
+    let f = &f;
+    order
+        .par_iter()
+        .enumerate()
+        .with_min_len(16)
+        .flat_map_iter(|(k, &i)| {
+            order[k + 1..]
+                .iter()
+                .take_while(move |&&j| boxes[j][0] <= boxes[i][2])
+                .filter(move |&&j| boxes_meet(&boxes[i], &boxes[j]))
+                .filter_map(move |&j| f(i, j))
+        })
+        .collect()
+}
+
 pub(crate) fn bbox<'a>(pts: impl IntoIterator<Item = &'a RatPoint>) -> [i128; 4] {
     let mut b = [i128::MAX, i128::MAX, i128::MIN, i128::MIN];
     for p in pts {
@@ -229,26 +259,101 @@ pub(crate) fn boxes_meet(a: &[i128; 4], b: &[i128; 4]) -> bool {
     a[0] <= b[2] && b[0] <= a[2] && a[1] <= b[3] && b[1] <= a[3]
 }
 
-/// The arrangement's points, each stored once: found again by hash and
-/// exact equality.
+/// The arrangement's points, each stored once: found again by their
+/// `i128` coordinates, or for larger ones by hash and exact equality.
 struct Points {
     points: Vec<RatPoint>,
-    /// By the hash of a point: the ids of the points with that hash.
-    index: FxHashMap<u64, Vec<VertexId>>,
+    /// By point: its homogeneous coordinates as `i128`s, if they fit.
+    small: Vec<Option<[i128; 3]>>,
+    /// The points whose coordinates fit, by them.
+    by_small: FxHashMap<[i128; 3], VertexId>,
+    /// The others: the first point with a given hash.
+    by_hash: FxHashMap<u64, VertexId>,
+    /// By point: the next point with the same hash, or `usize::MAX`.
+    same_hash: Vec<VertexId>,
+}
+
+/// A point as the pairs of rays construct it.
+enum Meet {
+    /// Its homogeneous coordinates in lowest terms, `w > 0`.
+    Small([i128; 3]),
+    /// Its exact point and hash.
+    Big(RatPoint, u64),
+}
+
+/// The hash [`Points`] files a large point under.
+fn point_hash(p: &RatPoint) -> u64 {
+    use std::hash::BuildHasher;
+    std::hash::BuildHasherDefault::<crate::fx::FxHasher>::default().hash_one(p)
 }
 
 impl Points {
-    fn intern(&mut self, p: RatPoint) -> VertexId {
-        use std::hash::BuildHasher;
-        let h = std::hash::BuildHasherDefault::<crate::fx::FxHasher>::default().hash_one(&p);
-        let bucket = self.index.entry(h).or_default();
-        if let Some(&i) = bucket.iter().find(|&&i| self.points[i] == p) {
-            return i;
+    fn new() -> Points {
+        Points {
+            points: Vec::new(),
+            small: Vec::new(),
+            by_small: FxHashMap::default(),
+            by_hash: FxHashMap::default(),
+            same_hash: Vec::new(),
         }
-        let i = self.points.len();
+    }
+
+    fn intern(&mut self, p: RatPoint) -> VertexId {
+        match small_of(&p) {
+            Some(t) => self.intern_small(t, || p),
+            None => {
+                let h = point_hash(&p);
+                self.intern_big(p, h)
+            }
+        }
+    }
+
+    fn intern_meet(&mut self, m: Meet) -> VertexId {
+        match m {
+            Meet::Small(t) => {
+                self.intern_small(t, || RatPoint::from_i128(t[0], t[1], t[2]).expect("w > 0"))
+            }
+            // GMP may have built a point whose coordinates fit.
+            Meet::Big(p, _) if small_of(&p).is_some() => self.intern(p),
+            Meet::Big(p, h) => self.intern_big(p, h),
+        }
+    }
+
+    /// A point whose coordinates in lowest terms `t` fit; `exact` builds
+    /// it if it is new.
+    fn intern_small(&mut self, t: [i128; 3], exact: impl FnOnce() -> RatPoint) -> VertexId {
+        let new = self.points.len();
+        let id = *self.by_small.entry(t).or_insert(new);
+        if id == new {
+            self.push(exact(), Some(t));
+        }
+        id
+    }
+
+    /// A point whose coordinates do not fit, with its hash `h`.
+    fn intern_big(&mut self, p: RatPoint, h: u64) -> VertexId {
+        let new = self.points.len();
+        let mut at = *self.by_hash.entry(h).or_insert(new);
+        if at != new {
+            loop {
+                if self.points[at] == p {
+                    return at;
+                }
+                if self.same_hash[at] == usize::MAX {
+                    break;
+                }
+                at = self.same_hash[at];
+            }
+            self.same_hash[at] = new;
+        }
+        self.push(p, None);
+        new
+    }
+
+    fn push(&mut self, p: RatPoint, small: Option<[i128; 3]>) {
         self.points.push(p);
-        bucket.push(i);
-        i
+        self.small.push(small);
+        self.same_hash.push(usize::MAX);
     }
 
     fn ray_end(&mut self, r: &VisibilityRay) -> VertexId {
@@ -269,13 +374,13 @@ pub(crate) enum Along {
 }
 
 impl Along {
-    pub(crate) fn of(d: (i128, i128), p: &RatPoint) -> Along {
+    pub(crate) fn of(d: (i128, i128), p: Pt<'_>) -> Along {
         let fast = || -> Option<Along> {
-            let (x, y, w) = (p.hx().to_i128()?, p.hy().to_i128()?, p.hw().to_i128()?);
+            let [x, y, w] = p.small?;
             let num = mul(x, d.0)?.checked_add(mul(y, d.1)?)?;
             Some(Along::Small(num, w))
         };
-        fast().unwrap_or_else(|| Along::Big(along(d, p)))
+        fast().unwrap_or_else(|| Along::Big(along(d, p.exact)))
     }
 
     /// A rational, small if it fits.
@@ -286,7 +391,7 @@ impl Along {
         }
     }
 
-    fn big(&self) -> Rational {
+    pub(crate) fn big(&self) -> Rational {
         match self {
             Along::Small(n, w) => Rational::from((*n, *w)),
             Along::Big(r) => r.clone(),
@@ -305,11 +410,24 @@ impl Along {
 }
 
 /// Sort point ids by `d · p` and drop duplicates.
-fn sort_along(d: (i128, i128), ids: &mut Vec<VertexId>, points: &[RatPoint]) {
+fn sort_along(
+    d: (i128, i128),
+    ids: &mut Vec<VertexId>,
+    points: &[RatPoint],
+    small: &[Option<[i128; 3]>],
+) {
     ids.sort_unstable();
     ids.dedup();
-    let mut keyed: Vec<(Along, VertexId)> =
-        ids.iter().map(|&i| (Along::of(d, &points[i]), i)).collect();
+    let mut keyed: Vec<(Along, VertexId)> = ids
+        .iter()
+        .map(|&i| {
+            let p = Pt {
+                small: small[i],
+                exact: &points[i],
+            };
+            (Along::of(d, p), i)
+        })
+        .collect();
     keyed.sort_by(|a, b| a.0.cmp(&b.0).then(a.1.cmp(&b.1)));
     *ids = keyed.into_iter().map(|(_, i)| i).collect();
 }
@@ -327,10 +445,7 @@ impl Arrangement {
         let rays = &owned[..];
         let v = map.vertices();
         let n = v.len();
-        let mut pts = Points {
-            points: Vec::new(),
-            index: FxHashMap::default(),
-        };
+        let mut pts = Points::new();
         for &p in v {
             pts.intern(RatPoint::from(p));
         }
@@ -380,17 +495,27 @@ impl Arrangement {
             let se = eyes[i].orientation(a, b);
             sa == se && sa != Orientation::Collinear
         };
-        each_meeting_pair(&boxes, |i, j| {
+        let crossings = par_meeting_pairs(&boxes, |i, j| {
             if group_of[i] == group_of[j] || apart(i, j) || apart(j, i) {
-                return;
+                return None;
             }
-            let Some(x) = construct_intersection(&rays[i].line, &rays[j].line) else {
-                return; // parallel lines
+            let (l1, l2) = (&rays[i].line, &rays[j].line);
+            // None for parallel lines.
+            let x = match construct_intersection_i128(l1, l2) {
+                Some(t) => Meet::Small(t?),
+                None => {
+                    let p = construct_intersection(l1, l2)?;
+                    let h = point_hash(&p);
+                    Meet::Big(p, h)
+                }
             };
-            let id = pts.intern(x);
+            Some((i, j, x))
+        });
+        for (i, j, x) in crossings {
+            let id = pts.intern_meet(x);
             on_line[group_of[i]].push(id);
             on_line[group_of[j]].push(id);
-        });
+        }
         // Points on map edges: the ends of rays in their relative interior.
         let mut on_edge: Vec<Vec<VertexId>> = (0..n).map(|i| vec![i, (i + 1) % n]).collect();
         for (r, &e) in rays.iter().zip(&ends) {
@@ -398,15 +523,25 @@ impl Arrangement {
                 on_edge[i].push(e);
             }
         }
-        let points = pts.points;
+        let (points, small) = (pts.points, pts.small);
         let mut on_boundary = vec![false; points.len()];
         // Edges: map edges first, then ray groups.
         let mut edges: Vec<EdgeGeometry> = Vec::new();
         let mut ends_of: Vec<(VertexId, VertexId)> = Vec::new();
         let mut dir_of: Vec<(i128, i128)> = Vec::new();
-        for (i, ids) in on_edge.iter_mut().enumerate() {
-            let d = primitive_dir(&Line::new(v[i], v[(i + 1) % n]).expect("distinct"));
-            sort_along(d, ids, &points);
+        let edge_dirs: Vec<(i128, i128)> = (0..n)
+            .map(|i| primitive_dir(&Line::new(v[i], v[(i + 1) % n]).expect("distinct")))
+            .collect();
+        on_edge
+            .par_iter_mut()
+            .zip(&edge_dirs)
+            .for_each(|(ids, &d)| sort_along(d, ids, &points, &small));
+        on_line
+            .par_iter_mut()
+            .zip(&groups)
+            .for_each(|(ids, g)| sort_along(g.dir, ids, &points, &small));
+        for (i, ids) in on_edge.iter().enumerate() {
+            let d = edge_dirs[i];
             for w in ids.windows(2) {
                 on_boundary[w[0]] = true;
                 on_boundary[w[1]] = true;
@@ -418,9 +553,8 @@ impl Arrangement {
                 dir_of.push(d);
             }
         }
-        for (g, ids) in on_line.iter_mut().enumerate() {
+        for (g, ids) in on_line.iter().enumerate() {
             let d = groups[g].dir;
-            sort_along(d, ids, &points);
             let pos: FxHashMap<VertexId, usize> =
                 ids.iter().enumerate().map(|(k, &i)| (i, k)).collect();
             let mut cover: Vec<Vec<usize>> = vec![Vec::new(); ids.len().saturating_sub(1)];
@@ -465,9 +599,10 @@ impl Arrangement {
                 (-d.0, -d.1)
             }
         };
+        out.par_iter_mut()
+            .for_each(|o| o.sort_by(|&x, &y| compare_angle(hdir(x), hdir(y))));
         let mut vertices = Vec::with_capacity(points.len());
-        for o in &mut out {
-            o.sort_by(|&x, &y| compare_angle(hdir(x), hdir(y)));
+        for o in &out {
             let k = o.len();
             for i in 0..k {
                 let h = o[i] ^ 1;
@@ -499,6 +634,7 @@ impl Arrangement {
             half_edges,
             faces,
             points,
+            small,
             on_boundary,
             edges,
             dirs: dir_of,
@@ -544,6 +680,13 @@ impl Arrangement {
     /// The exact point of vertex `v`.
     pub fn point(&self, v: VertexId) -> &RatPoint {
         &self.points[v]
+    }
+    /// The point of vertex `v` with its `i128` coordinates.
+    pub(crate) fn pt(&self, v: VertexId) -> Pt<'_> {
+        Pt {
+            small: self.small[v],
+            exact: &self.points[v],
+        }
     }
     /// Whether vertex `v` lies on the map boundary.
     pub fn is_on_map_boundary(&self, v: VertexId) -> bool {

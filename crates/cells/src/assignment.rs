@@ -3,10 +3,11 @@
 //! cell.
 
 use crate::arrangement::{
-    cross_sign, dot_sign, inside_corner, primitive_dir, Arrangement, EdgeId, FaceId, Support,
-    VertexId,
+    cross_sign, dot_sign, inside_corner, primitive_dir, Arrangement, EdgeGeometry, EdgeId, FaceId,
+    Support, VertexId,
 };
 use crate::rays::RaySide;
+use rayon::prelude::*;
 use std::cmp::Ordering;
 
 /// A boundary piece that two rays assign to different cells (reported,
@@ -118,7 +119,6 @@ fn nearest_anchor_ray(arr: &Arrangement, rays: &[usize], forward: &[bool]) -> Op
 }
 
 pub(crate) fn assign(arr: &Arrangement) -> BoundaryAssignment {
-    let mut conflicts = Vec::new();
     // By ray: its primitive direction, and whether it points along its
     // group's direction.
     let ray_dir: Vec<(i128, i128)> = arr.rays.iter().map(|r| primitive_dir(&r.line)).collect();
@@ -128,102 +128,131 @@ pub(crate) fn assign(arr: &Arrangement) -> BoundaryAssignment {
             forward[r] = dot_sign(ray_dir[r], g.dir) == Ordering::Greater;
         }
     }
-    let mut edge_owner = Vec::with_capacity(arr.edges.len());
-    for (e, geom) in arr.edges.iter().enumerate() {
-        let (f0, f1) = (arr.half_edges[2 * e].face, arr.half_edges[2 * e + 1].face);
-        match geom.support {
-            Support::MapEdge(_) => {
-                edge_owner.push(if f0 != arr.outer_face() { f0 } else { f1 });
-            }
-            Support::Rays(_) => {
-                let (mut left, mut right) = (Vec::new(), Vec::new());
-                for &r in &geom.rays {
-                    // Half-edge 2e points along `dir`; its face is on its left.
-                    let to_left = (arr.rays[r].side == RaySide::Left) == forward[r];
-                    if to_left {
-                        left.push(r);
-                    } else {
-                        right.push(r);
-                    }
-                }
-                let nearest = nearest_anchor_ray(arr, &geom.rays, &forward);
-                let owner = match nearest {
-                    // One way along the edge: the last obstruction passed
-                    // decides (its anchor is nearest behind the edge).
-                    Some(r) if left.contains(&r) => f0,
-                    Some(_) => f1,
-                    // Both ways (a doorway between two anchors): no side
-                    // is right (a one-dimensional cell); the lowest index
-                    // decides, and the conflict is reported.
-                    None if right.is_empty() || (!left.is_empty() && left[0] < right[0]) => f0,
-                    None => f1,
-                };
-                if !left.is_empty() && !right.is_empty() {
-                    conflicts.push(Conflict::Edge {
-                        edge: e,
-                        left,
-                        right,
-                        owner,
-                        both_ways: nearest.is_none(),
-                    });
-                }
-                edge_owner.push(owner);
-            }
-        }
+    // Each edge and each vertex on its own (in parallel), in index order.
+    let by_edge: Vec<(FaceId, Option<Conflict>)> = arr
+        .edges
+        .par_iter()
+        .enumerate()
+        .map(|(e, geom)| edge_owner(arr, e, geom, &forward))
+        .collect();
+    let by_vertex: Vec<(Option<FaceId>, Option<Conflict>)> = (0..arr.vertices.len())
+        .into_par_iter()
+        .map(|v| vertex_owner(arr, v, &ray_dir))
+        .collect();
+    let mut conflicts = Vec::new();
+    let mut edge_owner = Vec::with_capacity(by_edge.len());
+    for (owner, conflict) in by_edge {
+        edge_owner.push(owner);
+        conflicts.extend(conflict);
     }
-    let mut vertex_owner = Vec::with_capacity(arr.vertices.len());
-    for v in 0..arr.vertices.len() {
-        let out = arr.outgoing(v);
-        // Rays through v: those covering two edges at v.
-        let mut through: Vec<usize> = Vec::new();
-        let mut seen: Vec<usize> = Vec::new();
-        for &h in &out {
-            for &r in &arr.edges[h / 2].rays {
-                if seen.contains(&r) {
-                    through.push(r);
-                } else {
-                    seen.push(r);
-                }
-            }
-        }
-        through.sort_unstable();
-        // The cells around v, counter-clockwise, starting after the
-        // exterior if v is on it.
-        let k = out.len();
-        let start = (0..k)
-            .find(|&i| arr.half_edges[out[i]].face == arr.outer_face())
-            .map_or(0, |i| i + 1);
-        let mut owner = None;
-        for i in (0..k).map(|i| (start + i) % k) {
-            let f = arr.half_edges[out[i]].face;
-            if f == arr.outer_face() {
-                continue;
-            }
-            let w = inside_corner(arr.direction(out[i]), arr.direction(out[(i + 1) % k]));
-            let fits = through.iter().all(|&r| {
-                let side = match cross_sign(ray_dir[r], w) {
-                    Ordering::Greater => Some(RaySide::Left),
-                    Ordering::Less => Some(RaySide::Right),
-                    Ordering::Equal => None,
-                };
-                side == Some(arr.rays[r].side)
-            });
-            if fits {
-                owner = Some(f);
-                break;
-            }
-        }
-        if owner.is_none() {
-            conflicts.push(Conflict::Vertex {
-                vertex: v,
-                rays: through,
-            });
-        }
+    let mut vertex_owner = Vec::with_capacity(by_vertex.len());
+    for (owner, conflict) in by_vertex {
         vertex_owner.push(owner);
+        conflicts.extend(conflict);
     }
     BoundaryAssignment {
         edge_owner,
         vertex_owner,
         conflicts,
     }
+}
+
+/// The cell that owns edge `e` (sec. 3.6), and the conflict if rays on
+/// both sides cover it.
+fn edge_owner(
+    arr: &Arrangement,
+    e: usize,
+    geom: &EdgeGeometry,
+    forward: &[bool],
+) -> (FaceId, Option<Conflict>) {
+    let (f0, f1) = (arr.half_edges[2 * e].face, arr.half_edges[2 * e + 1].face);
+    match geom.support {
+        Support::MapEdge(_) => (if f0 != arr.outer_face() { f0 } else { f1 }, None),
+        Support::Rays(_) => {
+            let (mut left, mut right) = (Vec::new(), Vec::new());
+            for &r in &geom.rays {
+                // Half-edge 2e points along `dir`; its face is on its left.
+                let to_left = (arr.rays[r].side == RaySide::Left) == forward[r];
+                if to_left {
+                    left.push(r);
+                } else {
+                    right.push(r);
+                }
+            }
+            let nearest = nearest_anchor_ray(arr, &geom.rays, forward);
+            let owner = match nearest {
+                // One way along the edge: the last obstruction passed
+                // decides (its anchor is nearest behind the edge).
+                Some(r) if left.contains(&r) => f0,
+                Some(_) => f1,
+                // Both ways (a doorway between two anchors): no side is
+                // right (a one-dimensional cell); the lowest index
+                // decides, and the conflict is reported.
+                None if right.is_empty() || (!left.is_empty() && left[0] < right[0]) => f0,
+                None => f1,
+            };
+            let conflict = (!left.is_empty() && !right.is_empty()).then(|| Conflict::Edge {
+                edge: e,
+                left,
+                right,
+                owner,
+                both_ways: nearest.is_none(),
+            });
+            (owner, conflict)
+        }
+    }
+}
+
+/// The cell that owns vertex `v` (sec. 3.6): the first cell around `v`,
+/// counter-clockwise after the exterior, that lies on the ray's side
+/// ([`crate::VisibilityRay::side`]) of every ray through `v`; `None` and
+/// the conflict if none does.
+fn vertex_owner(
+    arr: &Arrangement,
+    v: usize,
+    ray_dir: &[(i128, i128)],
+) -> (Option<FaceId>, Option<Conflict>) {
+    let out = arr.outgoing(v);
+    // Rays through v: those covering two edges at v.
+    let mut through: Vec<usize> = Vec::new();
+    let mut seen: Vec<usize> = Vec::new();
+    for &h in &out {
+        for &r in &arr.edges[h / 2].rays {
+            if seen.contains(&r) {
+                through.push(r);
+            } else {
+                seen.push(r);
+            }
+        }
+    }
+    through.sort_unstable();
+    // The cells around v, counter-clockwise, starting after the exterior
+    // if v is on it.
+    let k = out.len();
+    let start = (0..k)
+        .find(|&i| arr.half_edges[out[i]].face == arr.outer_face())
+        .map_or(0, |i| i + 1);
+    for i in (0..k).map(|i| (start + i) % k) {
+        let f = arr.half_edges[out[i]].face;
+        if f == arr.outer_face() {
+            continue;
+        }
+        let w = inside_corner(arr.direction(out[i]), arr.direction(out[(i + 1) % k]));
+        let fits = through.iter().all(|&r| {
+            let side = match cross_sign(ray_dir[r], w) {
+                Ordering::Greater => Some(RaySide::Left),
+                Ordering::Less => Some(RaySide::Right),
+                Ordering::Equal => None,
+            };
+            side == Some(arr.rays[r].side)
+        });
+        if fits {
+            return (Some(f), None);
+        }
+    }
+    let conflict = Conflict::Vertex {
+        vertex: v,
+        rays: through,
+    };
+    (None, Some(conflict))
 }

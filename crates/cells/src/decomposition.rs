@@ -4,10 +4,11 @@
 
 use crate::arrangement::{cross_sign, Arrangement, EdgeId, FaceId, HalfEdgeId, Support, VertexId};
 use crate::assignment::BoundaryAssignment;
-use crate::eye::Eye;
+use crate::eye::{Eye, Pt};
 use crate::fx::FxHashMap;
 use crate::incremental::{Compact, EdgeLines, LowerSkeleton, Walker};
 use crate::rays::{visibility_rays, VisibilityRay};
+use rayon::prelude::*;
 use rug::Integer;
 use std::cmp::Ordering;
 use std::sync::OnceLock;
@@ -240,20 +241,27 @@ impl<'m> Decomposition<'m> {
             sizes.push(hs.len());
             corners[f] = Some(interior_corners(&arrangement, &hs));
         }
-        let mut walker = Walker::new(map, &arrangement, &index);
+        let walker = Walker::new(map, &arrangement, &index);
         let walked = walker.walk(&corners, &mut |done| {
             if done.is_multiple_of(step) && done < all {
                 progress(done, all);
             }
         });
         let mut table = ClassTable::new(map);
+        let hashes: Vec<u64> = cells
+            .par_iter()
+            .map(|&f| {
+                let sk = walked[f].as_ref().expect("every cell is walked");
+                sk.class_hash(map, &table.lines)
+            })
+            .collect();
         let mut cell_corners = Vec::with_capacity(total);
         let mut skeleton_index = Vec::with_capacity(total);
         let mut origins: Vec<usize> = Vec::with_capacity(total);
         for (i, &f) in cells.iter().enumerate() {
             let sk = walked[f].as_ref().expect("every cell is walked");
             origins.push(sk.origin());
-            let class = table.intern(sk, Rep::Face(f), &walked);
+            let class = table.intern_hashed(hashes[i], sk, Rep::Face(f), &walked);
             table.classes[class].push(f);
             table.complexity[class] += 2 * sizes[i];
             cell_corners.push(corners[f].expect("a cell"));
@@ -519,9 +527,12 @@ impl<'m> Decomposition<'m> {
 struct ClassTable<'m> {
     map: &'m Map,
     lines: EdgeLines,
-    /// Classes by the hash of their skeleton (equal hashes are told apart
-    /// by comparing skeletons).
-    by_hash: FxHashMap<u64, Vec<usize>>,
+    /// The first class whose skeleton has a given hash; the others with
+    /// that hash follow in `same_hash` (equal hashes are told apart by
+    /// comparing skeletons).
+    by_hash: FxHashMap<u64, usize>,
+    /// By class: the next class with the same hash, or `usize::MAX`.
+    same_hash: Vec<usize>,
     /// By class: the compact skeleton of its first cell.
     skeletons: Vec<Rep>,
     /// By class: its 2-cells.
@@ -538,6 +549,7 @@ impl<'m> ClassTable<'m> {
             map,
             lines: EdgeLines::new(map),
             by_hash: FxHashMap::default(),
+            same_hash: Vec::new(),
             skeletons: Vec::new(),
             classes: Vec::new(),
             complexity: Vec::new(),
@@ -549,16 +561,34 @@ impl<'m> ClassTable<'m> {
     /// `sk`) if it was not seen before. `walked`: the 2-cells' skeletons.
     fn intern(&mut self, sk: &Compact, rep: Rep, walked: &[Option<Compact>]) -> usize {
         let h = sk.class_hash(self.map, &self.lines);
-        let bucket = self.by_hash.entry(h).or_default();
-        if let Some(&c) = bucket.iter().find(|&&c| {
-            self.skeletons[c]
-                .get(walked)
-                .same_skeleton(sk, self.map, &self.lines)
-        }) {
-            return c;
+        self.intern_hashed(h, sk, rep, walked)
+    }
+
+    /// [`ClassTable::intern`] of a skeleton whose class hash is `h`.
+    fn intern_hashed(
+        &mut self,
+        h: u64,
+        sk: &Compact,
+        rep: Rep,
+        walked: &[Option<Compact>],
+    ) -> usize {
+        let new = self.skeletons.len();
+        let mut at = *self.by_hash.entry(h).or_insert(new);
+        if at != new {
+            loop {
+                let rep = self.skeletons[at].get(walked);
+                if rep.same_skeleton(sk, self.map, &self.lines) {
+                    return at;
+                }
+                if self.same_hash[at] == usize::MAX {
+                    break;
+                }
+                at = self.same_hash[at];
+            }
+            self.same_hash[at] = new;
         }
-        let c = self.skeletons.len();
-        bucket.push(c);
+        let c = new;
+        self.same_hash.push(usize::MAX);
         self.skeletons.push(rep);
         self.classes.push(Vec::new());
         self.complexity.push(0);
@@ -605,7 +635,7 @@ pub(crate) fn centroid(arr: &Arrangement, c: [VertexId; 3]) -> RatPoint {
 
 /// `(a + b + c) / 3`, exactly (through `i128` when it fits).
 pub(crate) fn centroid3(a: &RatPoint, b: &RatPoint, c: &RatPoint) -> RatPoint {
-    match Eye::centroid(a, b, c) {
+    match Eye::centroid(Pt::new(a), Pt::new(b), Pt::new(c)) {
         Eye::Small { x, y, w } => RatPoint::from_i128(x, y, w).expect("w > 0"),
         Eye::Big { .. } => centroid3_gmp(a, b, c),
     }

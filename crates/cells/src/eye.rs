@@ -79,6 +79,28 @@ pub(crate) fn angle_cmp(base: &Dir, u: &Dir, v: &Dir) -> Ordering {
     half(u).cmp(&half(v)).then_with(|| v.cross(u))
 }
 
+/// A rational point, with its homogeneous coordinates as `i128`s when
+/// they fit (the arrangement keeps them, so they are converted once).
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Pt<'a> {
+    pub(crate) small: Option<[i128; 3]>,
+    pub(crate) exact: &'a RatPoint,
+}
+
+impl<'a> Pt<'a> {
+    pub(crate) fn new(p: &'a RatPoint) -> Pt<'a> {
+        Pt {
+            small: small_of(p),
+            exact: p,
+        }
+    }
+}
+
+/// The homogeneous coordinates of `p` as `i128`s, if they fit.
+pub(crate) fn small_of(p: &RatPoint) -> Option<[i128; 3]> {
+    Some([p.hx().to_i128()?, p.hy().to_i128()?, p.hw().to_i128()?])
+}
+
 /// A rational viewpoint q = (X, Y) / W, for signs against map vertices
 /// (any W > 0: not necessarily in lowest terms).
 #[derive(Debug)]
@@ -99,27 +121,33 @@ impl Eye {
         }
     }
 
+    /// The point `p` itself.
+    pub(crate) fn at(p: Pt<'_>) -> Eye {
+        match p.small {
+            Some([x, y, w]) => Eye::Small { x, y, w },
+            None => Eye::new(p.exact),
+        }
+    }
+
     /// The midpoint of `a` and `b`, without reducing it (checked `i128`
     /// first, GMP on overflow).
-    pub(crate) fn midpoint(a: &RatPoint, b: &RatPoint) -> Eye {
-        let small = |p: &RatPoint| Some((p.hx().to_i128()?, p.hy().to_i128()?, p.hw().to_i128()?));
+    pub(crate) fn midpoint(a: Pt<'_>, b: Pt<'_>) -> Eye {
         let fast = || -> Option<Eye> {
-            let ((ax, ay, aw), (bx, by, bw)) = (small(a)?, small(b)?);
+            let ([ax, ay, aw], [bx, by, bw]) = (a.small?, b.small?);
             Some(Eye::Small {
                 x: mul(ax, bw)?.checked_add(mul(bx, aw)?)?,
                 y: mul(ay, bw)?.checked_add(mul(by, aw)?)?,
                 w: mul(aw, bw)?.checked_mul(2)?,
             })
         };
-        fast().unwrap_or_else(|| Eye::new(&RatPoint::midpoint(a, b)))
+        fast().unwrap_or_else(|| Eye::new(&RatPoint::midpoint(a.exact, b.exact)))
     }
 
     /// The centroid of `a`, `b` and `c`, without reducing it (checked
     /// `i128` first, GMP on overflow).
-    pub(crate) fn centroid(a: &RatPoint, b: &RatPoint, c: &RatPoint) -> Eye {
-        let small = |p: &RatPoint| Some((p.hx().to_i128()?, p.hy().to_i128()?, p.hw().to_i128()?));
+    pub(crate) fn centroid(a: Pt<'_>, b: Pt<'_>, c: Pt<'_>) -> Eye {
         let fast = || -> Option<Eye> {
-            let ((ax, ay, aw), (bx, by, bw), (cx, cy, cw)) = (small(a)?, small(b)?, small(c)?);
+            let ([ax, ay, aw], [bx, by, bw], [cx, cy, cw]) = (a.small?, b.small?, c.small?);
             let (bc, ac, ab) = (mul(bw, cw)?, mul(aw, cw)?, mul(aw, bw)?);
             let sum = |u: i128, v: i128, w: i128| -> Option<i128> {
                 mul(u, bc)?
@@ -132,7 +160,11 @@ impl Eye {
                 w: mul(aw, bc)?.checked_mul(3)?,
             })
         };
-        fast().unwrap_or_else(|| Eye::new(&crate::decomposition::centroid3_gmp(a, b, c)))
+        fast().unwrap_or_else(|| {
+            Eye::new(&crate::decomposition::centroid3_gmp(
+                a.exact, b.exact, c.exact,
+            ))
+        })
     }
 
     /// The direction from q to the map vertex `a`, scaled by W > 0.

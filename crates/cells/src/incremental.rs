@@ -34,31 +34,56 @@
 use crate::arrangement::{cross_sign, inside_corner, Arrangement, FaceId, Support, VertexId};
 use crate::decomposition::LowerSite;
 use crate::eye::{angle_cmp, dir, mul, Eye};
-use crate::fx::{FxHashMap, FxHasher};
+use crate::fx::FxHasher;
 use crate::line_view::{Beside, LineView};
 use crate::rays::LineKey;
+use rayon::prelude::*;
 use rug::Integer;
 use std::cmp::Ordering;
 use std::collections::VecDeque;
+use std::sync::atomic::{AtomicUsize, Ordering as AtomicOrdering};
+use std::sync::OnceLock;
 use wai_exact::{Line, Orientation, Point, RatPoint};
 use wai_map::Map;
 use wai_visibility::{LineLabel, Skeleton, SkeletonKey, VisibilityIndex};
 
-/// A skeleton in map terms: its vertices (map vertex ids) from the origin,
-/// and for each edge `None` (full) or the map edge an artificial edge lies
-/// on. Equal compact skeletons are equal skeletons in the same embedding;
-/// the converse fails only where an artificial edge's line holds several
-/// collinear map edges, which [`Compact::same_skeleton`] settles.
+/// A skeleton in map terms: Vis (the map vertices seen, ascending map
+/// ids), for each consecutive pair of Vis (cyclically) the edge between
+/// them, and where in Vis the origin sits; the skeleton's vertices are Vis
+/// rotated to start at the origin. An edge is [`FULL`] or the map edge an
+/// artificial edge lies on. Equal compact skeletons are equal skeletons in
+/// the same embedding; the converse fails only where an artificial edge's
+/// line holds several collinear map edges, which
+/// [`Compact::same_skeleton`] settles.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub(crate) struct Compact {
-    pub(crate) vertices: Vec<u32>,
-    edges: Vec<Option<u32>>,
+    vis: Vec<u32>,
+    /// `edges[i]` runs from `vis[i]` to `vis[i + 1]` (cyclically).
+    edges: Vec<u32>,
+    /// The origin is `vis[shift]`.
+    shift: u32,
 }
+
+/// A skeleton edge that is a full map edge, not an artificial one.
+const FULL: u32 = u32::MAX;
 
 impl Compact {
     /// The origin map vertex.
     pub(crate) fn origin(&self) -> usize {
-        self.vertices[0] as usize
+        self.vis[self.shift as usize] as usize
+    }
+
+    /// The skeleton's vertices and edges in order from the origin: map
+    /// vertex ids, and `None` (full) or the map edge of an artificial edge.
+    fn rotated(&self) -> impl Iterator<Item = (u32, Option<u32>)> + '_ {
+        let s = self.shift as usize;
+        let pair = |i: usize| {
+            (
+                self.vis[i],
+                (self.edges[i] != FULL).then_some(self.edges[i]),
+            )
+        };
+        (s..self.vis.len()).chain(0..s).map(pair)
     }
 
     /// The canonical key (as [`Skeleton::key`] would give it).
@@ -66,26 +91,18 @@ impl Compact {
         let v = map.vertices();
         let n = v.len();
         let o = v[self.origin()];
-        SkeletonKey {
-            offsets: self
-                .vertices
-                .iter()
-                .map(|&u| {
-                    let p = v[u as usize];
-                    (p.x - o.x, p.y - o.y)
-                })
-                .collect(),
-            labels: self
-                .edges
-                .iter()
-                .map(|e| {
-                    e.map(|e| {
-                        let e = e as usize;
-                        LineLabel::through(v[e], v[(e + 1) % n], o)
-                    })
-                })
-                .collect(),
-        }
+        let (offsets, labels) = self
+            .rotated()
+            .map(|(u, e)| {
+                let p = v[u as usize];
+                let label = e.map(|e| {
+                    let e = e as usize;
+                    LineLabel::through(v[e], v[(e + 1) % n], o)
+                });
+                ((p.x - o.x, p.y - o.y), label)
+            })
+            .unzip();
+        SkeletonKey { offsets, labels }
     }
 }
 
@@ -170,16 +187,14 @@ impl Compact {
         let mut h = FxHasher::default();
         // One word per vertex and per edge: the hash only sorts skeletons
         // into buckets, [`Compact::same_skeleton`] decides.
-        h.write_usize(self.vertices.len());
-        for &u in &self.vertices {
+        h.write_usize(self.vis.len());
+        for (u, e) in self.rotated() {
             // Below 2^(MAX_COORD_BITS + 1): no overflow.
             let p = v[u as usize];
             h.write_u64((p.x - o.x) as u64 ^ ((p.y - o.y) as u64).rotate_left(32));
-        }
-        for e in &self.edges {
             match e {
                 None => h.write_u8(0),
-                Some(e) => h.write_u64(lines.relative_wrapping(*e, o) as u64),
+                Some(e) => h.write_u64(lines.relative_wrapping(e, o) as u64),
             }
         }
         h.finish()
@@ -191,20 +206,17 @@ impl Compact {
     pub(crate) fn same_skeleton(&self, other: &Compact, map: &Map, lines: &EdgeLines) -> bool {
         let v = map.vertices();
         let (o, p) = (v[self.origin()], v[other.origin()]);
-        self.vertices.len() == other.vertices.len()
-            && self.vertices.iter().zip(&other.vertices).all(|(&x, &y)| {
+        self.vis.len() == other.vis.len()
+            && self.rotated().zip(other.rotated()).all(|((x, e), (y, f))| {
                 let (x, y) = (v[x as usize], v[y as usize]);
-                x.x - o.x == y.x - p.x && x.y - o.y == y.y - p.y
+                x.x - o.x == y.x - p.x
+                    && x.y - o.y == y.y - p.y
+                    && match (e, f) {
+                        (None, None) => true,
+                        (Some(e), Some(f)) => lines.relative(e, o) == lines.relative(f, p),
+                        _ => false,
+                    }
             })
-            && self
-                .edges
-                .iter()
-                .zip(&other.edges)
-                .all(|(e, f)| match (e, f) {
-                    (None, None) => true,
-                    (Some(e), Some(f)) => lines.relative(*e, o) == lines.relative(*f, p),
-                    _ => false,
-                })
     }
 }
 
@@ -221,7 +233,9 @@ pub(crate) enum LowerSkeleton {
 /// skeleton.
 pub(crate) type LowerSink<'s> = dyn FnMut(LowerSite, &[FaceId], LowerSkeleton) + 's;
 
-/// The skeletons of all cells of an arrangement, by walking it.
+/// The skeletons of all cells of an arrangement, by walking it. Shared
+/// by reference: its only state after construction is a cache filled
+/// once per map vertex.
 pub(crate) struct Walker<'a> {
     map: &'a Map,
     arr: &'a Arrangement,
@@ -231,101 +245,187 @@ pub(crate) struct Walker<'a> {
     /// By arrangement edge on rays: its slot on its line
     /// ([`LineView::slot`]); `u32::MAX` for map edges.
     edge_slot: Vec<u32>,
-    /// Views from map vertices, computed when first needed.
-    views: FxHashMap<usize, Vec<(usize, usize)>>,
+    /// By map vertex: the view from it, computed when first needed.
+    views: Vec<OnceLock<Vec<(usize, usize)>>>,
     /// By map vertex: reflex in the map.
     reflex: Vec<bool>,
-    /// By face id, after the walk: Vis of each cell (ascending map ids).
-    vis: Vec<Option<Vec<u32>>>,
-    /// Buffers reused from lower cell to lower cell.
-    scratch: (Vec<u32>, Vec<u32>),
 }
 
 impl<'a> Walker<'a> {
     pub(crate) fn new(map: &'a Map, arr: &'a Arrangement, index: &'a VisibilityIndex<'a>) -> Self {
         let lines = arr
             .ray_groups()
-            .iter()
+            .par_iter()
             .map(|g| LineView::new(map, arr.rays()[g.rays[0]].source(), g.dir))
             .collect::<Vec<LineView>>();
         let edge_slot = (0..arr.edge_count())
+            .into_par_iter()
             .map(|e| {
                 let Support::Rays(g) = arr.edge_support(e) else {
                     return u32::MAX;
                 };
                 let l = &lines[g];
                 let (a, b) = (arr.half_edge(2 * e).origin, arr.dest(2 * e));
-                let slot = l.slot(&l.position_of(arr.point(a)));
+                let slot = l.slot(&l.position_of(arr.pt(a)));
                 debug_assert_eq!(
                     slot,
-                    l.slot_before(&l.position_of(arr.point(b))),
+                    l.slot_before(&l.position_of(arr.pt(b))),
                     "an event strictly inside arrangement edge {e}"
                 );
                 u32::try_from(slot).expect("fewer than 2^32 events on a line")
             })
             .collect();
-        let v = map.vertices();
-        let n = v.len();
+        let n = map.vertices().len();
         Walker {
             map,
             arr,
             index,
             lines,
             edge_slot,
-            views: FxHashMap::default(),
-            vis: Vec::new(),
-            scratch: (Vec::new(), Vec::new()),
+            views: (0..n).map(|_| OnceLock::new()).collect(),
             reflex: (0..n).map(|i| map.is_reflex(i)).collect(),
         }
     }
 
-    /// Walk the 2-cells: `reps[f]` is the representative point of face `f`
-    /// (`None` for the outer face); the result is the skeleton of each cell
-    /// by face id. `progress(done)` is called after each 2-cell.
+    /// Walk the 2-cells: `corners[f]` are three vertices of face `f` whose
+    /// centroid is inside it (`None` for the outer face); the result is
+    /// the skeleton of each cell by face id. `progress(done)` is called
+    /// on the caller's thread as 2-cells are done.
+    ///
+    /// The cells are split into one part per thread (consecutive stretches
+    /// of a breadth-first order, so a part is few connected pieces), each
+    /// walked on its own from one query per piece. The skeleton of a cell
+    /// does not depend on which neighbour it was reached from, so the
+    /// result is the same for any number of threads.
     pub(crate) fn walk(
-        &mut self,
+        &self,
         corners: &[Option<[VertexId; 3]>],
         progress: &mut dyn FnMut(usize),
     ) -> Vec<Option<Compact>> {
         let arr = self.arr;
+        let order = self.breadth_first();
+        let parts = rayon::current_num_threads()
+            .min(order.len() / MIN_PART)
+            .max(1);
+        let mut part_of = vec![u32::MAX; arr.face_count()];
+        let size = order.len().div_ceil(parts);
+        for (i, &f) in order.iter().enumerate() {
+            part_of[f] = (i / size) as u32;
+        }
+        let done = AtomicUsize::new(0);
+        let mut walked: Vec<Vec<Option<Compact>>> = std::thread::scope(|scope| {
+            let (part_of, done, order) = (&part_of, &done, &order);
+            let range = |p: usize| &order[p * size..((p + 1) * size).min(order.len())];
+            let others: Vec<_> = (1..parts)
+                .map(|p| {
+                    scope.spawn(move || {
+                        self.walk_part(range(p), p as u32, part_of, corners, &mut || {
+                            done.fetch_add(1, AtomicOrdering::Relaxed);
+                        })
+                    })
+                })
+                .collect();
+            let first = self.walk_part(range(0), 0, part_of, corners, &mut || {
+                progress(done.fetch_add(1, AtomicOrdering::Relaxed) + 1);
+            });
+            std::iter::once(first)
+                .chain(
+                    others
+                        .into_iter()
+                        .map(|h| h.join().expect("a walk thread panicked")),
+                )
+                .collect()
+        });
+        let mut faces = walked.swap_remove(0);
+        for other in walked {
+            for (f, sk) in other.into_iter().enumerate() {
+                if sk.is_some() {
+                    faces[f] = sk;
+                }
+            }
+        }
+        progress(done.into_inner());
+        faces
+    }
+
+    /// The cells in breadth-first order across ray edges, from each cell
+    /// not yet reached (the interior of the map is connected and cells
+    /// meet across ray edges, so the first one reaches all).
+    fn breadth_first(&self) -> Vec<FaceId> {
+        let arr = self.arr;
+        let mut seen = vec![false; arr.face_count()];
+        let mut order = Vec::with_capacity(arr.face_count());
+        for start in arr.cells() {
+            if seen[start] {
+                continue;
+            }
+            seen[start] = true;
+            let mut i = order.len();
+            order.push(start);
+            while i < order.len() {
+                let f = order[i];
+                i += 1;
+                for h in arr.face_cycle(f) {
+                    if let Support::Rays(_) = arr.edge_support(h / 2) {
+                        let other = arr.half_edge(arr.half_edge(h).twin).face;
+                        if other != arr.outer_face() && !seen[other] {
+                            seen[other] = true;
+                            order.push(other);
+                        }
+                    }
+                }
+            }
+        }
+        order
+    }
+
+    /// Walk the cells of part `part` (`part_of`, by face), starting from
+    /// those of `order` not yet reached: the skeleton of each, by face id.
+    fn walk_part(
+        &self,
+        order: &[FaceId],
+        part: u32,
+        part_of: &[u32],
+        corners: &[Option<[VertexId; 3]>],
+        progress: &mut dyn FnMut(),
+    ) -> Vec<Option<Compact>> {
+        let arr = self.arr;
         let nf = arr.face_count();
-        let mut vis: Vec<Option<Vec<u32>>> = vec![None; nf];
+        // By face: Vis, once reached; then its skeleton, which keeps it.
+        let mut reached: Vec<Option<Vec<u32>>> = vec![None; nf];
         let mut faces: Vec<Option<Compact>> = vec![None; nf];
         let mut queue = VecDeque::new();
         // By face: the walked face it was reached from, across which line.
         let mut from: Vec<Option<(FaceId, usize)>> = vec![None; nf];
-        let mut done = 0;
-        // Every cell is reached from the first one: the interior of the
-        // map is connected and cells meet across ray edges.
-        for start in arr.cells() {
-            if vis[start].is_some() {
+        for &start in order {
+            if part_of[start] != part || faces[start].is_some() || reached[start].is_some() {
                 continue;
             }
             let c = corners[start].expect("cells have a point");
-            vis[start] = Some(self.queried(&crate::decomposition::centroid(arr, c)));
+            reached[start] = Some(self.queried(&crate::decomposition::centroid(arr, c)));
             queue.push_back(start);
             while let Some(f) = queue.pop_front() {
-                let here = vis[f].take().expect("queued faces have Vis");
+                let here = reached[f].take().expect("queued faces have Vis");
                 let c = corners[f].expect("a cell");
-                let eye = Eye::centroid(arr.point(c[0]), arr.point(c[1]), arr.point(c[2]));
+                let eye = Eye::centroid(arr.pt(c[0]), arr.pt(c[1]), arr.pt(c[2]));
                 let sk = match from[f] {
                     Some((p, g)) => {
-                        let (pvis, parent) = (vis[p].as_deref(), faces[p].as_ref());
-                        let (pvis, parent) = (pvis.expect("walked"), parent.expect("walked"));
-                        self.compact_across(&here, &eye, pvis, parent, g)
+                        let parent = faces[p].as_ref().expect("walked");
+                        self.compact_across(here, &eye, parent, g)
                     }
-                    None => self.compact(&here, &eye),
+                    None => self.compact(here, &eye),
                 };
-                faces[f] = Some(sk);
-                done += 1;
-                progress(done);
                 for h in arr.face_cycle(f) {
                     let Support::Rays(g) = arr.edge_support(h / 2) else {
                         continue;
                     };
                     let t = arr.half_edge(h).twin;
                     let other = arr.half_edge(t).face;
-                    if other == arr.outer_face() || other == f || vis[other].is_some() {
+                    if other == arr.outer_face()
+                        || part_of[other] != part
+                        || faces[other].is_some()
+                        || reached[other].is_some()
+                    {
                         continue;
                     }
                     // Half-edge 2e runs along the group's direction, its
@@ -336,60 +436,87 @@ impl<'a> Walker<'a> {
                         Beside::Right
                     };
                     let slot = self.edge_slot[h / 2];
-                    vis[other] = Some(self.across(&here, &[(g, slot)], Some(side)));
+                    reached[other] = Some(self.across(&sk.vis, &[(g, slot)], Some(side)));
                     from[other] = Some((f, g));
                     queue.push_back(other);
                 }
-                vis[f] = Some(here);
+                faces[f] = Some(sk);
+                progress();
             }
         }
-
-        self.vis = vis;
         faces
     }
 
-    /// After [`Walker::walk`]: the skeleton of every 1-cell (edge on a
-    /// ray) by edge id, then of every 0-cell (vertex off the map boundary)
-    /// by vertex id, handed to `sink` one at a time with the 2-cells next
-    /// to it.
-    pub(crate) fn lower(&mut self, walked: &[Option<Compact>], sink: &mut LowerSink<'_>) {
+    /// After [`Walker::walk`] (`walked`): the skeleton of every 1-cell
+    /// (edge on a ray) by edge id, then of every 0-cell (vertex off the
+    /// map boundary) by vertex id, handed to `sink` one at a time, in that
+    /// order, with the 2-cells next to it. They are computed in parallel a
+    /// block at a time; `sink` runs on the caller's thread.
+    pub(crate) fn lower(&self, walked: &[Option<Compact>], sink: &mut LowerSink<'_>) {
         let arr = self.arr;
-        for e in 0..arr.edge_count() {
-            let Support::Rays(g) = arr.edge_support(e) else {
-                continue;
-            };
-            let faces = [arr.half_edge(2 * e).face, arr.half_edge(2 * e + 1).face];
-            let site = LowerSite::Edge(e);
-            // Half-edge 2e runs along the line, its face on the left.
-            let sides = [Beside::Left, Beside::Right];
-            let lines = [(g, self.edge_slot[e])];
-            let sk = self.lower_skeleton(site, &faces, walked, &lines, &sides);
-            sink(site, &faces, sk);
+        let sites: Vec<LowerSite> = (0..arr.edge_count())
+            .filter(|&e| matches!(arr.edge_support(e), Support::Rays(_)))
+            .map(LowerSite::Edge)
+            .chain(
+                (0..arr.vertex_count())
+                    .filter(|&v| !arr.is_on_map_boundary(v))
+                    .map(LowerSite::Vertex),
+            )
+            .collect();
+        for block in sites.chunks(LOWER_BLOCK) {
+            let done: Vec<(Faces, LowerSkeleton)> = block
+                .par_iter()
+                .map_init(Scratch::default, |scratch, &site| {
+                    self.lower_cell(site, walked, scratch)
+                })
+                .collect();
+            for (&site, (faces, sk)) in block.iter().zip(done) {
+                sink(site, faces.as_slice(), sk);
+            }
         }
-        for v in 0..arr.vertex_count() {
-            if arr.is_on_map_boundary(v) {
-                continue;
+    }
+
+    /// The 2-cells next to a lower cell, and its skeleton.
+    fn lower_cell(
+        &self,
+        site: LowerSite,
+        walked: &[Option<Compact>],
+        scratch: &mut Scratch,
+    ) -> (Faces, LowerSkeleton) {
+        let arr = self.arr;
+        match site {
+            LowerSite::Edge(e) => {
+                let Support::Rays(g) = arr.edge_support(e) else {
+                    unreachable!("1-cells lie on rays");
+                };
+                let faces = [arr.half_edge(2 * e).face, arr.half_edge(2 * e + 1).face];
+                // Half-edge 2e runs along the line, its face on the left.
+                let sides = [Beside::Left, Beside::Right];
+                let lines = [(g, self.edge_slot[e])];
+                let sk = self.lower_skeleton(site, &faces, walked, &lines, &sides, scratch);
+                (Faces::Two(faces), sk)
             }
-            let out = arr.outgoing(v);
-            let faces: Vec<FaceId> = out.iter().map(|&h| arr.half_edge(h).face).collect();
-            let site = LowerSite::Vertex(v);
-            let lines = self.lines_through(&out);
-            // The side of each line each face lies on: that of a direction
-            // strictly inside its corner, between its outgoing half-edge
-            // and the next counter-clockwise.
-            let k = out.len();
-            let mut sides = Vec::with_capacity(k * lines.len());
-            for i in 0..k {
-                let w = inside_corner(arr.direction(out[i]), arr.direction(out[next(i, k)]));
-                for &(g, _) in &lines {
-                    sides.push(match cross_sign(arr.ray_group(g).dir, w) {
-                        Ordering::Less => Beside::Right,
-                        _ => Beside::Left,
-                    });
+            LowerSite::Vertex(v) => {
+                let out = arr.outgoing(v);
+                let faces: Vec<FaceId> = out.iter().map(|&h| arr.half_edge(h).face).collect();
+                let lines = self.lines_through(&out);
+                // The side of each line each face lies on: that of a
+                // direction strictly inside its corner, between its
+                // outgoing half-edge and the next counter-clockwise.
+                let k = out.len();
+                let mut sides = Vec::with_capacity(k * lines.len());
+                for i in 0..k {
+                    let w = inside_corner(arr.direction(out[i]), arr.direction(out[next(i, k)]));
+                    for &(g, _) in &lines {
+                        sides.push(match cross_sign(arr.ray_group(g).dir, w) {
+                            Ordering::Less => Beside::Right,
+                            _ => Beside::Left,
+                        });
+                    }
                 }
+                let sk = self.lower_skeleton(site, &faces, walked, &lines, &sides, scratch);
+                (Faces::Many(faces), sk)
             }
-            let sk = self.lower_skeleton(site, &faces, walked, &lines, &sides);
-            sink(site, &faces, sk);
         }
     }
 
@@ -415,25 +542,37 @@ impl<'a> Walker<'a> {
     /// next to q: unchanged off the lines, recomputed on them.
     fn across(&self, base: &[u32], lines: &[(usize, u32)], beside: Option<Beside>) -> Vec<u32> {
         let mut out: Vec<u32> = Vec::with_capacity(base.len() + 4);
-        if let [(g, _)] = lines {
-            // One line: base minus its vertices, both ascending.
-            let on = self.lines[*g].vertices();
-            let mut j = 0;
+        if let [(g, slot)] = lines {
+            // One line: base minus its vertices, merged with those seen on
+            // it; all three ascending.
+            let line = &self.lines[*g];
+            let on = line.vertices();
+            let mut seen = Vec::new();
+            line.seen_in(*slot as usize, beside, &mut seen);
+            seen.sort_unstable();
+            let (mut j, mut m) = (0, 0);
             for &u in base {
                 while j < on.len() && on[j] < u {
                     j += 1;
                 }
-                if j == on.len() || on[j] != u {
-                    out.push(u);
+                if j < on.len() && on[j] == u {
+                    continue;
                 }
+                while m < seen.len() && seen[m] < u {
+                    out.push(seen[m]);
+                    m += 1;
+                }
+                out.push(u);
             }
-        } else {
-            out.extend(
-                base.iter()
-                    .copied()
-                    .filter(|&u| lines.iter().all(|&(g, _)| !self.lines[g].contains(u))),
-            );
+            out.extend_from_slice(&seen[m..]);
+            out.dedup();
+            return out;
         }
+        out.extend(
+            base.iter()
+                .copied()
+                .filter(|&u| lines.iter().all(|&(g, _)| !self.lines[g].contains(u))),
+        );
         for &(g, slot) in lines {
             self.lines[g].seen_in(slot as usize, beside, &mut out);
         }
@@ -455,83 +594,83 @@ impl<'a> Walker<'a> {
     }
 
     /// The compact skeleton of q from Vis(q) (ascending map ids).
-    fn compact(&mut self, vis: &[u32], eye: &Eye) -> Compact {
+    fn compact(&self, vis: Vec<u32>, eye: &Eye) -> Compact {
         let k = vis.len();
         assert!(k > 0, "a point of the interior sees a map vertex ({eye:?})");
-        let mut edges: Vec<Option<u32>> = Vec::with_capacity(k);
-        for s in 0..k {
-            let (x, y) = (vis[s] as usize, vis[next(s, k)] as usize);
-            edges.push(self.gap(x, y, k, eye));
-        }
-        self.rotated(vis, edges)
+        let edges: Vec<u32> = (0..k)
+            .map(|s| self.gap(vis[s] as usize, vis[next(s, k)] as usize, k, eye))
+            .collect();
+        self.with_origin(vis, edges)
     }
 
     /// [`Walker::compact`] for a 2-cell reached from the 2-cell `parent`
-    /// (Vis `pvis`) across ray group `g`: the artificial edge of a gap
-    /// x → y with neither end on the line, consecutive in both Vis, is the
-    /// parent's. Every test of [`Walker::gap`] for it changes sign only on
-    /// a line through x or y (the line of edge x or of edge y − 1, or a
-    /// line from x through a vertex it sees), and between the two cells
-    /// only the line of `g` is crossed.
-    fn compact_across(
-        &mut self,
-        vis: &[u32],
-        eye: &Eye,
-        pvis: &[u32],
-        parent: &Compact,
-        g: usize,
-    ) -> Compact {
-        let (k, pk) = (vis.len(), pvis.len());
+    /// across ray group `g`: the artificial edge of a gap x → y with
+    /// neither end on the line, consecutive in both Vis, is the parent's.
+    /// Every test of [`Walker::gap`] for it changes sign only on a line
+    /// through x or y (the line of edge x or of edge y − 1, or a line from
+    /// x through a vertex it sees), and between the two cells only the
+    /// line of `g` is crossed.
+    fn compact_across(&self, vis: Vec<u32>, eye: &Eye, parent: &Compact, g: usize) -> Compact {
+        let (k, pk) = (vis.len(), parent.vis.len());
         if k < 2 || pk < 2 {
             return self.compact(vis, eye);
         }
-        let shift = pvis
-            .binary_search(&parent.vertices[0])
-            .expect("the parent's origin is in its Vis");
+        let pvis = &parent.vis;
         // Which of Vis lie on the line, and where each x sits in the
         // parent's Vis: merges of ascending lists.
         let on = self.lines[g].vertices();
         let mut m = 0;
-        let on_line: Vec<bool> = vis
-            .iter()
-            .map(|&x| {
-                while m < on.len() && on[m] < x {
-                    m += 1;
-                }
-                m < on.len() && on[m] == x
-            })
-            .collect();
-        let mut edges: Vec<Option<u32>> = Vec::with_capacity(k);
-        let mut todo: Vec<usize> = Vec::new();
+        let mut on_line = |x: u32| {
+            while m < on.len() && on[m] < x {
+                m += 1;
+            }
+            m < on.len() && on[m] == x
+        };
+        let first_on = on_line(vis[0]);
+        let mut here_on = first_on;
+        let mut edges: Vec<u32> = Vec::with_capacity(k);
         let mut j = 0;
         for s in 0..k {
             let (x, y) = (vis[s], vis[next(s, k)]);
+            let next_on = if s + 1 == k { first_on } else { on_line(y) };
             while j < pk && pvis[j] < x {
                 j += 1;
             }
-            let kept = !on_line[s]
-                && !on_line[next(s, k)]
-                && j < pk
-                && pvis[j] == x
-                && pvis[next(j, pk)] == y;
-            if kept {
-                edges.push(parent.edges[back(j, shift, pk)]);
+            let kept = !here_on && !next_on && j < pk && pvis[j] == x && pvis[next(j, pk)] == y;
+            edges.push(if kept {
+                parent.edges[j]
             } else {
-                edges.push(None);
-                todo.push(s);
+                self.gap(x as usize, y as usize, k, eye)
+            });
+            here_on = next_on;
+        }
+        // The origin: off the line Vis did not change, so a reflex parent
+        // origin off it stays first unless a reflex vertex of the line now
+        // seen comes before it.
+        let po = parent.origin() as u32;
+        if self.reflex[po as usize] && !self.lines[g].contains(po) {
+            let v = self.map.vertices();
+            let at = |u: u32| (v[u as usize].x, v[u as usize].y);
+            let mut best = po;
+            for &u in on {
+                if self.reflex[u as usize] && at(u) < at(best) && vis.binary_search(&u).is_ok() {
+                    best = u;
+                }
             }
+            let shift = vis.binary_search(&best).expect("the origin is seen");
+            return Compact {
+                vis,
+                edges,
+                shift: u32::try_from(shift).expect("fewer than 2^32 vertices"),
+            };
         }
-        for s in todo {
-            let (x, y) = (vis[s] as usize, vis[next(s, k)] as usize);
-            edges[s] = self.gap(x, y, k, eye);
-        }
-        self.rotated(vis, edges)
+        self.with_origin(vis, edges)
     }
 
-    /// The compact skeleton from Vis and its edges in Vis order, rotated to
-    /// the origin: the leftmost, then lowest, of the reflex vertices seen,
+    /// The compact skeleton from Vis and its edges in Vis order, with the
+    /// origin: the leftmost, then lowest, of the reflex vertices seen,
     /// else of all seen.
-    fn rotated(&self, vis: &[u32], mut edges: Vec<Option<u32>>) -> Compact {
+    fn with_origin(&self, vis: Vec<u32>, edges: Vec<u32>) -> Compact {
         let v = self.map.vertices();
         let k = vis.len();
         let pick = |pool: &mut dyn Iterator<Item = usize>| {
@@ -543,20 +682,21 @@ impl<'a> Walker<'a> {
         let o = pick(&mut (0..k).filter(|&s| self.reflex[vis[s] as usize]))
             .or_else(|| pick(&mut (0..k)))
             .expect("k > 0");
-        let mut vertices = vis.to_vec();
-        vertices.rotate_left(o);
-        edges.rotate_left(o);
-        Compact { vertices, edges }
+        Compact {
+            vis,
+            edges,
+            shift: u32::try_from(o).expect("fewer than 2^32 vertices"),
+        }
     }
 
     /// The skeleton edge from x to the next vertex y that q sees (`k` of
-    /// them): `None` if full, else the map edge the artificial edge lies on
+    /// them): [`FULL`], else the map edge the artificial edge lies on
     /// (cases 1–3 of the module documentation).
-    fn gap(&mut self, x: usize, y: usize, k: usize, eye: &Eye) -> Option<u32> {
+    fn gap(&self, x: usize, y: usize, k: usize, eye: &Eye) -> u32 {
         let v = self.map.vertices();
         let n = v.len();
         let e = if y == next(x, n) && k > 1 {
-            return None;
+            return FULL;
         } else if eye.orientation(v[x], v[next(x, n)]) == Orientation::CounterClockwise {
             x
         } else if eye.orientation(v[back(y, 1, n)], v[y]) == Orientation::CounterClockwise {
@@ -564,7 +704,7 @@ impl<'a> Walker<'a> {
         } else {
             self.beyond(x, eye)
         };
-        Some(e as u32)
+        e as u32
     }
 
     /// The point of a lower cell where its skeleton is computed: the
@@ -572,11 +712,10 @@ impl<'a> Walker<'a> {
     fn site_eye(&self, site: LowerSite) -> Eye {
         let arr = self.arr;
         match site {
-            LowerSite::Edge(e) => Eye::midpoint(
-                arr.point(arr.half_edge(2 * e).origin),
-                arr.point(arr.dest(2 * e)),
-            ),
-            LowerSite::Vertex(v) => Eye::new(arr.point(v)),
+            LowerSite::Edge(e) => {
+                Eye::midpoint(arr.pt(arr.half_edge(2 * e).origin), arr.pt(arr.dest(2 * e)))
+            }
+            LowerSite::Vertex(v) => Eye::at(arr.pt(v)),
         }
     }
 
@@ -589,50 +728,42 @@ impl<'a> Walker<'a> {
     /// the extension of edge x, or on the line from a vertex x sees through
     /// x), and the only ray lines through q are `lines`.
     fn relabel(
-        &mut self,
+        &self,
         f: FaceId,
         face: &Compact,
         near: &[u32],
         site: LowerSite,
+        touched: &mut Vec<usize>,
     ) -> LowerSkeleton {
         // The gaps at the vertices of the lines that f sees (those the cell
-        // sees on them, `near`): found in f's Vis (ascending), which the
-        // skeleton's vertices are rotated from.
-        let k = face.vertices.len();
-        let vis = self.vis[f].as_deref().expect("a walked cell has Vis");
-        let at = |u: u32| vis.binary_search(&u).ok();
-        let shift = at(face.vertices[0]).expect("the origin is seen");
-        let mut touched: Vec<usize> = Vec::with_capacity(2 * near.len());
+        // sees on them, `near`), before and after each in Vis.
+        let k = face.vis.len();
+        touched.clear();
         for &u in near {
-            let j = at(u).expect("f sees the vertices the cell sees on its lines");
-            let s = back(j, shift, k);
-            touched.extend([s, back(s, 1, k)]);
+            let j = face
+                .vis
+                .binary_search(&u)
+                .expect("f sees the vertices the cell sees on its lines");
+            touched.extend([j, back(j, 1, k)]);
         }
-        touched.sort_unstable();
-        touched.dedup();
         if touched.is_empty() {
             return LowerSkeleton::Face(f);
         }
+        touched.sort_unstable();
+        touched.dedup();
         let eye = self.site_eye(site);
-        let mut changed: Vec<(usize, Option<u32>)> = Vec::new();
-        for s in touched {
-            let (x, y) = (
-                face.vertices[s] as usize,
-                face.vertices[next(s, k)] as usize,
-            );
+        let mut own: Option<Compact> = None;
+        for &s in touched.iter() {
+            let (x, y) = (face.vis[s] as usize, face.vis[next(s, k)] as usize);
             let e = self.gap(x, y, k, &eye);
             if e != face.edges[s] {
-                changed.push((s, e));
+                own.get_or_insert_with(|| face.clone()).edges[s] = e;
             }
         }
-        if changed.is_empty() {
-            return LowerSkeleton::Face(f);
+        match own {
+            Some(c) => LowerSkeleton::Own(c),
+            None => LowerSkeleton::Face(f),
         }
-        let mut out = face.clone();
-        for (s, e) in changed {
-            out.edges[s] = e;
-        }
-        LowerSkeleton::Own(out)
     }
 
     /// The skeleton of a 1- or 0-cell on `lines` (ray group and the cell's
@@ -644,24 +775,28 @@ impl<'a> Walker<'a> {
     /// few vertices of the lines, not on all of Vis. Then f's skeleton is
     /// relabelled; otherwise Vis is built and its skeleton computed.
     fn lower_skeleton(
-        &mut self,
+        &self,
         site: LowerSite,
         faces: &[FaceId],
         walked: &[Option<Compact>],
         lines: &[(usize, u32)],
         sides: &[Beside],
+        scratch: &mut Scratch,
     ) -> LowerSkeleton {
-        let mut near = std::mem::take(&mut self.scratch.0);
-        let mut seen_on = std::mem::take(&mut self.scratch.1);
+        let Scratch {
+            near,
+            seen_on,
+            touched,
+        } = scratch;
         near.clear();
         for &(g, slot) in lines {
-            self.lines[g].seen_in(slot as usize, None, &mut near);
+            self.lines[g].seen_in(slot as usize, None, near);
         }
         near.sort_unstable();
         near.dedup();
         let mut same = None;
         for (i, &f) in faces.iter().enumerate() {
-            let (Some(vis), Some(_)) = (&self.vis[f], &walked[f]) else {
+            let Some(sk) = &walked[f] else {
                 continue;
             };
             // What f sees on the lines is what is seen from just beside
@@ -669,41 +804,33 @@ impl<'a> Walker<'a> {
             seen_on.clear();
             for (j, &(g, slot)) in lines.iter().enumerate() {
                 let side = sides[i * lines.len() + j];
-                self.lines[g].seen_in(slot as usize, Some(side), &mut seen_on);
+                self.lines[g].seen_in(slot as usize, Some(side), seen_on);
             }
             seen_on.sort_unstable();
             seen_on.dedup();
             // (That this agrees with f's Vis is the T3.3b checker's to
             // test; here it only may not panic.)
-            if seen_on == near && near.iter().all(|u| vis.binary_search(u).is_ok()) {
-                same = Some(f);
+            if *seen_on == *near && near.iter().all(|u| sk.vis.binary_search(u).is_ok()) {
+                same = Some((f, sk));
                 break;
             }
         }
-        let result = match same {
-            Some(f) => {
-                let sk = walked[f].as_ref().expect("checked above");
-                self.relabel(f, sk, &near, site)
-            }
+        match same {
+            Some((f, sk)) => self.relabel(f, sk, near, site, touched),
             None => {
-                let base = self.vis[faces[0]]
-                    .take()
+                let base = walked[faces[0]]
+                    .as_ref()
                     .expect("the cells next to a lower cell are walked");
-                let seen = self.across(&base, lines, None);
-                self.vis[faces[0]] = Some(base);
-                let eye = self.site_eye(site);
-                LowerSkeleton::Own(self.compact(&seen, &eye))
+                let seen = self.across(&base.vis, lines, None);
+                LowerSkeleton::Own(self.compact(seen, &self.site_eye(site)))
             }
-        };
-        self.scratch = (near, seen_on);
-        result
+        }
     }
 
     /// The map edge the ray from q through x meets beyond x, taken just
     /// counter-clockwise of the ray.
-    fn beyond(&mut self, x: usize, eye: &Eye) -> usize {
-        let index = self.index;
-        let view = self.views.entry(x).or_insert_with(|| index.vertex_view(x));
+    fn beyond(&self, x: usize, eye: &Eye) -> usize {
+        let view = self.views[x].get_or_init(|| self.index.vertex_view(x));
         let v = self.map.vertices();
         // x − q, scaled by W > 0: the opposite of the direction to x.
         let d = eye.toward(v[x]);
@@ -717,6 +844,35 @@ impl<'a> Walker<'a> {
         );
         view[at - 1].1
     }
+}
+
+/// Cells per part of the walk, at least.
+const MIN_PART: usize = 256;
+
+/// Lower cells computed in parallel between two calls of the sink.
+const LOWER_BLOCK: usize = 1 << 13;
+
+/// The 2-cells next to a lower cell.
+enum Faces {
+    Two([FaceId; 2]),
+    Many(Vec<FaceId>),
+}
+
+impl Faces {
+    fn as_slice(&self) -> &[FaceId] {
+        match self {
+            Faces::Two(f) => f,
+            Faces::Many(f) => f,
+        }
+    }
+}
+
+/// Buffers reused from lower cell to lower cell.
+#[derive(Default)]
+struct Scratch {
+    near: Vec<u32>,
+    seen_on: Vec<u32>,
+    touched: Vec<usize>,
 }
 
 /// `(i + 1) mod k` for `i < k`, without a division (hot loops).

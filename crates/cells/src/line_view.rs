@@ -7,10 +7,10 @@
 //! this is the whole update of the incremental skeletons (sec. 3.9.2).
 
 use crate::arrangement::Along;
-use crate::eye::{angle_cmp, dir, Dir};
+use crate::eye::{angle_cmp, dir, mul, Dir, Pt};
 use rug::{Integer, Rational};
 use std::cmp::Ordering;
-use wai_exact::{Point, RatPoint};
+use wai_exact::Point;
 use wai_map::Map;
 
 /// A side of a directed line.
@@ -57,6 +57,47 @@ fn position(p: Point, d: (i128, i128)) -> Rational {
     Rational::from(Integer::from(p.x) * d.0 + Integer::from(p.y) * d.1)
 }
 
+/// [`position`] as an [`Along`], in checked `i128` when it fits.
+fn position_along(p: Point, d: (i128, i128)) -> Along {
+    match mul(p.x, d.0).and_then(|a| a.checked_add(mul(p.y, d.1)?)) {
+        Some(t) => Along::Small(t, 1),
+        None => Along::from_rational(position(p, d)),
+    }
+}
+
+/// The position along the line through `o` with direction `d` where the
+/// segment from `a` to `b` (on opposite sides of it) crosses it:
+/// `a + s (b − a)` with `s = −(d × (a − o)) / (d × (b − a))`, so the
+/// position is `a · d − (d × (a − o)) (d · (b − a)) / (d × (b − a))`.
+fn crossing_along(o: Point, a: Point, b: Point, d: (i128, i128)) -> Along {
+    let fast = || -> Option<Along> {
+        let cross = |x: i128, y: i128| mul(d.0, y)?.checked_sub(mul(d.1, x)?);
+        let ca = cross(a.x.checked_sub(o.x)?, a.y.checked_sub(o.y)?)?;
+        let (ex, ey) = (b.x.checked_sub(a.x)?, b.y.checked_sub(a.y)?);
+        let cb = cross(ex, ey)?;
+        let along = mul(ex, d.0)?.checked_add(mul(ey, d.1)?)?;
+        let ad = mul(a.x, d.0)?.checked_add(mul(a.y, d.1)?)?;
+        let num = mul(ad, cb)?.checked_sub(mul(ca, along)?)?;
+        // The denominator is nonzero (a and b are on opposite sides).
+        if cb > 0 {
+            Some(Along::Small(num, cb))
+        } else {
+            Some(Along::Small(num.checked_neg()?, cb.checked_neg()?))
+        }
+    };
+    fast().unwrap_or_else(|| Along::from_rational(crossing_gmp(o, a, b, d)))
+}
+
+/// [`crossing_along`] on GMP integers.
+fn crossing_gmp(o: Point, a: Point, b: Point, d: (i128, i128)) -> Rational {
+    let ca = Integer::from(d.0) * (Integer::from(a.y) - o.y)
+        - Integer::from(d.1) * (Integer::from(a.x) - o.x);
+    let cb = Integer::from(d.0) * (Integer::from(b.y) - a.y)
+        - Integer::from(d.1) * (Integer::from(b.x) - a.x);
+    let along = (Integer::from(b.x) - a.x) * d.0 + (Integer::from(b.y) - a.y) * d.1;
+    position(a, d) - Rational::from((ca * along, cb))
+}
+
 impl LineView {
     /// The line through `through` with direction `dir` (primitive).
     pub(crate) fn new(map: &Map, through: Point, d: (i128, i128)) -> LineView {
@@ -70,7 +111,7 @@ impl LineView {
             if sides[i] == Ordering::Equal {
                 let nb = [sides[(i + n - 1) % n], sides[(i + 1) % n]];
                 events.push((
-                    Along::from_rational(position(p, d)),
+                    position_along(p, d),
                     Event::Vertex {
                         v: i as u32,
                         left: nb.contains(&Ordering::Greater),
@@ -80,14 +121,7 @@ impl LineView {
             }
             let j = (i + 1) % n;
             if sides[i] != Ordering::Equal && sides[j] != Ordering::Equal && sides[i] != sides[j] {
-                // a + s (b − a) on the line: s = −(d × (a − o)) / (d × (b − a)).
-                let (a, b) = (p, v[j]);
-                let ca =
-                    Integer::from(d.0) * (a.y - through.y) - Integer::from(d.1) * (a.x - through.x);
-                let cb = Integer::from(d.0) * (b.y - a.y) - Integer::from(d.1) * (b.x - a.x);
-                let along = Integer::from(b.x - a.x) * d.0 + Integer::from(b.y - a.y) * d.1;
-                let t = position(a, d) - Rational::from((ca * along, cb));
-                events.push((Along::from_rational(t), Event::Crossing));
+                events.push((crossing_along(through, p, v[j], d), Event::Crossing));
             }
         }
         events.sort_by(|a, b| a.0.cmp(&b.0));
@@ -156,7 +190,7 @@ impl LineView {
     }
 
     /// The position along the line of a point on it.
-    pub(crate) fn position_of(&self, q: &RatPoint) -> Along {
+    pub(crate) fn position_of(&self, q: Pt<'_>) -> Along {
         Along::of(self.dir, q)
     }
 
@@ -235,5 +269,37 @@ fn interior_if(b: bool) -> Stretch {
         Stretch::Interior
     } else {
         Stretch::Exterior
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::{crossing_along, crossing_gmp, position, position_along};
+    use crate::eye::{dir, Dir};
+    use proptest::prelude::*;
+    use std::cmp::Ordering;
+    use wai_exact::Point;
+
+    fn coord() -> impl Strategy<Value = i128> {
+        prop_oneof![-20i128..20, -(1i128 << 100)..(1i128 << 100)]
+    }
+
+    fn point() -> impl Strategy<Value = Point> {
+        (coord(), coord()).prop_map(|(x, y)| Point::new(x, y))
+    }
+
+    proptest! {
+        /// The checked-`i128` positions equal the GMP ones, small
+        /// coordinates (fast path) and up to 2^100 (fallback) alike.
+        #[test]
+        fn positions_agree_with_gmp(o in point(), a in point(), b in point(), q in point()) {
+            prop_assume!(o != q);
+            let d = (q.x - o.x, q.y - o.y);
+            prop_assert_eq!(position_along(a, d).big(), position(a, d));
+            let ld = Dir::Small(d.0, d.1);
+            let (sa, sb) = (ld.cross(&dir(o, a)), ld.cross(&dir(o, b)));
+            prop_assume!(sa != Ordering::Equal && sb != Ordering::Equal && sa != sb);
+            prop_assert_eq!(crossing_along(o, a, b, d).big(), crossing_gmp(o, a, b, d));
+        }
     }
 }

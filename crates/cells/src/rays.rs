@@ -1,5 +1,6 @@
 //! Visibility rays (Def 3.8), exactly.
 
+use rayon::prelude::*;
 use rug::Integer;
 use std::cmp::Ordering;
 use std::collections::BTreeMap;
@@ -273,10 +274,30 @@ pub fn group_by_line(rays: &[VisibilityRay]) -> BTreeMap<LineKey, Vec<usize>> {
 pub fn visibility_rays(map: &Map) -> Vec<VisibilityRay> {
     let v = map.vertices();
     let n = v.len();
-    let mut sides = vec![Side::On; n];
-    let mut rays = Vec::new();
     let index = VisibilityIndex::new(map);
-    for &a in map.reflex_vertices() {
+    // Each reflex vertex's rays on their own (in parallel), in order.
+    let by_vertex: Vec<Vec<VisibilityRay>> = map
+        .reflex_vertices()
+        .par_iter()
+        .map_init(
+            || vec![Side::On; n],
+            |sides, &a| rays_from(v, &index, sides, a),
+        )
+        .collect();
+    by_vertex.concat()
+}
+
+/// The visibility rays from reflex vertex `a` (`sides`: a buffer of one
+/// entry per map vertex).
+fn rays_from(
+    v: &[Point],
+    index: &VisibilityIndex,
+    sides: &mut [Side],
+    a: usize,
+) -> Vec<VisibilityRay> {
+    let n = v.len();
+    let mut rays = Vec::new();
+    {
         let (prev, next) = ((a + n - 1) % n, (a + 1) % n);
         // The candidates: the vertices v_r sees (its own visibility
         // polygon, one query) and its neighbours. Each is still checked
@@ -307,10 +328,10 @@ pub fn visibility_rays(map: &Map) -> Vec<VisibilityRay> {
                 continue;
             }
             let line = Line::new(v[j], v[a]).expect("map vertices are distinct");
-            if !sides_if_visible(v, &line, &mut sides, a, j, !adjacent) {
+            if !sides_if_visible(v, &line, sides, a, j, !adjacent) {
                 continue; // v is not visible from v_r
             }
-            rays.push(shoot(v, line, &sides, a, j));
+            rays.push(shoot(v, line, sides, a, j));
         }
     }
     rays

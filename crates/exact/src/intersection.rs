@@ -52,24 +52,32 @@ fn cross(ux: i128, uy: i128, vx: i128, vy: i128) -> i128 {
 /// The meeting point of `l1` and `l2`; `None` if they are parallel
 /// (including equal).
 pub fn construct_intersection(l1: &Line, l2: &Line) -> Option<RatPoint> {
-    // Checked i128 first: exact by construction (any overflow takes the
-    // GMP path of `reference`), so no bit bound is assumed.
+    match construct_intersection_i128(l1, l2) {
+        Some(Some([x, y, w])) => RatPoint::from_i128(x, y, w),
+        Some(None) => None,
+        None => reference::construct_intersection(l1, l2),
+    }
+}
+
+/// [`construct_intersection`] in checked `i128` arithmetic, as the
+/// homogeneous coordinates `[x, y, w]` of the meeting point in lowest
+/// terms with `w > 0` (those of the [`RatPoint`], so equal points give
+/// equal triples): `Some(None)` if the lines are parallel, `None` if a
+/// product overflows or the result does not fit (then use
+/// [`construct_intersection`]).
+pub fn construct_intersection_i128(l1: &Line, l2: &Line) -> Option<Option<[i128; 3]>> {
     let (a1, b1, a2, b2) = (l1.a(), l1.b(), l2.a(), l2.b());
-    let fast = || -> Option<Option<RatPoint>> {
-        let (d1x, d1y) = (b1.x.checked_sub(a1.x)?, b1.y.checked_sub(a1.y)?);
-        let (d2x, d2y) = (b2.x.checked_sub(a2.x)?, b2.y.checked_sub(a2.y)?);
-        let den = mul_checked(d1x, d2y)?.checked_sub(mul_checked(d1y, d2x)?)?;
-        if den == 0 {
-            return Some(None);
-        }
-        let (ex, ey) = (a2.x.checked_sub(a1.x)?, a2.y.checked_sub(a1.y)?);
-        let num = mul_checked(ex, d2y)?.checked_sub(mul_checked(ey, d2x)?)?;
-        // a1 + (num / den) · d1, in homogeneous form over den.
-        let x = mul_checked(den, a1.x)?.checked_add(mul_checked(num, d1x)?)?;
-        let y = mul_checked(den, a1.y)?.checked_add(mul_checked(num, d1y)?)?;
-        Some(RatPoint::from_i128(x, y, den))
-    };
-    fast().unwrap_or_else(|| reference::construct_intersection(l1, l2))
+    let (d1x, d1y) = (b1.x.checked_sub(a1.x)?, b1.y.checked_sub(a1.y)?);
+    let (d2x, d2y) = (b2.x.checked_sub(a2.x)?, b2.y.checked_sub(a2.y)?);
+    let den = mul_checked(d1x, d2y)?.checked_sub(mul_checked(d1y, d2x)?)?;
+    if den == 0 {
+        return Some(None);
+    }
+    let (ex, ey) = (a2.x.checked_sub(a1.x)?, a2.y.checked_sub(a1.y)?);
+    let num = mul_checked(ex, d2y)?.checked_sub(mul_checked(ey, d2x)?)?;
+    let x = mul_checked(den, a1.x)?.checked_add(mul_checked(num, d1x)?)?;
+    let y = mul_checked(den, a1.y)?.checked_add(mul_checked(num, d1y)?)?;
+    Some(Some(RatPoint::lowest_terms_i128(x, y, den)?))
 }
 
 /// The side of the directed line `l3` on which the meeting point of `l1` and

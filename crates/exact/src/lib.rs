@@ -28,8 +28,8 @@ mod segment;
 mod visibility;
 
 pub use intersection::{
-    compare_intersections_along, construct_intersection, mul_checked, side_of_intersection,
-    INTERSECTION_FAST_BITS,
+    compare_intersections_along, construct_intersection, construct_intersection_i128, mul_checked,
+    side_of_intersection, INTERSECTION_FAST_BITS,
 };
 pub use line::Line;
 pub use point::{gcd_u128, Point, RatPoint, MAX_COORD_BITS};

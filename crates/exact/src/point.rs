@@ -92,27 +92,36 @@ impl RatPoint {
         if w == 0 {
             return None;
         }
+        match RatPoint::lowest_terms_i128(x, y, w) {
+            Some([x, y, w]) => Some(RatPoint {
+                x: Integer::from(x),
+                y: Integer::from(y),
+                w: Integer::from(w),
+            }),
+            None => RatPoint::new(Integer::from(x), Integer::from(y), Integer::from(w)),
+        }
+    }
+
+    /// `(x, y, w)` divided by their gcd and made `w > 0`: the homogeneous
+    /// coordinates a [`RatPoint`] keeps. `None` if `w = 0` or the result
+    /// does not fit an `i128`.
+    pub fn lowest_terms_i128(x: i128, y: i128, w: i128) -> Option<[i128; 3]> {
+        if w == 0 {
+            return None;
+        }
         let g = gcd_u128(
             gcd_u128(x.unsigned_abs(), y.unsigned_abs()),
             w.unsigned_abs(),
         );
         // g ≥ 1 divides |w| ≤ 2^127, so the quotients fit unless g = 1 and
         // a value is i128::MIN, which only a negation below can hit.
-        let (mut x, mut y, mut w) = match i128::try_from(g) {
-            Ok(g) => (x / g, y / g, w / g),
-            Err(_) => return RatPoint::new(Integer::from(x), Integer::from(y), Integer::from(w)),
-        };
+        let g = i128::try_from(g).ok()?;
+        let (x, y, w) = (x / g, y / g, w / g);
         if w < 0 {
-            match (x.checked_neg(), y.checked_neg(), w.checked_neg()) {
-                (Some(a), Some(b), Some(c)) => (x, y, w) = (a, b, c),
-                _ => return RatPoint::new(Integer::from(x), Integer::from(y), Integer::from(w)),
-            }
+            Some([x.checked_neg()?, y.checked_neg()?, w.checked_neg()?])
+        } else {
+            Some([x, y, w])
         }
-        Some(RatPoint {
-            x: Integer::from(x),
-            y: Integer::from(y),
-            w: Integer::from(w),
-        })
     }
 
     pub fn from_point(p: Point) -> Self {

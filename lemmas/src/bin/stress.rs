@@ -20,6 +20,10 @@
 //! apart, by kind. Exits 1 on any other violation, printing the map as JSON
 //! to replay it.
 
+// The allocator of every binary of the workspace (see Cargo.toml).
+#[global_allocator]
+static ALLOCATOR: mimalloc::MiMalloc = mimalloc::MiMalloc;
+
 use std::collections::BTreeMap;
 use wai_lemmas::{run, Checker, Status, CLAIMS};
 

@@ -80,3 +80,59 @@ fn seeded_maps_of_every_random_kind() {
     let (maps, cells) = check_all(maps);
     assert_eq!(maps, RANDOM_KINDS.len() * 6, "{cells} cells");
 }
+
+/// What a decomposition computed, for comparing two runs.
+type Snapshot = (
+    wai_cells::Counts,
+    Vec<(usize, usize)>,
+    Vec<wai_cells::LowerCell>,
+    Vec<wai_visibility::SkeletonKey>,
+);
+
+fn snapshot(map: &Map) -> Snapshot {
+    let d = Decomposition::new(map);
+    let cells = d
+        .cells()
+        .iter()
+        .map(|&f| (d.skeleton_of(f), d.origin_of(f)))
+        .collect();
+    (
+        d.counts(),
+        cells,
+        d.lower_cells().to_vec(),
+        d.skeletons().to_vec(),
+    )
+}
+
+fn pool(threads: usize) -> rayon::ThreadPool {
+    rayon::ThreadPoolBuilder::new()
+        .num_threads(threads)
+        .build()
+        .expect("a thread pool")
+}
+
+/// The walk splits the cells into one part per thread, each walked from
+/// its own queries: one thread and four give the same decomposition (the
+/// same classes in the same order, origins and lower cells), and with four
+/// every cell of every dimension still equals a fresh query.
+#[test]
+fn threads_do_not_change_the_decomposition() {
+    let maps = [
+        wai_gen::family("comb-convex-chain", &[16]).expect("a family map"),
+        wai_gen::random("random-orthogonal", 120, 3).expect("a random map"),
+        wai_gen::random("random-simple-star", 40, 5).expect("a random map"),
+    ];
+    for map in &maps {
+        let one = pool(1).install(|| snapshot(map));
+        let four = pool(4).install(|| snapshot(map));
+        assert!(
+            one.1.len() >= 4 * 256,
+            "{} cells: too few for 4 parts",
+            one.1.len()
+        );
+        assert!(one == four, "1 and 4 threads differ on {:?}", map.name());
+        pool(4)
+            .install(|| compare(map))
+            .unwrap_or_else(|e| panic!("{:?}: {e}", map.name()));
+    }
+}

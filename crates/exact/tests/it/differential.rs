@@ -14,9 +14,10 @@ use quickcheck::TestResult;
 use rug::Integer;
 use std::cmp::Ordering;
 use wai_exact::{
-    compare_along, compare_intersections_along, construct_intersection, orientation, reference,
-    side_of_intersection, side_of_line_rat, signed_area_twice, Line, Orientation, Point, Side,
-    INTERSECTION_FAST_BITS, ORIENTATION_FAST_BITS,
+    compare_along, compare_intersections_along, construct_intersection,
+    construct_intersection_i128, orientation, reference, side_of_intersection, side_of_line_rat,
+    signed_area_twice, Line, Orientation, Point, Side, INTERSECTION_FAST_BITS,
+    ORIENTATION_FAST_BITS,
 };
 
 // ---------------------------------------------------------------------------
@@ -485,6 +486,24 @@ fn any_i128() -> impl Strategy<Value = i128> + Clone {
     ]
 }
 
+/// The `i128` triple, when given, is the reference point's own homogeneous
+/// coordinates; parallel lines are parallel for both.
+fn check_construct_intersection_i128(l1: &Line, l2: &Line) {
+    let reference = reference::construct_intersection(l1, l2);
+    match construct_intersection_i128(l1, l2) {
+        Some(Some([x, y, w])) => {
+            let p = reference.expect("the lines meet");
+            assert_eq!(
+                (p.hx(), p.hy(), p.hw()),
+                (&Integer::from(x), &Integer::from(y), &Integer::from(w)),
+                "{l1:?} {l2:?}"
+            );
+        }
+        Some(None) => assert!(reference.is_none(), "{l1:?} {l2:?}"),
+        None => {}
+    }
+}
+
 proptest! {
     #![proptest_config(config(3000))]
 
@@ -496,6 +515,16 @@ proptest! {
     #[test]
     fn construct_intersection_equals_reference_small(l1 in line(small(6)), l2 in line(small(6))) {
         prop_assert_eq!(construct_intersection(&l1, &l2), reference::construct_intersection(&l1, &l2));
+    }
+
+    #[test]
+    fn construct_intersection_i128_equals_reference(l1 in line(any_i128()), l2 in line(any_i128())) {
+        check_construct_intersection_i128(&l1, &l2);
+    }
+
+    #[test]
+    fn construct_intersection_i128_equals_reference_small(l1 in line(small(6)), l2 in line(small(6))) {
+        check_construct_intersection_i128(&l1, &l2);
     }
 
     #[test]
