@@ -79,9 +79,10 @@ pub struct RayGroup {
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct EdgeGeometry {
     pub support: Support,
-    /// The rays (indices into the rays) whose closed segment contains the
-    /// edge; empty for map edges.
-    pub rays: Vec<usize>,
+    /// Where in the arrangement's list of edge rays
+    /// ([`Arrangement::edge_rays`]) the rays (indices into the rays) whose
+    /// closed segment contains the edge are; empty for map edges.
+    pub rays: std::ops::Range<usize>,
 }
 
 /// The exact arrangement of the map edges and all visibility rays: the
@@ -132,6 +133,9 @@ pub struct Arrangement {
     pub(crate) small: Vec<Option<[i128; 3]>>,
     pub(crate) on_boundary: Vec<bool>,
     pub(crate) edges: Vec<EdgeGeometry>,
+    /// The rays of the edges on rays, edge after edge
+    /// ([`EdgeGeometry::rays`]).
+    pub(crate) ray_list: Vec<usize>,
     /// By edge: the primitive direction of half-edge 2e.
     pub(crate) dirs: Vec<(i128, i128)>,
     pub(crate) groups: Vec<RayGroup>,
@@ -262,7 +266,9 @@ pub(crate) fn boxes_meet(a: &[i128; 4], b: &[i128; 4]) -> bool {
 /// The arrangement's points, each stored once: found again by their
 /// `i128` coordinates, or for larger ones by hash and exact equality.
 struct Points {
-    points: Vec<RatPoint>,
+    /// By point: the exact point; `None` for crossings whose coordinates
+    /// fit, built in parallel at the end ([`Points::finish`]).
+    points: Vec<Option<RatPoint>>,
     /// By point: its homogeneous coordinates as `i128`s, if they fit.
     small: Vec<Option<[i128; 3]>>,
     /// The points whose coordinates fit, by them.
@@ -300,7 +306,7 @@ impl Points {
 
     fn intern(&mut self, p: RatPoint) -> VertexId {
         match small_of(&p) {
-            Some(t) => self.intern_small(t, || p),
+            Some(t) => self.intern_small(t, Some(p)),
             None => {
                 let h = point_hash(&p);
                 self.intern_big(p, h)
@@ -310,24 +316,43 @@ impl Points {
 
     fn intern_meet(&mut self, m: Meet) -> VertexId {
         match m {
-            Meet::Small(t) => {
-                self.intern_small(t, || RatPoint::from_i128(t[0], t[1], t[2]).expect("w > 0"))
-            }
+            Meet::Small(t) => self.intern_small(t, None),
             // GMP may have built a point whose coordinates fit.
             Meet::Big(p, _) if small_of(&p).is_some() => self.intern(p),
             Meet::Big(p, h) => self.intern_big(p, h),
         }
     }
 
-    /// A point whose coordinates in lowest terms `t` fit; `exact` builds
-    /// it if it is new.
-    fn intern_small(&mut self, t: [i128; 3], exact: impl FnOnce() -> RatPoint) -> VertexId {
+    /// A point whose coordinates in lowest terms `t` fit, and the exact
+    /// point if it is at hand.
+    fn intern_small(&mut self, t: [i128; 3], exact: Option<RatPoint>) -> VertexId {
         let new = self.points.len();
         let id = *self.by_small.entry(t).or_insert(new);
         if id == new {
-            self.push(exact(), Some(t));
+            self.push(exact, Some(t));
         }
         id
+    }
+
+    /// The exact point of an interned point that was given as one.
+    fn exact(&self, i: VertexId) -> &RatPoint {
+        self.points[i].as_ref().expect("interned as an exact point")
+    }
+
+    /// The exact points and their `i128` coordinates, by id.
+    fn finish(self) -> (Vec<RatPoint>, Vec<Option<[i128; 3]>>) {
+        let points = self
+            .points
+            .into_par_iter()
+            .zip(&self.small)
+            .map(|(p, t)| {
+                p.unwrap_or_else(|| {
+                    let [x, y, w] = t.expect("points not given exactly fit");
+                    RatPoint::from_i128(x, y, w).expect("w > 0")
+                })
+            })
+            .collect();
+        (points, self.small)
     }
 
     /// A point whose coordinates do not fit, with its hash `h`.
@@ -336,7 +361,7 @@ impl Points {
         let mut at = *self.by_hash.entry(h).or_insert(new);
         if at != new {
             loop {
-                if self.points[at] == p {
+                if self.points[at].as_ref() == Some(&p) {
                     return at;
                 }
                 if self.same_hash[at] == usize::MAX {
@@ -346,11 +371,11 @@ impl Points {
             }
             self.same_hash[at] = new;
         }
-        self.push(p, None);
+        self.push(Some(p), None);
         new
     }
 
-    fn push(&mut self, p: RatPoint, small: Option<[i128; 3]>) {
+    fn push(&mut self, p: Option<RatPoint>, small: Option<[i128; 3]>) {
         self.points.push(p);
         self.small.push(small);
         self.same_hash.push(usize::MAX);
@@ -480,7 +505,7 @@ impl Arrangement {
         let boxes: Vec<[i128; 4]> = rays
             .iter()
             .zip(&ends)
-            .map(|(r, &e)| bbox([&pts.points[r.anchor], &pts.points[e]]))
+            .map(|(r, &e)| bbox([pts.exact(r.anchor), pts.exact(e)]))
             .collect();
         // Closed segments on different lines meet iff neither has both
         // endpoints strictly on one side of the other's line: exact
@@ -488,7 +513,7 @@ impl Arrangement {
         // the point is constructed only for pairs that meet. Pairs are
         // visited in order of their boxes' left sides, stopping once a box
         // starts right of the current one.
-        let eyes: Vec<Eye> = ends.iter().map(|&e| Eye::new(&pts.points[e])).collect();
+        let eyes: Vec<Eye> = ends.iter().map(|&e| Eye::new(pts.exact(e))).collect();
         let apart = |i: usize, j: usize| {
             let (a, b) = (rays[j].line.a(), rays[j].line.b());
             let sa = orientation(a, b, rays[i].start());
@@ -523,7 +548,7 @@ impl Arrangement {
                 on_edge[i].push(e);
             }
         }
-        let (points, small) = (pts.points, pts.small);
+        let (points, small) = pts.finish();
         let mut on_boundary = vec![false; points.len()];
         // Edges: map edges first, then ray groups.
         let mut edges: Vec<EdgeGeometry> = Vec::new();
@@ -547,30 +572,43 @@ impl Arrangement {
                 on_boundary[w[1]] = true;
                 edges.push(EdgeGeometry {
                     support: Support::MapEdge(i),
-                    rays: Vec::new(),
+                    rays: 0..0,
                 });
                 ends_of.push((w[0], w[1]));
                 dir_of.push(d);
             }
         }
+        // By point: its place on the line at hand.
+        let mut pos = vec![0; points.len()];
+        let mut ray_list: Vec<usize> = Vec::with_capacity(2 * rays.len());
         for (g, ids) in on_line.iter().enumerate() {
             let d = groups[g].dir;
-            let pos: FxHashMap<VertexId, usize> =
-                ids.iter().enumerate().map(|(k, &i)| (i, k)).collect();
-            let mut cover: Vec<Vec<usize>> = vec![Vec::new(); ids.len().saturating_sub(1)];
-            for &r in &groups[g].rays {
-                let (a, b) = (pos[&rays[r].anchor], pos[&ends[r]]);
-                for c in &mut cover[a.min(b)..a.max(b)] {
-                    c.push(r);
-                }
+            for (k, &i) in ids.iter().enumerate() {
+                pos[i] = k;
             }
-            for (k, c) in cover.into_iter().enumerate() {
-                if c.is_empty() {
+            // Each ray's stretch of the line, as places.
+            let spans: Vec<(usize, usize, usize)> = groups[g]
+                .rays
+                .iter()
+                .map(|&r| {
+                    let (a, b) = (pos[rays[r].anchor], pos[ends[r]]);
+                    (a.min(b), a.max(b), r)
+                })
+                .collect();
+            for k in 0..ids.len().saturating_sub(1) {
+                let start = ray_list.len();
+                ray_list.extend(
+                    spans
+                        .iter()
+                        .filter(|&&(lo, hi, _)| lo <= k && k < hi)
+                        .map(|&(_, _, r)| r),
+                );
+                if ray_list.len() == start {
                     continue;
                 }
                 edges.push(EdgeGeometry {
                     support: Support::Rays(g),
-                    rays: c,
+                    rays: start..ray_list.len(),
                 });
                 ends_of.push((ids[k], ids[k + 1]));
                 dir_of.push(d);
@@ -637,6 +675,7 @@ impl Arrangement {
             small,
             on_boundary,
             edges,
+            ray_list,
             dirs: dir_of,
             groups,
             map: map.clone(),
@@ -702,7 +741,7 @@ impl Arrangement {
     }
     /// The rays (indices into the rays) covering edge `e`.
     pub fn edge_rays(&self, e: EdgeId) -> &[usize] {
-        &self.edges[e].rays
+        &self.ray_list[self.edges[e].rays.clone()]
     }
     /// Ray group `g`.
     pub fn ray_group(&self, g: usize) -> &RayGroup {

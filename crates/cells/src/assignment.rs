@@ -170,7 +170,7 @@ fn edge_owner(
         Support::MapEdge(_) => (if f0 != arr.outer_face() { f0 } else { f1 }, None),
         Support::Rays(_) => {
             let (mut left, mut right) = (Vec::new(), Vec::new());
-            for &r in &geom.rays {
+            for &r in arr.edge_rays(e) {
                 // Half-edge 2e points along `dir`; its face is on its left.
                 let to_left = (arr.rays[r].side == RaySide::Left) == forward[r];
                 if to_left {
@@ -179,7 +179,7 @@ fn edge_owner(
                     right.push(r);
                 }
             }
-            let nearest = nearest_anchor_ray(arr, &geom.rays, forward);
+            let nearest = nearest_anchor_ray(arr, arr.edge_rays(e), forward);
             let owner = match nearest {
                 // One way along the edge: the last obstruction passed
                 // decides (its anchor is nearest behind the edge).
@@ -217,7 +217,7 @@ fn vertex_owner(
     let mut through: Vec<usize> = Vec::new();
     let mut seen: Vec<usize> = Vec::new();
     for &h in &out {
-        for &r in &arr.edges[h / 2].rays {
+        for &r in arr.edge_rays(h / 2) {
             if seen.contains(&r) {
                 through.push(r);
             } else {

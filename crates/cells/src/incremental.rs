@@ -313,29 +313,27 @@ impl<'a> Walker<'a> {
             part_of[f] = (i / size) as u32;
         }
         let done = AtomicUsize::new(0);
-        let mut walked: Vec<Vec<Option<Compact>>> = std::thread::scope(|scope| {
-            let (part_of, done, order) = (&part_of, &done, &order);
-            let range = |p: usize| &order[p * size..((p + 1) * size).min(order.len())];
-            let others: Vec<_> = (1..parts)
-                .map(|p| {
-                    scope.spawn(move || {
-                        self.walk_part(range(p), p as u32, part_of, corners, &mut || {
-                            done.fetch_add(1, AtomicOrdering::Relaxed);
-                        })
-                    })
-                })
-                .collect();
-            let first = self.walk_part(range(0), 0, part_of, corners, &mut || {
+        // Parts 1.. on the pool's threads, part 0 here, reporting progress.
+        let others: Vec<OnceLock<Vec<Option<Compact>>>> =
+            (1..parts).map(|_| OnceLock::new()).collect();
+        let range = |p: usize| &order[p * size..((p + 1) * size).min(order.len())];
+        let (part_of, done) = (&part_of, &done);
+        let first = rayon::in_place_scope(|scope| {
+            for (p, slot) in (1..parts).zip(&others) {
+                scope.spawn(move |_| {
+                    let walked = self.walk_part(range(p), p as u32, part_of, corners, &mut || {
+                        done.fetch_add(1, AtomicOrdering::Relaxed);
+                    });
+                    slot.set(walked).expect("each part is walked once");
+                });
+            }
+            self.walk_part(range(0), 0, part_of, corners, &mut || {
                 progress(done.fetch_add(1, AtomicOrdering::Relaxed) + 1);
-            });
-            std::iter::once(first)
-                .chain(
-                    others
-                        .into_iter()
-                        .map(|h| h.join().expect("a walk thread panicked")),
-                )
-                .collect()
+            })
         });
+        let mut walked: Vec<Vec<Option<Compact>>> = std::iter::once(first)
+            .chain(others.into_iter().map(|s| s.into_inner().expect("walked")))
+            .collect();
         let mut faces = walked.swap_remove(0);
         for other in walked {
             for (f, sk) in other.into_iter().enumerate() {
@@ -344,7 +342,7 @@ impl<'a> Walker<'a> {
                 }
             }
         }
-        progress(done.into_inner());
+        progress(done.load(AtomicOrdering::Relaxed));
         faces
     }
 

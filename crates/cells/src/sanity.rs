@@ -118,10 +118,10 @@ impl Arrangement {
                     }
                 }
                 Support::Rays(g) => {
-                    if geom.rays.is_empty() {
+                    if self.edge_rays(e).is_empty() {
                         return Err(format!("edge {e}: on group {g} but covered by no ray"));
                     }
-                    for &r in &geom.rays {
+                    for &r in self.edge_rays(e) {
                         let ray = &self.rays[r];
                         let s = map_pt(ray.anchor);
                         if !self.groups[g].rays.contains(&r)
