@@ -8,7 +8,7 @@
 
 use crate::assignment::{assign, BoundaryAssignment, Conflict};
 use crate::eye::{mul, small_of, Eye, Pt};
-use crate::fx::FxHashMap;
+use crate::fx::{FxHashMap, HashChains};
 use crate::rays::{group_by_line, LineKey, VisibilityRay};
 use rayon::prelude::*;
 use rug::{Integer, Rational};
@@ -195,30 +195,11 @@ pub(crate) fn along(d: (i128, i128), p: &RatPoint) -> Rational {
     Rational::from((num, p.hw().clone()))
 }
 
-/// Integer bounding box `(xmin, ymin, xmax, ymax)` of rational points
-/// (floors and ceilings).
-/// Call `f(i, j)` for every pair of boxes `[x0, y0, x1, y1]` that meet
-/// (closed), visiting boxes in order of their left sides and stopping once
-/// a box starts right of the current one's right side.
-pub(crate) fn each_meeting_pair(boxes: &[[i128; 4]], mut f: impl FnMut(usize, usize)) {
-    let mut order: Vec<usize> = (0..boxes.len()).collect();
-    order.sort_by_key(|&i| boxes[i][0]);
-    for (k, &i) in order.iter().enumerate() {
-        for &j in &order[k + 1..] {
-            if boxes[j][0] > boxes[i][2] {
-                break;
-            }
-            if boxes_meet(&boxes[i], &boxes[j]) {
-                f(i, j);
-            }
-        }
-    }
-}
-
-/// [`each_meeting_pair`] in parallel: `f(i, j)` for every pair of boxes
-/// that meet, its `Some` results in the order the sequential version
-/// visits the pairs.
-pub(crate) fn par_meeting_pairs<T: Send>(
+/// `f(i, j)` for every pair of boxes `[x0, y0, x1, y1]` that meet
+/// (closed), in parallel: boxes in order of their left sides, each against
+/// those after it until one starts right of its right side. The `Some`
+/// results, in that order.
+pub(crate) fn meeting_pairs<T: Send>(
     boxes: &[[i128; 4]],
     f: impl Fn(usize, usize) -> Option<T> + Sync,
 ) -> Vec<T> {
@@ -240,6 +221,8 @@ pub(crate) fn par_meeting_pairs<T: Send>(
         .collect()
 }
 
+/// Integer bounding box `(xmin, ymin, xmax, ymax)` of rational points
+/// (floors and ceilings).
 pub(crate) fn bbox<'a>(pts: impl IntoIterator<Item = &'a RatPoint>) -> [i128; 4] {
     let mut b = [i128::MAX, i128::MAX, i128::MIN, i128::MIN];
     for p in pts {
@@ -273,24 +256,16 @@ struct Points {
     small: Vec<Option<[i128; 3]>>,
     /// The points whose coordinates fit, by them.
     by_small: FxHashMap<[i128; 3], VertexId>,
-    /// The others: the first point with a given hash.
-    by_hash: FxHashMap<u64, VertexId>,
-    /// By point: the next point with the same hash, or `usize::MAX`.
-    same_hash: Vec<VertexId>,
+    /// The others, by hash.
+    by_hash: HashChains,
 }
 
 /// A point as the pairs of rays construct it.
 enum Meet {
     /// Its homogeneous coordinates in lowest terms, `w > 0`.
     Small([i128; 3]),
-    /// Its exact point and hash.
-    Big(RatPoint, u64),
-}
-
-/// The hash [`Points`] files a large point under.
-fn point_hash(p: &RatPoint) -> u64 {
-    use std::hash::BuildHasher;
-    std::hash::BuildHasherDefault::<crate::fx::FxHasher>::default().hash_one(p)
+    /// Its exact point, built with GMP.
+    Big(RatPoint),
 }
 
 impl Points {
@@ -299,18 +274,14 @@ impl Points {
             points: Vec::new(),
             small: Vec::new(),
             by_small: FxHashMap::default(),
-            by_hash: FxHashMap::default(),
-            same_hash: Vec::new(),
+            by_hash: HashChains::default(),
         }
     }
 
     fn intern(&mut self, p: RatPoint) -> VertexId {
         match small_of(&p) {
             Some(t) => self.intern_small(t, Some(p)),
-            None => {
-                let h = point_hash(&p);
-                self.intern_big(p, h)
-            }
+            None => self.intern_big(p),
         }
     }
 
@@ -318,8 +289,7 @@ impl Points {
         match m {
             Meet::Small(t) => self.intern_small(t, None),
             // GMP may have built a point whose coordinates fit.
-            Meet::Big(p, _) if small_of(&p).is_some() => self.intern(p),
-            Meet::Big(p, h) => self.intern_big(p, h),
+            Meet::Big(p) => self.intern(p),
         }
     }
 
@@ -355,21 +325,17 @@ impl Points {
         (points, self.small)
     }
 
-    /// A point whose coordinates do not fit, with its hash `h`.
-    fn intern_big(&mut self, p: RatPoint, h: u64) -> VertexId {
+    /// A point whose coordinates do not fit.
+    fn intern_big(&mut self, p: RatPoint) -> VertexId {
+        use std::hash::BuildHasher;
+        let h = std::hash::BuildHasherDefault::<crate::fx::FxHasher>::default().hash_one(&p);
         let new = self.points.len();
-        let mut at = *self.by_hash.entry(h).or_insert(new);
-        if at != new {
-            loop {
-                if self.points[at].as_ref() == Some(&p) {
-                    return at;
-                }
-                if self.same_hash[at] == usize::MAX {
-                    break;
-                }
-                at = self.same_hash[at];
-            }
-            self.same_hash[at] = new;
+        let points = &self.points;
+        if let Some(at) = self
+            .by_hash
+            .find_or_file(h, new, |at| points[at].as_ref() == Some(&p))
+        {
+            return at;
         }
         self.push(Some(p), None);
         new
@@ -378,7 +344,6 @@ impl Points {
     fn push(&mut self, p: Option<RatPoint>, small: Option<[i128; 3]>) {
         self.points.push(p);
         self.small.push(small);
-        self.same_hash.push(usize::MAX);
     }
 
     fn ray_end(&mut self, r: &VisibilityRay) -> VertexId {
@@ -520,7 +485,7 @@ impl Arrangement {
             let se = eyes[i].orientation(a, b);
             sa == se && sa != Orientation::Collinear
         };
-        let crossings = par_meeting_pairs(&boxes, |i, j| {
+        let crossings = meeting_pairs(&boxes, |i, j| {
             if group_of[i] == group_of[j] || apart(i, j) || apart(j, i) {
                 return None;
             }
@@ -528,11 +493,7 @@ impl Arrangement {
             // None for parallel lines.
             let x = match construct_intersection_i128(l1, l2) {
                 Some(t) => Meet::Small(t?),
-                None => {
-                    let p = construct_intersection(l1, l2)?;
-                    let h = point_hash(&p);
-                    Meet::Big(p, h)
-                }
+                None => Meet::Big(construct_intersection(l1, l2)?),
             };
             Some((i, j, x))
         });

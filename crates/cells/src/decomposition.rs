@@ -5,7 +5,7 @@
 use crate::arrangement::{cross_sign, Arrangement, EdgeId, FaceId, HalfEdgeId, Support, VertexId};
 use crate::assignment::BoundaryAssignment;
 use crate::eye::{Eye, Pt};
-use crate::fx::FxHashMap;
+use crate::fx::HashChains;
 use crate::incremental::{Compact, EdgeLines, LowerSkeleton, Walker};
 use crate::rays::{visibility_rays, VisibilityRay};
 use rayon::prelude::*;
@@ -527,12 +527,9 @@ impl<'m> Decomposition<'m> {
 struct ClassTable<'m> {
     map: &'m Map,
     lines: EdgeLines,
-    /// The first class whose skeleton has a given hash; the others with
-    /// that hash follow in `same_hash` (equal hashes are told apart by
-    /// comparing skeletons).
-    by_hash: FxHashMap<u64, usize>,
-    /// By class: the next class with the same hash, or `usize::MAX`.
-    same_hash: Vec<usize>,
+    /// Classes by the hash of their skeleton (equal hashes are told apart
+    /// by comparing skeletons).
+    by_hash: HashChains,
     /// By class: the compact skeleton of its first cell.
     skeletons: Vec<Rep>,
     /// By class: its 2-cells.
@@ -548,8 +545,7 @@ impl<'m> ClassTable<'m> {
         ClassTable {
             map,
             lines: EdgeLines::new(map),
-            by_hash: FxHashMap::default(),
-            same_hash: Vec::new(),
+            by_hash: HashChains::default(),
             skeletons: Vec::new(),
             classes: Vec::new(),
             complexity: Vec::new(),
@@ -572,23 +568,12 @@ impl<'m> ClassTable<'m> {
         rep: Rep,
         walked: &[Option<Compact>],
     ) -> usize {
-        let new = self.skeletons.len();
-        let mut at = *self.by_hash.entry(h).or_insert(new);
-        if at != new {
-            loop {
-                let rep = self.skeletons[at].get(walked);
-                if rep.same_skeleton(sk, self.map, &self.lines) {
-                    return at;
-                }
-                if self.same_hash[at] == usize::MAX {
-                    break;
-                }
-                at = self.same_hash[at];
-            }
-            self.same_hash[at] = new;
+        let c = self.skeletons.len();
+        let (skeletons, map, lines) = (&self.skeletons, self.map, &self.lines);
+        let same = |at: usize| skeletons[at].get(walked).same_skeleton(sk, map, lines);
+        if let Some(at) = self.by_hash.find_or_file(h, c, same) {
+            return at;
         }
-        let c = new;
-        self.same_hash.push(usize::MAX);
         self.skeletons.push(rep);
         self.classes.push(Vec::new());
         self.complexity.push(0);
@@ -630,14 +615,14 @@ pub(crate) fn interior_corners(arr: &Arrangement, hs: &[HalfEdgeId]) -> [VertexI
 
 /// The centroid of the points of three arrangement vertices.
 pub(crate) fn centroid(arr: &Arrangement, c: [VertexId; 3]) -> RatPoint {
-    centroid3(arr.point(c[0]), arr.point(c[1]), arr.point(c[2]))
+    centroid3(arr.pt(c[0]), arr.pt(c[1]), arr.pt(c[2]))
 }
 
 /// `(a + b + c) / 3`, exactly (through `i128` when it fits).
-pub(crate) fn centroid3(a: &RatPoint, b: &RatPoint, c: &RatPoint) -> RatPoint {
-    match Eye::centroid(Pt::new(a), Pt::new(b), Pt::new(c)) {
+fn centroid3(a: Pt<'_>, b: Pt<'_>, c: Pt<'_>) -> RatPoint {
+    match Eye::centroid(a, b, c) {
         Eye::Small { x, y, w } => RatPoint::from_i128(x, y, w).expect("w > 0"),
-        Eye::Big { .. } => centroid3_gmp(a, b, c),
+        Eye::Big { .. } => centroid3_gmp(a.exact, b.exact, c.exact),
     }
 }
 
@@ -656,6 +641,7 @@ pub(crate) fn centroid3_gmp(a: &RatPoint, b: &RatPoint, c: &RatPoint) -> RatPoin
 #[cfg(test)]
 mod tests {
     use super::{centroid3, centroid3_gmp};
+    use crate::eye::Pt;
     use rug::Integer;
     use wai_exact::RatPoint;
 
@@ -676,7 +662,8 @@ mod tests {
             ],
         ];
         for [a, b, c] in &cases {
-            assert_eq!(centroid3(a, b, c), centroid3_gmp(a, b, c), "{a} {b} {c}");
+            let fast = centroid3(Pt::new(a), Pt::new(b), Pt::new(c));
+            assert_eq!(fast, centroid3_gmp(a, b, c), "{a} {b} {c}");
         }
     }
 }

@@ -1,6 +1,6 @@
 //! The size of an arrangement before it is built, from predicates only.
 
-use crate::arrangement::{bbox, each_meeting_pair};
+use crate::arrangement::{bbox, meeting_pairs};
 use crate::rays::{LineKey, VisibilityRay};
 use wai_exact::{side_of_intersection, side_of_line, Line, Point, RatPoint, Side};
 use wai_map::Map;
@@ -50,20 +50,17 @@ pub fn vertex_bound(map: &Map, rays: &[VisibilityRay]) -> u64 {
         .iter()
         .map(|r| bbox([&RatPoint::from(r.start()), &r.end.point]))
         .collect();
-    let mut count = n as u64
-        + rays
-            .iter()
-            .filter(|r| matches!(r.end.on_map, OnMap::Edge(_)))
-            .count() as u64;
-    each_meeting_pair(&boxes, |i, j| {
-        if keys[i] != keys[j]
+    let crossing = meeting_pairs(&boxes, |i, j| {
+        (keys[i] != keys[j]
             && straddles(&rays[i].line, &rays[j], &ends[j])
-            && straddles(&rays[j].line, &rays[i], &ends[i])
-        {
-            count += 1;
-        }
+            && straddles(&rays[j].line, &rays[i], &ends[i]))
+        .then_some(())
     });
-    count
+    let on_edges = rays
+        .iter()
+        .filter(|r| matches!(r.end.on_map, OnMap::Edge(_)))
+        .count();
+    (n + on_edges + crossing.len()) as u64
 }
 
 /// An end of a ray: a map vertex, or the meeting point of the ray's line

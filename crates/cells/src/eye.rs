@@ -88,6 +88,7 @@ pub(crate) struct Pt<'a> {
 }
 
 impl<'a> Pt<'a> {
+    #[cfg(test)]
     pub(crate) fn new(p: &'a RatPoint) -> Pt<'a> {
         Pt {
             small: small_of(p),

@@ -67,3 +67,45 @@ impl Hasher for FxHasher {
         self.hash
     }
 }
+
+/// Ids filed under 64-bit hashes, for tables whose entries are told apart
+/// by an exact comparison: the first id filed under each hash, and for
+/// each id the next one filed under the same hash.
+#[derive(Default)]
+pub(crate) struct HashChains {
+    first: FxHashMap<u64, usize>,
+    next: Vec<usize>,
+}
+
+/// The end of a chain.
+const END: usize = usize::MAX;
+
+impl HashChains {
+    /// The id filed under `h` for which `same` holds, if there is one;
+    /// else `new` (larger than every id filed so far) is filed under `h`.
+    pub(crate) fn find_or_file(
+        &mut self,
+        h: u64,
+        new: usize,
+        mut same: impl FnMut(usize) -> bool,
+    ) -> Option<usize> {
+        if self.next.len() <= new {
+            self.next.resize(new + 1, END);
+        }
+        let mut at = *self.first.entry(h).or_insert(new);
+        if at == new {
+            return None;
+        }
+        loop {
+            if same(at) {
+                return Some(at);
+            }
+            if self.next[at] == END {
+                break;
+            }
+            at = self.next[at];
+        }
+        self.next[at] = new;
+        None
+    }
+}

@@ -297,42 +297,40 @@ fn rays_from(
 ) -> Vec<VisibilityRay> {
     let n = v.len();
     let mut rays = Vec::new();
-    {
-        let (prev, next) = ((a + n - 1) % n, (a + 1) % n);
-        // The candidates: the vertices v_r sees (its own visibility
-        // polygon, one query) and its neighbours. Each is still checked
-        // below, so the query only narrows the search.
-        let mut candidates: Vec<usize> = index.vertex_view(a).iter().map(|&(lo, _)| lo).collect();
-        candidates.extend([prev, next]);
-        candidates.sort_unstable();
-        candidates.dedup();
-        for j in candidates.into_iter().filter(|&j| j != a) {
-            // Implementation note: with e1 = v_prev − v_r, e2 = v_next − v_r
-            // (cross(e1, e2) > 0 at a reflex vertex of a CCW ring), a
-            // direction u is in the closed exterior cone E iff
-            // cross(e1, u) ≥ 0 and cross(u, e2) ≥ 0. For u = v_r − v these
-            // are o1 ≠ CCW and o2 ≠ CW; for u = v − v_r they are o1 ≠ CW and
-            // o2 ≠ CCW.
-            let o1 = orientation(v[a], v[prev], v[j]);
-            let o2 = orientation(v[a], v[next], v[j]);
-            use Orientation::{Clockwise as Cw, CounterClockwise as Ccw};
-            if o1 != Ccw && o2 != Cw {
-                continue; // (a): the ray's direction leaves the map at v_r
-            }
-            let adjacent = j == prev || j == next;
-            if !adjacent && o1 != Cw && o2 != Ccw {
-                // The segment from v_r towards v leaves the map at once. If
-                // it passes this test and its open part misses the boundary
-                // (checked next), it lies in the interior: this local test
-                // is what `sees` decides with a midpoint in that case.
-                continue;
-            }
-            let line = Line::new(v[j], v[a]).expect("map vertices are distinct");
-            if !sides_if_visible(v, &line, sides, a, j, !adjacent) {
-                continue; // v is not visible from v_r
-            }
-            rays.push(shoot(v, line, sides, a, j));
+    let (prev, next) = ((a + n - 1) % n, (a + 1) % n);
+    // The candidates: the vertices v_r sees (its own visibility
+    // polygon, one query) and its neighbours. Each is still checked
+    // below, so the query only narrows the search.
+    let mut candidates: Vec<usize> = index.vertex_view(a).iter().map(|&(lo, _)| lo).collect();
+    candidates.extend([prev, next]);
+    candidates.sort_unstable();
+    candidates.dedup();
+    for j in candidates.into_iter().filter(|&j| j != a) {
+        // Implementation note: with e1 = v_prev − v_r, e2 = v_next − v_r
+        // (cross(e1, e2) > 0 at a reflex vertex of a CCW ring), a
+        // direction u is in the closed exterior cone E iff
+        // cross(e1, u) ≥ 0 and cross(u, e2) ≥ 0. For u = v_r − v these
+        // are o1 ≠ CCW and o2 ≠ CW; for u = v − v_r they are o1 ≠ CW and
+        // o2 ≠ CCW.
+        let o1 = orientation(v[a], v[prev], v[j]);
+        let o2 = orientation(v[a], v[next], v[j]);
+        use Orientation::{Clockwise as Cw, CounterClockwise as Ccw};
+        if o1 != Ccw && o2 != Cw {
+            continue; // (a): the ray's direction leaves the map at v_r
         }
+        let adjacent = j == prev || j == next;
+        if !adjacent && o1 != Cw && o2 != Ccw {
+            // The segment from v_r towards v leaves the map at once. If
+            // it passes this test and its open part misses the boundary
+            // (checked next), it lies in the interior: this local test
+            // is what `sees` decides with a midpoint in that case.
+            continue;
+        }
+        let line = Line::new(v[j], v[a]).expect("map vertices are distinct");
+        if !sides_if_visible(v, &line, sides, a, j, !adjacent) {
+            continue; // v is not visible from v_r
+        }
+        rays.push(shoot(v, line, sides, a, j));
     }
     rays
 }

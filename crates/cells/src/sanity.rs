@@ -2,7 +2,7 @@
 //! then geometry.
 
 use crate::arrangement::{
-    along, area_twice_rat, bbox, boxes_meet, on_closed_segment, Arrangement, Support,
+    along, area_twice_rat, bbox, boxes_meet, meeting_pairs, on_closed_segment, Arrangement, Support,
 };
 use rug::Rational;
 use wai_exact::{orientation_rat, Orientation, RatPoint};
@@ -230,24 +230,14 @@ impl Arrangement {
                 }
             }
         }
-        let mut eorder: Vec<usize> = (0..self.edges.len()).collect();
-        eorder.sort_by_key(|&e| eboxes[e][0]);
-        for (i, &e) in eorder.iter().enumerate() {
-            let (a, b) = ends(e);
-            for &f in &eorder[i + 1..] {
-                if eboxes[f][0] > eboxes[e][2] {
-                    break;
-                }
-                if !boxes_meet(&eboxes[e], &eboxes[f]) {
-                    continue;
-                }
-                let (c, d) = ends(f);
-                if let Some(why) = self.edges_meet_badly((a, b), (c, d)) {
-                    return Err(format!("edges {e} and {f} {why}"));
-                }
-            }
+        let bad = meeting_pairs(&eboxes, |e, f| {
+            let why = self.edges_meet_badly(ends(e), ends(f))?;
+            Some(format!("edges {e} and {f} {why}"))
+        });
+        match bad.into_iter().next() {
+            Some(why) => Err(why),
+            None => Ok(()),
         }
-        Ok(())
     }
 
     /// Whether two edges meet other than in one shared end point.
