@@ -341,6 +341,13 @@ impl Points {
         new
     }
 
+    /// Room for `more` points.
+    fn reserve(&mut self, more: usize) {
+        self.points.reserve(more);
+        self.small.reserve(more);
+        self.by_small.reserve(more);
+    }
+
     fn push(&mut self, p: Option<RatPoint>, small: Option<[i128; 3]>) {
         self.points.push(p);
         self.small.push(small);
@@ -497,6 +504,7 @@ impl Arrangement {
             };
             Some((i, j, x))
         });
+        pts.reserve(crossings.len());
         for (i, j, x) in crossings {
             let id = pts.intern_meet(x);
             on_line[group_of[i]].push(id);
@@ -512,9 +520,10 @@ impl Arrangement {
         let (points, small) = pts.finish();
         let mut on_boundary = vec![false; points.len()];
         // Edges: map edges first, then ray groups.
-        let mut edges: Vec<EdgeGeometry> = Vec::new();
-        let mut ends_of: Vec<(VertexId, VertexId)> = Vec::new();
-        let mut dir_of: Vec<(i128, i128)> = Vec::new();
+        let most = on_edge.iter().chain(&on_line).map(Vec::len).sum::<usize>();
+        let mut edges: Vec<EdgeGeometry> = Vec::with_capacity(most);
+        let mut ends_of: Vec<(VertexId, VertexId)> = Vec::with_capacity(most);
+        let mut dir_of: Vec<(i128, i128)> = Vec::with_capacity(most);
         let edge_dirs: Vec<(i128, i128)> = (0..n)
             .map(|i| primitive_dir(&Line::new(v[i], v[(i + 1) % n]).expect("distinct")))
             .collect();
@@ -577,7 +586,18 @@ impl Arrangement {
         }
         // Half-edges 2e (along the support's direction) and 2e + 1.
         let mut half_edges: Vec<HalfEdge> = Vec::with_capacity(2 * edges.len());
-        let mut out: Vec<Vec<HalfEdgeId>> = vec![Vec::new(); points.len()];
+        // By vertex, its outgoing half-edges: `out[start[v]..start[v + 1]]`.
+        let nv = points.len();
+        let mut start = vec![0usize; nv + 1];
+        for &(a, b) in &ends_of {
+            start[a + 1] += 1;
+            start[b + 1] += 1;
+        }
+        for v in 0..nv {
+            start[v + 1] += start[v];
+        }
+        let mut fill = start.clone();
+        let mut out: Vec<HalfEdgeId> = vec![0; 2 * ends_of.len()];
         for (e, &(a, b)) in ends_of.iter().enumerate() {
             for (h, o) in [(2 * e, a), (2 * e + 1, b)] {
                 half_edges.push(HalfEdge {
@@ -587,9 +607,11 @@ impl Arrangement {
                     prev: usize::MAX,
                     face: usize::MAX,
                 });
-                out[o].push(h);
+                out[fill[o]] = h;
+                fill[o] += 1;
             }
         }
+        drop(fill);
         let hdir = |h: HalfEdgeId| {
             let d = dir_of[h / 2];
             if h.is_multiple_of(2) {
@@ -598,10 +620,20 @@ impl Arrangement {
                 (-d.0, -d.1)
             }
         };
-        out.par_iter_mut()
+        let mut around: Vec<&mut [HalfEdgeId]> = Vec::with_capacity(nv);
+        let mut rest = &mut out[..];
+        for v in 0..nv {
+            let (o, tail) = std::mem::take(&mut rest).split_at_mut(start[v + 1] - start[v]);
+            around.push(o);
+            rest = tail;
+        }
+        around
+            .par_iter_mut()
             .for_each(|o| o.sort_by(|&x, &y| compare_angle(hdir(x), hdir(y))));
-        let mut vertices = Vec::with_capacity(points.len());
-        for o in &out {
+        drop(around);
+        let mut vertices = Vec::with_capacity(nv);
+        for v in 0..nv {
+            let o = &out[start[v]..start[v + 1]];
             let k = o.len();
             for i in 0..k {
                 let h = o[i] ^ 1;

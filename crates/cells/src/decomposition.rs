@@ -6,7 +6,7 @@ use crate::arrangement::{cross_sign, Arrangement, EdgeId, FaceId, HalfEdgeId, Su
 use crate::assignment::BoundaryAssignment;
 use crate::eye::{Eye, Pt};
 use crate::fx::HashChains;
-use crate::incremental::{Compact, EdgeLines, LowerSkeleton, Walker};
+use crate::incremental::{Compact, EdgeLines, LowerSkeleton, Walked, Walker};
 use crate::rays::{visibility_rays, VisibilityRay};
 use rayon::prelude::*;
 use rug::Integer;
@@ -234,86 +234,109 @@ impl<'m> Decomposition<'m> {
         let step = (all / 100).max(1);
 
         let index = VisibilityIndex::new(map);
+        let shapes: Vec<(usize, [VertexId; 3])> = cells
+            .par_iter()
+            .map(|&f| {
+                let hs = arrangement.face_half_edges(f);
+                (hs.len(), interior_corners(&arrangement, &hs))
+            })
+            .collect();
+        let (sizes, cell_corners): (Vec<usize>, Vec<[VertexId; 3]>) = shapes.into_iter().unzip();
         let mut corners: Vec<Option<[VertexId; 3]>> = vec![None; arrangement.face_count()];
-        let mut sizes = Vec::with_capacity(total);
-        for &f in &cells {
-            let hs = arrangement.face_half_edges(f);
-            sizes.push(hs.len());
-            corners[f] = Some(interior_corners(&arrangement, &hs));
+        for (&f, &c) in cells.iter().zip(&cell_corners) {
+            corners[f] = Some(c);
         }
-        let walker = Walker::new(map, &arrangement, &index);
-        let walked = walker.walk(&corners, &mut |done| {
+        let lines = EdgeLines::new(map);
+        let walker = Walker::new(map, &arrangement, &index, &lines);
+        let Walked {
+            faces: walked,
+            hashes: face_hashes,
+            early,
+        } = walker.walk(&corners, &mut |done| {
             if done.is_multiple_of(step) && done < all {
                 progress(done, all);
             }
         });
-        let mut table = ClassTable::new(map);
-        let hashes: Vec<u64> = cells
-            .par_iter()
-            .map(|&f| {
-                let sk = walked[f].as_ref().expect("every cell is walked");
-                sk.class_hash(map, &table.lines)
-            })
-            .collect();
-        let mut cell_corners = Vec::with_capacity(total);
+        let skeleton = |i: usize| walked[cells[i]].as_ref().expect("every cell is walked");
+        let mut table = ClassTable::new(map, &lines);
+        let hashes: Vec<u64> = cells.iter().map(|&f| face_hashes[f]).collect();
+        let first = first_alike(&hashes, |i, j| {
+            skeleton(i).same_skeleton(skeleton(j), map, &lines)
+        });
         let mut skeleton_index = Vec::with_capacity(total);
-        let mut origins: Vec<usize> = Vec::with_capacity(total);
         for (i, &f) in cells.iter().enumerate() {
-            let sk = walked[f].as_ref().expect("every cell is walked");
-            origins.push(sk.origin());
-            let class = table.intern_hashed(hashes[i], sk, Rep::Face(f), &walked);
+            let class = if first[i] == i {
+                table.push(Rep::Face(f), hashes[i])
+            } else {
+                skeleton_index[first[i]]
+            };
             table.classes[class].push(f);
             table.complexity[class] += 2 * sizes[i];
-            cell_corners.push(corners[f].expect("a cell"));
             skeleton_index.push(class);
         }
+        let origins: Vec<usize> = (0..total)
+            .into_par_iter()
+            .map(|i| skeleton(i).origin())
+            .collect();
 
         // Cells of dimension 1 and 0, each with its skeleton, absorbed by an
         // adjacent 2-cell with the same skeleton in the same embedding.
-        let mut lower: Vec<LowerCell> = Vec::new();
-        walker.lower(&walked, &mut |site, faces, sk| {
-            let done = total + lower.len() + 1;
-            if done.is_multiple_of(step) && done < all {
-                progress(done, all);
-            }
-            let (class, origin, absorbed_by) = match sk {
-                LowerSkeleton::Face(f) => {
-                    let i = position[f];
-                    (skeleton_index[i], origins[i], Some(f))
-                }
+        // Resolved in parallel where no new class is needed.
+        let at_face = |f: FaceId| position[f];
+        let resolve = |site: LowerSite, faces: &[FaceId], sk: LowerSkeleton| {
+            let cell = |f: FaceId, origin: usize| LowerCell {
+                site,
+                class: skeleton_index[at_face(f)],
+                origin,
+                absorbed_by: Some(f),
+            };
+            match sk {
+                LowerSkeleton::Face(f) => Resolved::Cell(cell(f, origins[at_face(f)])),
                 LowerSkeleton::Own(sk) => {
                     // Equal compact skeletons are equal skeletons in the
                     // same embedding, and need no class lookup.
-                    let same = faces
+                    match faces
                         .iter()
-                        .copied()
-                        .find(|&f| walked[f].as_ref().is_some_and(|w| *w == sk));
-                    let origin = sk.origin();
-                    match same {
-                        Some(f) => (skeleton_index[position[f]], origin, Some(f)),
-                        None => {
-                            let class = table.intern(&sk, Rep::Own(sk.clone()), &walked);
-                            // Collinear map edges make the converse need
-                            // the class.
-                            let by = faces.iter().copied().find(|&f| {
-                                position[f] != NOT_A_CELL
-                                    && skeleton_index[position[f]] == class
-                                    && origins[position[f]] == origin
-                            });
-                            (class, origin, by)
-                        }
+                        .find(|&&f| walked[f].as_ref().is_some_and(|w| *w == sk))
+                    {
+                        Some(&f) => Resolved::Cell(cell(f, sk.origin())),
+                        None => Resolved::Own(site, faces.to_vec(), sk),
                     }
                 }
-            };
-            if absorbed_by.is_none() {
-                table.lower[class].push(lower.len());
             }
-            lower.push(LowerCell {
-                site,
-                class,
-                origin,
-                absorbed_by,
-            });
+        };
+        let mut lower: Vec<LowerCell> = Vec::new();
+        walker.lower(&walked, &early, resolve, &mut |block| {
+            for r in block {
+                let c = match r {
+                    Resolved::Cell(c) => c,
+                    Resolved::Own(site, faces, sk) => {
+                        let origin = sk.origin();
+                        let class = table.intern(&sk, Rep::Own(sk.clone()), &walked);
+                        // Collinear map edges make the converse need the
+                        // class.
+                        let absorbed_by = faces.iter().copied().find(|&f| {
+                            position[f] != NOT_A_CELL
+                                && skeleton_index[position[f]] == class
+                                && origins[position[f]] == origin
+                        });
+                        LowerCell {
+                            site,
+                            class,
+                            origin,
+                            absorbed_by,
+                        }
+                    }
+                };
+                if c.absorbed_by.is_none() {
+                    table.lower[c.class].push(lower.len());
+                }
+                lower.push(c);
+                let done = total + lower.len();
+                if done.is_multiple_of(step) && done < all {
+                    progress(done, all);
+                }
+            }
         });
         drop(walker);
         let mut walked = walked;
@@ -524,9 +547,9 @@ impl<'m> Decomposition<'m> {
 /// order first seen. Skeletons are compared as compact skeletons up to
 /// translation ([`Compact::same_skeleton`]), which is comparing keys
 /// without building them.
-struct ClassTable<'m> {
-    map: &'m Map,
-    lines: EdgeLines,
+struct ClassTable<'a> {
+    map: &'a Map,
+    lines: &'a EdgeLines,
     /// Classes by the hash of their skeleton (equal hashes are told apart
     /// by comparing skeletons).
     by_hash: HashChains,
@@ -538,48 +561,109 @@ struct ClassTable<'m> {
     complexity: Vec<usize>,
     /// By class: its kept lower-dimensional cells.
     lower: Vec<Vec<usize>>,
+    /// By class: the hash of its skeleton.
+    hashes: Vec<u64>,
+    /// The classes below this one are filed in `by_hash`.
+    filed: usize,
 }
 
-impl<'m> ClassTable<'m> {
-    fn new(map: &'m Map) -> ClassTable<'m> {
+impl<'a> ClassTable<'a> {
+    fn new(map: &'a Map, lines: &'a EdgeLines) -> ClassTable<'a> {
         ClassTable {
             map,
-            lines: EdgeLines::new(map),
+            lines,
             by_hash: HashChains::default(),
             skeletons: Vec::new(),
             classes: Vec::new(),
             complexity: Vec::new(),
             lower: Vec::new(),
+            hashes: Vec::new(),
+            filed: 0,
         }
+    }
+
+    /// A new class, skeleton `rep` with class hash `h`, known to differ
+    /// from all others; not yet filed for [`ClassTable::intern`].
+    fn push(&mut self, rep: Rep, h: u64) -> usize {
+        self.skeletons.push(rep);
+        self.classes.push(Vec::new());
+        self.complexity.push(0);
+        self.lower.push(Vec::new());
+        self.hashes.push(h);
+        self.skeletons.len() - 1
     }
 
     /// The class of skeleton `sk`, a new empty one (with `rep`, which is
     /// `sk`) if it was not seen before. `walked`: the 2-cells' skeletons.
     fn intern(&mut self, sk: &Compact, rep: Rep, walked: &[Option<Compact>]) -> usize {
-        let h = sk.class_hash(self.map, &self.lines);
-        self.intern_hashed(h, sk, rep, walked)
-    }
-
-    /// [`ClassTable::intern`] of a skeleton whose class hash is `h`.
-    fn intern_hashed(
-        &mut self,
-        h: u64,
-        sk: &Compact,
-        rep: Rep,
-        walked: &[Option<Compact>],
-    ) -> usize {
-        let c = self.skeletons.len();
-        let (skeletons, map, lines) = (&self.skeletons, self.map, &self.lines);
-        let same = |at: usize| skeletons[at].get(walked).same_skeleton(sk, map, lines);
-        if let Some(at) = self.by_hash.find_or_file(h, c, same) {
-            return at;
+        // Classes pushed unfiled (those of the 2-cells) are filed when
+        // first needed: most maps need none.
+        for c in self.filed..self.skeletons.len() {
+            self.by_hash.find_or_file(self.hashes[c], c, |_| false);
         }
-        self.skeletons.push(rep);
-        self.classes.push(Vec::new());
-        self.complexity.push(0);
-        self.lower.push(Vec::new());
-        c
+        let h = sk.class_hash(self.map, self.lines);
+        let c = self.skeletons.len();
+        let (skeletons, map, lines) = (&self.skeletons, self.map, self.lines);
+        let same = |at: usize| skeletons[at].get(walked).same_skeleton(sk, map, lines);
+        let class = match self.by_hash.find_or_file(h, c, same) {
+            Some(at) => at,
+            None => self.push(rep, h),
+        };
+        self.filed = self.skeletons.len();
+        class
     }
+}
+
+/// By position: the first position whose value is alike, for `alike` an
+/// equivalence that implies equal `hashes`. Found in parallel: positions
+/// sorted by hash, each run of equal hashes split into classes.
+fn first_alike(hashes: &[u64], alike: impl Fn(usize, usize) -> bool + Sync) -> Vec<usize> {
+    let mut order: Vec<(u64, usize)> = hashes.iter().copied().zip(0..).collect();
+    order.par_sort_unstable();
+    let mut first: Vec<usize> = (0..hashes.len()).collect();
+    // Runs of equal hashes; a run of one is its own first.
+    let mut runs: Vec<&[(u64, usize)]> = Vec::new();
+    let mut rest = &order[..];
+    while let Some(&(h, _)) = rest.first() {
+        let len = rest.iter().take_while(|&&(g, _)| g == h).count();
+        let (run, tail) = rest.split_at(len);
+        if len > 1 {
+            runs.push(run);
+        }
+        rest = tail;
+    }
+    let found: Vec<Vec<(usize, usize)>> = runs
+        .par_iter()
+        .map(|run| {
+            // Ascending positions: each is alike to an earlier first one
+            // or is a first one itself.
+            let mut firsts: Vec<usize> = Vec::new();
+            run.iter()
+                .map(|&(_, i)| {
+                    let f = firsts
+                        .iter()
+                        .copied()
+                        .find(|&f| alike(f, i))
+                        .unwrap_or_else(|| {
+                            firsts.push(i);
+                            i
+                        });
+                    (i, f)
+                })
+                .collect()
+        })
+        .collect();
+    for (i, f) in found.into_iter().flatten() {
+        first[i] = f;
+    }
+    first
+}
+
+/// A 1- or 0-cell as resolved in parallel: done, or with a skeleton no
+/// adjacent 2-cell has in the same embedding, whose class is to be found.
+enum Resolved {
+    Cell(LowerCell),
+    Own(LowerSite, Vec<FaceId>, Compact),
 }
 
 /// A class's skeleton while the classes are found: a 2-cell's (in the

@@ -221,6 +221,7 @@ impl Compact {
 }
 
 /// The skeleton of a 1- or 0-cell.
+#[derive(Debug)]
 pub(crate) enum LowerSkeleton {
     /// That of the adjacent 2-cell, in the same embedding: the compact
     /// skeletons are equal.
@@ -229,40 +230,67 @@ pub(crate) enum LowerSkeleton {
     Own(Compact),
 }
 
-/// Receives each 1- or 0-cell: where it is, the 2-cells next to it and its
-/// skeleton.
-pub(crate) type LowerSink<'s> = dyn FnMut(LowerSite, &[FaceId], LowerSkeleton) + 's;
-
 /// The skeletons of all cells of an arrangement, by walking it. Shared
 /// by reference: its only state after construction is a cache filled
 /// once per map vertex.
 pub(crate) struct Walker<'a> {
     map: &'a Map,
+    /// For the class hashes of the 2-cells, taken while they are at hand.
+    edge_lines: &'a EdgeLines,
     arr: &'a Arrangement,
     index: &'a VisibilityIndex<'a>,
     /// By ray group.
     lines: Vec<LineView>,
-    /// By arrangement edge on rays: its slot on its line
-    /// ([`LineView::slot`]); `u32::MAX` for map edges.
-    edge_slot: Vec<u32>,
+    topo: Topology,
     /// By map vertex: the view from it, computed when first needed.
     views: Vec<OnceLock<Vec<(usize, usize)>>>,
     /// By map vertex: reflex in the map.
     reflex: Vec<bool>,
 }
 
-impl<'a> Walker<'a> {
-    pub(crate) fn new(map: &'a Map, arr: &'a Arrangement, index: &'a VisibilityIndex<'a>) -> Self {
-        let lines = arr
-            .ray_groups()
-            .par_iter()
-            .map(|g| LineView::new(map, arr.rays()[g.rays[0]].source(), g.dir))
-            .collect::<Vec<LineView>>();
-        let edge_slot = (0..arr.edge_count())
+/// No ray group, no lower cell, no skeleton found early.
+const NONE: u32 = u32::MAX;
+
+/// The arrangement as the walk reads it: its topology in 32-bit ids (12
+/// bytes a half-edge against the arrangement's 40, so that more of it
+/// stays in cache), each edge's line and slot, and the lower cells. Twins
+/// are `h ^ 1`.
+struct Topology {
+    /// By half-edge: the next on its face's boundary, its origin, its face.
+    half: Vec<[u32; 3]>,
+    /// By face: a half-edge of its boundary.
+    outer: Vec<u32>,
+    /// By edge: its ray group and its slot on the group's line
+    /// ([`LineView::slot`]), [`NONE`] for map edges; its index in `sites`
+    /// ([`NONE`] for map edges).
+    edge: Vec<[u32; 3]>,
+    /// By vertex: its index in `sites` ([`NONE`] on the map boundary), and
+    /// its number of outgoing half-edges (= corners of faces).
+    vertex: Vec<[u32; 2]>,
+    /// The 1-cells (edges on rays, by id), then the 0-cells (vertices off
+    /// the map boundary, by id).
+    sites: Vec<LowerSite>,
+}
+
+impl Topology {
+    fn new(arr: &Arrangement, lines: &[LineView]) -> Topology {
+        let id = |i: usize| u32::try_from(i).expect("fewer than 2^32 arrangement elements");
+        let half = (0..arr.half_edge_count())
+            .into_par_iter()
+            .map(|h| {
+                let he = arr.half_edge(h);
+                debug_assert_eq!(he.twin, h ^ 1, "twins are paired");
+                [id(he.next), id(he.origin), id(he.face)]
+            })
+            .collect();
+        let outer = (0..arr.face_count())
+            .map(|f| id(arr.face(f).outer))
+            .collect();
+        let mut edge: Vec<[u32; 3]> = (0..arr.edge_count())
             .into_par_iter()
             .map(|e| {
                 let Support::Rays(g) = arr.edge_support(e) else {
-                    return u32::MAX;
+                    return [NONE; 3];
                 };
                 let l = &lines[g];
                 let (a, b) = (arr.half_edge(2 * e).origin, arr.dest(2 * e));
@@ -272,16 +300,94 @@ impl<'a> Walker<'a> {
                     l.slot_before(&l.position_of(arr.pt(b))),
                     "an event strictly inside arrangement edge {e}"
                 );
-                u32::try_from(slot).expect("fewer than 2^32 events on a line")
+                [id(g), id(slot), NONE]
             })
             .collect();
+        let sites: Vec<LowerSite> = (0..arr.edge_count())
+            .filter(|&e| edge[e][0] != NONE)
+            .map(LowerSite::Edge)
+            .chain(
+                (0..arr.vertex_count())
+                    .filter(|&v| !arr.is_on_map_boundary(v))
+                    .map(LowerSite::Vertex),
+            )
+            .collect();
+        let mut vertex = vec![[NONE, 0]; arr.vertex_count()];
+        for (i, &site) in sites.iter().enumerate() {
+            match site {
+                LowerSite::Edge(e) => edge[e][2] = id(i),
+                LowerSite::Vertex(v) => vertex[v][0] = id(i),
+            }
+        }
+        for h in 0..arr.half_edge_count() {
+            vertex[arr.half_edge(h).origin][1] += 1;
+        }
+        Topology {
+            half,
+            outer,
+            edge,
+            vertex,
+            sites,
+        }
+    }
+
+    /// The half-edges of face `f`'s boundary.
+    fn cycle(&self, f: FaceId) -> impl Iterator<Item = usize> + '_ {
+        let start = self.outer[f];
+        let mut h = Some(start);
+        std::iter::from_fn(move || {
+            let cur = h?;
+            let next = self.half[cur as usize][0];
+            h = (next != start).then_some(next);
+            Some(cur as usize)
+        })
+    }
+
+    fn origin(&self, h: usize) -> usize {
+        self.half[h][1] as usize
+    }
+
+    fn face(&self, h: usize) -> FaceId {
+        self.half[h][2] as usize
+    }
+
+    /// Edge e's ray group and slot on its line, `None` for a map edge.
+    fn line(&self, e: usize) -> Option<(usize, u32)> {
+        let [g, slot, _] = self.edge[e];
+        (g != NONE).then_some((g as usize, slot))
+    }
+}
+
+/// The skeletons of the lower cells found during the walk (those whose
+/// 2-cells were all walked in one part), by index in the walker's sites.
+pub(crate) struct Early {
+    /// By site: the 2-cell whose skeleton it has, or [`NONE`].
+    face: Vec<u32>,
+    /// By ascending site: its own skeleton.
+    own: Vec<(u32, Compact)>,
+}
+
+impl<'a> Walker<'a> {
+    pub(crate) fn new(
+        map: &'a Map,
+        arr: &'a Arrangement,
+        index: &'a VisibilityIndex<'a>,
+        edge_lines: &'a EdgeLines,
+    ) -> Self {
+        let lines = arr
+            .ray_groups()
+            .par_iter()
+            .map(|g| LineView::new(map, arr.rays()[g.rays[0]].source(), g.dir))
+            .collect::<Vec<LineView>>();
+        let topo = Topology::new(arr, &lines);
         let n = map.vertices().len();
         Walker {
             map,
+            edge_lines,
             arr,
             index,
             lines,
-            edge_slot,
+            topo,
             views: (0..n).map(|_| OnceLock::new()).collect(),
             reflex: (0..n).map(|i| map.is_reflex(i)).collect(),
         }
@@ -301,7 +407,7 @@ impl<'a> Walker<'a> {
         &self,
         corners: &[Option<[VertexId; 3]>],
         progress: &mut dyn FnMut(usize),
-    ) -> Vec<Option<Compact>> {
+    ) -> Walked {
         let arr = self.arr;
         let order = self.breadth_first();
         let parts = rayon::current_num_threads()
@@ -314,8 +420,7 @@ impl<'a> Walker<'a> {
         }
         let done = AtomicUsize::new(0);
         // Parts 1.. on the pool's threads, part 0 here, reporting progress.
-        let others: Vec<OnceLock<Vec<Option<Compact>>>> =
-            (1..parts).map(|_| OnceLock::new()).collect();
+        let others: Vec<OnceLock<Part>> = (1..parts).map(|_| OnceLock::new()).collect();
         let range = |p: usize| &order[p * size..((p + 1) * size).min(order.len())];
         let (part_of, done) = (&part_of, &done);
         let first = rayon::in_place_scope(|scope| {
@@ -331,19 +436,38 @@ impl<'a> Walker<'a> {
                 progress(done.fetch_add(1, AtomicOrdering::Relaxed) + 1);
             })
         });
-        let mut walked: Vec<Vec<Option<Compact>>> = std::iter::once(first)
+        let mut walked: Vec<Part> = std::iter::once(first)
             .chain(others.into_iter().map(|s| s.into_inner().expect("walked")))
             .collect();
-        let mut faces = walked.swap_remove(0);
-        for other in walked {
-            for (f, sk) in other.into_iter().enumerate() {
+        let (mut faces, mut hashes, mut found) = walked.swap_remove(0);
+        for (other, other_hashes, more) in walked {
+            for ((f, sk), h) in other.into_iter().enumerate().zip(other_hashes) {
                 if sk.is_some() {
                     faces[f] = sk;
+                    hashes[f] = h;
                 }
             }
+            found.extend(more);
         }
+        let mut early = Early {
+            face: vec![NONE; self.topo.sites.len()],
+            own: Vec::new(),
+        };
+        for (i, sk) in found {
+            match sk {
+                LowerSkeleton::Face(f) => {
+                    early.face[i as usize] = u32::try_from(f).expect("fewer than 2^32 faces")
+                }
+                LowerSkeleton::Own(c) => early.own.push((i, c)),
+            }
+        }
+        early.own.sort_unstable_by_key(|&(i, _)| i);
         progress(done.load(AtomicOrdering::Relaxed));
-        faces
+        Walked {
+            faces,
+            hashes,
+            early,
+        }
     }
 
     /// The cells in breadth-first order across ray edges, from each cell
@@ -363,9 +487,9 @@ impl<'a> Walker<'a> {
             while i < order.len() {
                 let f = order[i];
                 i += 1;
-                for h in arr.face_cycle(f) {
-                    if let Support::Rays(_) = arr.edge_support(h / 2) {
-                        let other = arr.half_edge(arr.half_edge(h).twin).face;
+                for h in self.topo.cycle(f) {
+                    if self.topo.line(h / 2).is_some() {
+                        let other = self.topo.face(h ^ 1);
                         if other != arr.outer_face() && !seen[other] {
                             seen[other] = true;
                             order.push(other);
@@ -378,7 +502,10 @@ impl<'a> Walker<'a> {
     }
 
     /// Walk the cells of part `part` (`part_of`, by face), starting from
-    /// those of `order` not yet reached: the skeleton of each, by face id.
+    /// those of `order` not yet reached: the skeleton and class hash of
+    /// each, by face id; and the skeleton of each lower cell whose 2-cells
+    /// are all in the part, by site, found when the last of them is walked
+    /// (while its skeleton is at hand, not in a later pass).
     fn walk_part(
         &self,
         order: &[FaceId],
@@ -386,7 +513,7 @@ impl<'a> Walker<'a> {
         part_of: &[u32],
         corners: &[Option<[VertexId; 3]>],
         progress: &mut dyn FnMut(),
-    ) -> Vec<Option<Compact>> {
+    ) -> Part {
         let arr = self.arr;
         let nf = arr.face_count();
         // By face: Vis, once reached; then its skeleton, which keeps it.
@@ -395,6 +522,11 @@ impl<'a> Walker<'a> {
         let mut queue = VecDeque::new();
         // By face: the walked face it was reached from, across which line.
         let mut from: Vec<Option<(FaceId, usize)>> = vec![None; nf];
+        let mut hashes = vec![0u64; nf];
+        let mut early: Vec<(u32, LowerSkeleton)> = Vec::new();
+        let mut scratch = Scratch::default();
+        // By vertex off the map boundary: its corners in walked 2-cells.
+        let mut corners_walked = vec![0u32; arr.vertex_count()];
         for &start in order {
             if part_of[start] != part || faces[start].is_some() || reached[start].is_some() {
                 continue;
@@ -413,12 +545,12 @@ impl<'a> Walker<'a> {
                     }
                     None => self.compact(here, &eye),
                 };
-                for h in arr.face_cycle(f) {
-                    let Support::Rays(g) = arr.edge_support(h / 2) else {
+                for h in self.topo.cycle(f) {
+                    let Some((g, slot)) = self.topo.line(h / 2) else {
                         continue;
                     };
-                    let t = arr.half_edge(h).twin;
-                    let other = arr.half_edge(t).face;
+                    let t = h ^ 1;
+                    let other = self.topo.face(t);
                     if other == arr.outer_face()
                         || part_of[other] != part
                         || faces[other].is_some()
@@ -433,48 +565,87 @@ impl<'a> Walker<'a> {
                     } else {
                         Beside::Right
                     };
-                    let slot = self.edge_slot[h / 2];
                     reached[other] = Some(self.across(&sk.vis, &[(g, slot)], Some(side)));
                     from[other] = Some((f, g));
                     queue.push_back(other);
                 }
+                hashes[f] = sk.class_hash(self.map, self.edge_lines);
                 faces[f] = Some(sk);
+                // The lower cells whose 2-cells are all walked now.
+                let topo = &self.topo;
+                for h in topo.cycle(f) {
+                    let mut found = |i: u32, site: LowerSite, faces: &[Option<Compact>]| {
+                        let (_, sk) = self.lower_cell(site, faces, &mut scratch);
+                        early.push((i, sk));
+                    };
+                    let v = topo.origin(h);
+                    let [site, degree] = topo.vertex[v];
+                    if site != NONE {
+                        corners_walked[v] += 1;
+                        if corners_walked[v] == degree {
+                            found(site, LowerSite::Vertex(v), &faces);
+                        }
+                    }
+                    let e = h / 2;
+                    let site = topo.edge[e][2];
+                    if site != NONE {
+                        let other = topo.face(h ^ 1);
+                        if other != f && faces[other].is_some() {
+                            found(site, LowerSite::Edge(e), &faces);
+                        }
+                    }
+                }
                 progress();
             }
         }
-        faces
+        (faces, hashes, early)
     }
 
-    /// After [`Walker::walk`] (`walked`): the skeleton of every 1-cell
-    /// (edge on a ray) by edge id, then of every 0-cell (vertex off the
-    /// map boundary) by vertex id, handed to `sink` one at a time, in that
-    /// order, with the 2-cells next to it. They are computed in parallel a
-    /// block at a time; `sink` runs on the caller's thread.
-    pub(crate) fn lower(&self, walked: &[Option<Compact>], sink: &mut LowerSink<'_>) {
-        let arr = self.arr;
-        let sites: Vec<LowerSite> = (0..arr.edge_count())
-            .filter(|&e| matches!(arr.edge_support(e), Support::Rays(_)))
-            .map(LowerSite::Edge)
-            .chain(
-                (0..arr.vertex_count())
-                    .filter(|&v| !arr.is_on_map_boundary(v))
-                    .map(LowerSite::Vertex),
-            )
-            .collect();
-        for block in sites.chunks(LOWER_BLOCK) {
-            let done: Vec<(Faces, LowerSkeleton)> = block
-                .par_iter()
-                .map_init(Scratch::default, |scratch, &site| {
-                    self.lower_cell(site, walked, scratch)
-                })
-                .collect();
-            for (&site, (faces, sk)) in block.iter().zip(done) {
-                sink(site, faces.as_slice(), sk);
-            }
+    /// After [`Walker::walk`] (`walked`, `early`): the skeleton of every
+    /// 1-cell (edge on a ray) by edge id, then of every 0-cell (vertex off
+    /// the map boundary) by vertex id: found in the walk, or else computed
+    /// here. Each is handed to `resolve` in parallel, with the 2-cells next
+    /// to it (left empty for a [`LowerSkeleton::Face`] found in the walk,
+    /// which names its 2-cell); `sink` receives the results a block at a
+    /// time, in that order, on the caller's thread.
+    pub(crate) fn lower<T: Send>(
+        &self,
+        walked: &[Option<Compact>],
+        early: &Early,
+        resolve: impl Fn(LowerSite, &[FaceId], LowerSkeleton) -> T + Sync,
+        sink: &mut dyn FnMut(Vec<T>),
+    ) {
+        for (b, block) in self.topo.sites.chunks(LOWER_BLOCK).enumerate() {
+            sink(
+                block
+                    .par_iter()
+                    .enumerate()
+                    .map_init(Scratch::default, |scratch, (j, &site)| {
+                        let i = b * LOWER_BLOCK + j;
+                        if early.face[i] != NONE {
+                            let f = early.face[i] as usize;
+                            return resolve(site, &[], LowerSkeleton::Face(f));
+                        }
+                        let own = early
+                            .own
+                            .binary_search_by_key(&(i as u32), |&(at, _)| at)
+                            .ok();
+                        let (faces, sk) = match own {
+                            Some(o) => (
+                                self.faces_of(site),
+                                LowerSkeleton::Own(early.own[o].1.clone()),
+                            ),
+                            None => self.lower_cell(site, walked, scratch),
+                        };
+                        resolve(site, faces.as_slice(), sk)
+                    })
+                    .collect(),
+            );
         }
     }
 
-    /// The 2-cells next to a lower cell, and its skeleton.
+    /// The 2-cells next to a lower cell, and its skeleton. `walked` holds
+    /// the skeletons of those 2-cells at least.
     fn lower_cell(
         &self,
         site: LowerSite,
@@ -484,13 +655,11 @@ impl<'a> Walker<'a> {
         let arr = self.arr;
         match site {
             LowerSite::Edge(e) => {
-                let Support::Rays(g) = arr.edge_support(e) else {
-                    unreachable!("1-cells lie on rays");
-                };
-                let faces = [arr.half_edge(2 * e).face, arr.half_edge(2 * e + 1).face];
+                let line = self.topo.line(e).expect("1-cells lie on rays");
+                let faces = [self.topo.face(2 * e), self.topo.face(2 * e + 1)];
                 // Half-edge 2e runs along the line, its face on the left.
                 let sides = [Beside::Left, Beside::Right];
-                let lines = [(g, self.edge_slot[e])];
+                let lines = [line];
                 let sk = self.lower_skeleton(site, &faces, walked, &lines, &sides, scratch);
                 (Faces::Two(faces), sk)
             }
@@ -518,18 +687,22 @@ impl<'a> Walker<'a> {
         }
     }
 
+    /// The 2-cells next to a lower cell, in the order of
+    /// [`Walker::lower_cell`].
+    fn faces_of(&self, site: LowerSite) -> Faces {
+        let arr = self.arr;
+        match site {
+            LowerSite::Edge(e) => Faces::Two([self.topo.face(2 * e), self.topo.face(2 * e + 1)]),
+            LowerSite::Vertex(v) => Faces::Many(arr.faces_around(v)),
+        }
+    }
+
     /// The ray groups through an interior vertex with outgoing half-edges
     /// `out`, each with the vertex's slot on it. The vertex is no event of
     /// the line, so it shares the slot of the edges on the line next to it.
     fn lines_through(&self, out: &[usize]) -> Vec<(usize, u32)> {
-        let arr = self.arr;
-        let mut lines: Vec<(usize, u32)> = out
-            .iter()
-            .filter_map(|&h| match arr.edge_support(h / 2) {
-                Support::Rays(g) => Some((g, self.edge_slot[h / 2])),
-                Support::MapEdge(_) => None,
-            })
-            .collect();
+        let mut lines: Vec<(usize, u32)> =
+            out.iter().filter_map(|&h| self.topo.line(h / 2)).collect();
         lines.sort_unstable();
         lines.dedup_by_key(|l| l.0);
         lines
@@ -846,6 +1019,18 @@ impl<'a> Walker<'a> {
 
 /// Cells per part of the walk, at least.
 const MIN_PART: usize = 256;
+
+/// A walked part: skeletons and class hashes by face (of the part's
+/// faces), and the lower cells' skeletons found in it.
+type Part = (Vec<Option<Compact>>, Vec<u64>, Vec<(u32, LowerSkeleton)>);
+
+/// The walk's results: by face, the skeleton and its class hash
+/// ([`Compact::class_hash`]); the lower cells' skeletons found on the way.
+pub(crate) struct Walked {
+    pub(crate) faces: Vec<Option<Compact>>,
+    pub(crate) hashes: Vec<u64>,
+    pub(crate) early: Early,
+}
 
 /// Lower cells computed in parallel between two calls of the sink.
 const LOWER_BLOCK: usize = 1 << 13;
