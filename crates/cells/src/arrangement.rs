@@ -13,6 +13,7 @@ use crate::rays::{group_by_line, LineKey, VisibilityRay};
 use rayon::prelude::*;
 use rug::{Integer, Rational};
 use std::cmp::Ordering;
+use std::sync::OnceLock;
 use wai_exact::{
     construct_intersection, construct_intersection_i128, gcd_u128, orientation, orientation_rat,
     Line, Orientation, RatPoint,
@@ -127,10 +128,13 @@ pub struct Arrangement {
     pub(crate) half_edges: Vec<HalfEdge>,
     pub(crate) faces: Vec<Face>,
     // Geometry, by index.
-    pub(crate) points: Vec<RatPoint>,
     /// By vertex: its point's homogeneous coordinates as `i128`s, if they
     /// fit (the fast paths start from these).
     pub(crate) small: Vec<Option<[i128; 3]>>,
+    /// The points whose coordinates do not fit, by ascending vertex.
+    pub(crate) big: Vec<(VertexId, RatPoint)>,
+    /// By vertex: its exact point, built when first asked for.
+    pub(crate) points: OnceLock<Vec<RatPoint>>,
     pub(crate) on_boundary: Vec<bool>,
     pub(crate) edges: Vec<EdgeGeometry>,
     /// The rays of the edges on rays, edge after edge
@@ -309,20 +313,20 @@ impl Points {
         self.points[i].as_ref().expect("interned as an exact point")
     }
 
-    /// The exact points and their `i128` coordinates, by id.
-    fn finish(self) -> (Vec<RatPoint>, Vec<Option<[i128; 3]>>) {
-        let points = self
+    /// By id, the `i128` coordinates; by ascending id, the exact points of
+    /// the others.
+    fn finish(self) -> (Vec<Option<[i128; 3]>>, BigPoints) {
+        let big = self
             .points
-            .into_par_iter()
+            .into_iter()
             .zip(&self.small)
-            .map(|(p, t)| {
-                p.unwrap_or_else(|| {
-                    let [x, y, w] = t.expect("points not given exactly fit");
-                    RatPoint::from_i128(x, y, w).expect("w > 0")
-                })
+            .enumerate()
+            .filter_map(|(i, (p, t))| match t {
+                Some(_) => None,
+                None => Some((i, p.expect("points that do not fit are given exactly"))),
             })
             .collect();
-        (points, self.small)
+        (self.small, big)
     }
 
     /// A point whose coordinates do not fit.
@@ -377,7 +381,7 @@ impl Along {
             let num = mul(x, d.0)?.checked_add(mul(y, d.1)?)?;
             Some(Along::Small(num, w))
         };
-        fast().unwrap_or_else(|| Along::Big(along(d, p.exact)))
+        fast().unwrap_or_else(|| Along::Big(along(d, &p.exact())))
     }
 
     /// A rational, small if it fits.
@@ -407,24 +411,10 @@ impl Along {
 }
 
 /// Sort point ids by `d · p` and drop duplicates.
-fn sort_along(
-    d: (i128, i128),
-    ids: &mut Vec<VertexId>,
-    points: &[RatPoint],
-    small: &[Option<[i128; 3]>],
-) {
+fn sort_along<'a>(d: (i128, i128), ids: &mut Vec<VertexId>, pt: impl Fn(VertexId) -> Pt<'a>) {
     ids.sort_unstable();
     ids.dedup();
-    let mut keyed: Vec<(Along, VertexId)> = ids
-        .iter()
-        .map(|&i| {
-            let p = Pt {
-                small: small[i],
-                exact: &points[i],
-            };
-            (Along::of(d, p), i)
-        })
-        .collect();
+    let mut keyed: Vec<(Along, VertexId)> = ids.iter().map(|&i| (Along::of(d, pt(i)), i)).collect();
     keyed.sort_by(|a, b| a.0.cmp(&b.0).then(a.1.cmp(&b.1)));
     *ids = keyed.into_iter().map(|(_, i)| i).collect();
 }
@@ -517,8 +507,13 @@ impl Arrangement {
                 on_edge[i].push(e);
             }
         }
-        let (points, small) = pts.finish();
-        let mut on_boundary = vec![false; points.len()];
+        let (small, big) = pts.finish();
+        let nv = small.len();
+        let pt = |v: VertexId| Pt {
+            small: small[v],
+            big: big_point(&small, &big, v),
+        };
+        let mut on_boundary = vec![false; nv];
         // Edges: map edges first, then ray groups.
         let most = on_edge.iter().chain(&on_line).map(Vec::len).sum::<usize>();
         let mut edges: Vec<EdgeGeometry> = Vec::with_capacity(most);
@@ -530,11 +525,11 @@ impl Arrangement {
         on_edge
             .par_iter_mut()
             .zip(&edge_dirs)
-            .for_each(|(ids, &d)| sort_along(d, ids, &points, &small));
+            .for_each(|(ids, &d)| sort_along(d, ids, pt));
         on_line
             .par_iter_mut()
             .zip(&groups)
-            .for_each(|(ids, g)| sort_along(g.dir, ids, &points, &small));
+            .for_each(|(ids, g)| sort_along(g.dir, ids, pt));
         for (i, ids) in on_edge.iter().enumerate() {
             let d = edge_dirs[i];
             for w in ids.windows(2) {
@@ -549,7 +544,7 @@ impl Arrangement {
             }
         }
         // By point: its place on the line at hand.
-        let mut pos = vec![0; points.len()];
+        let mut pos = vec![0; nv];
         let mut ray_list: Vec<usize> = Vec::with_capacity(2 * rays.len());
         for (g, ids) in on_line.iter().enumerate() {
             let d = groups[g].dir;
@@ -587,7 +582,6 @@ impl Arrangement {
         // Half-edges 2e (along the support's direction) and 2e + 1.
         let mut half_edges: Vec<HalfEdge> = Vec::with_capacity(2 * edges.len());
         // By vertex, its outgoing half-edges: `out[start[v]..start[v + 1]]`.
-        let nv = points.len();
         let mut start = vec![0usize; nv + 1];
         for &(a, b) in &ends_of {
             start[a + 1] += 1;
@@ -664,8 +658,9 @@ impl Arrangement {
             vertices,
             half_edges,
             faces,
-            points,
             small,
+            big,
+            points: OnceLock::new(),
             on_boundary,
             edges,
             ray_list,
@@ -711,13 +706,23 @@ impl Arrangement {
     }
     /// The exact point of vertex `v`.
     pub fn point(&self, v: VertexId) -> &RatPoint {
-        &self.points[v]
+        &self.points()[v]
     }
-    /// The point of vertex `v` with its `i128` coordinates.
+    /// The exact points of the vertices, by id (built on the first call:
+    /// the decomposition itself needs only [`Arrangement::pt`]).
+    pub fn points(&self) -> &[RatPoint] {
+        self.points.get_or_init(|| {
+            (0..self.small.len())
+                .into_par_iter()
+                .map(|v| self.pt(v).exact().into_owned())
+                .collect()
+        })
+    }
+    /// The point of vertex `v`: its `i128` coordinates, or its exact point.
     pub(crate) fn pt(&self, v: VertexId) -> Pt<'_> {
         Pt {
             small: self.small[v],
-            exact: &self.points[v],
+            big: big_point(&self.small, &self.big, v),
         }
     }
     /// Whether vertex `v` lies on the map boundary.
@@ -796,7 +801,7 @@ impl Arrangement {
     pub fn face_points(&self, f: FaceId) -> Vec<RatPoint> {
         self.face_vertices(f)
             .into_iter()
-            .map(|v| self.points[v].clone())
+            .map(|v| self.point(v).clone())
             .collect()
     }
     /// The half-edges leaving `v`, counter-clockwise.
@@ -847,8 +852,34 @@ impl Arrangement {
     /// Planted violations for tests: move vertex `v` to `p`.
     #[doc(hidden)]
     pub fn corrupt_point_for_tests(&mut self, v: VertexId, p: RatPoint) {
-        self.points[v] = p;
+        self.big.retain(|&(u, _)| u != v);
+        self.small[v] = small_of(&p);
+        if self.small[v].is_none() {
+            let at = self.big.partition_point(|&(u, _)| u < v);
+            self.big.insert(at, (v, p));
+        }
+        self.points = OnceLock::new();
     }
+}
+
+/// Exact points by ascending vertex id: those whose coordinates do not fit
+/// an `i128`.
+type BigPoints = Vec<(VertexId, RatPoint)>;
+
+/// The exact point of vertex `v` among `big` (ascending ids), when its
+/// coordinates do not fit (`small[v]` is `None`).
+fn big_point<'a>(
+    small: &[Option<[i128; 3]>],
+    big: &'a [(VertexId, RatPoint)],
+    v: VertexId,
+) -> Option<&'a RatPoint> {
+    if small[v].is_some() {
+        return None;
+    }
+    let at = big
+        .binary_search_by_key(&v, |&(u, _)| u)
+        .expect("a point that does not fit is kept exactly");
+    Some(&big[at].1)
 }
 
 /// Twice the signed area of a ring of rational points, exactly.

@@ -706,7 +706,7 @@ pub(crate) fn centroid(arr: &Arrangement, c: [VertexId; 3]) -> RatPoint {
 fn centroid3(a: Pt<'_>, b: Pt<'_>, c: Pt<'_>) -> RatPoint {
     match Eye::centroid(a, b, c) {
         Eye::Small { x, y, w } => RatPoint::from_i128(x, y, w).expect("w > 0"),
-        Eye::Big { .. } => centroid3_gmp(a.exact, b.exact, c.exact),
+        Eye::Big { .. } => centroid3_gmp(&a.exact(), &b.exact(), &c.exact()),
     }
 }
 

@@ -6,6 +6,7 @@
 //! path is exact by construction, not by a proof about magnitudes.
 
 use rug::Integer;
+use std::borrow::Cow;
 use std::cmp::Ordering;
 use wai_exact::{Orientation, Point, RatPoint};
 
@@ -79,12 +80,14 @@ pub(crate) fn angle_cmp(base: &Dir, u: &Dir, v: &Dir) -> Ordering {
     half(u).cmp(&half(v)).then_with(|| v.cross(u))
 }
 
-/// A rational point, with its homogeneous coordinates as `i128`s when
-/// they fit (the arrangement keeps them, so they are converted once).
+/// A rational point: its homogeneous coordinates as `i128`s when they
+/// fit, else its exact point (the arrangement keeps one or the other, so
+/// each point is converted once and most never become GMP integers).
 #[derive(Clone, Copy, Debug)]
 pub(crate) struct Pt<'a> {
     pub(crate) small: Option<[i128; 3]>,
-    pub(crate) exact: &'a RatPoint,
+    /// `Some` at least when `small` is `None`.
+    pub(crate) big: Option<&'a RatPoint>,
 }
 
 impl<'a> Pt<'a> {
@@ -92,7 +95,19 @@ impl<'a> Pt<'a> {
     pub(crate) fn new(p: &'a RatPoint) -> Pt<'a> {
         Pt {
             small: small_of(p),
-            exact: p,
+            big: Some(p),
+        }
+    }
+
+    /// The exact point, built from the `i128`s if it is not at hand (the
+    /// slow paths, after an overflow).
+    pub(crate) fn exact(&self) -> Cow<'a, RatPoint> {
+        match (self.big, self.small) {
+            (Some(p), _) => Cow::Borrowed(p),
+            (None, Some([x, y, w])) => {
+                Cow::Owned(RatPoint::from_i128(x, y, w).expect("a point has w > 0"))
+            }
+            (None, None) => unreachable!("a point is small or at hand"),
         }
     }
 }
@@ -126,7 +141,7 @@ impl Eye {
     pub(crate) fn at(p: Pt<'_>) -> Eye {
         match p.small {
             Some([x, y, w]) => Eye::Small { x, y, w },
-            None => Eye::new(p.exact),
+            None => Eye::new(&p.exact()),
         }
     }
 
@@ -141,7 +156,7 @@ impl Eye {
                 w: mul(aw, bw)?.checked_mul(2)?,
             })
         };
-        fast().unwrap_or_else(|| Eye::new(&RatPoint::midpoint(a.exact, b.exact)))
+        fast().unwrap_or_else(|| Eye::new(&RatPoint::midpoint(&a.exact(), &b.exact())))
     }
 
     /// The centroid of `a`, `b` and `c`, without reducing it (checked
@@ -163,7 +178,9 @@ impl Eye {
         };
         fast().unwrap_or_else(|| {
             Eye::new(&crate::decomposition::centroid3_gmp(
-                a.exact, b.exact, c.exact,
+                &a.exact(),
+                &b.exact(),
+                &c.exact(),
             ))
         })
     }
