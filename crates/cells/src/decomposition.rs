@@ -2,7 +2,7 @@
 //! boundary assignment (sec. 3.6), the skeleton of every cell (Def 3.9) and
 //! the equivalence classes of cells (Def 3.10).
 
-use crate::arrangement::{cross_sign, Arrangement, EdgeId, FaceId, HalfEdgeId, Support, VertexId};
+use crate::arrangement::{cross_sign, Arrangement, EdgeId, FaceId, HalfEdgeId, VertexId};
 use crate::assignment::BoundaryAssignment;
 use crate::eye::{Eye, Pt};
 use crate::fx::HashChains;
@@ -218,22 +218,18 @@ impl<'m> Decomposition<'m> {
         let arrangement = Arrangement::from_rays(map, rays);
         let cells: Vec<FaceId> = arrangement.cells().collect();
         let total = cells.len();
-        // Progress counts the cells of every dimension.
-        let lower_total = (0..arrangement.edge_count())
-            .filter(|&e| matches!(arrangement.edge_support(e), Support::Rays(_)))
-            .count()
-            + (0..arrangement.vertex_count())
-                .filter(|&v| !arrangement.is_on_map_boundary(v))
-                .count();
-        let all = total + lower_total;
         let mut position = vec![NOT_A_CELL; arrangement.face_count()];
         for (i, &f) in cells.iter().enumerate() {
             position[f] = i;
         }
+        let index = VisibilityIndex::new(map);
+        let lines = EdgeLines::new(map);
+        let walker = Walker::new(map, &arrangement, &index, &lines);
+        // Progress counts the cells of every dimension.
+        let all = total + walker.lower_count();
         progress(0, all);
         let step = (all / 100).max(1);
 
-        let index = VisibilityIndex::new(map);
         let shapes: Vec<(usize, [VertexId; 3])> = cells
             .par_iter()
             .map(|&f| {
@@ -246,8 +242,6 @@ impl<'m> Decomposition<'m> {
         for (&f, &c) in cells.iter().zip(&cell_corners) {
             corners[f] = Some(c);
         }
-        let lines = EdgeLines::new(map);
-        let walker = Walker::new(map, &arrangement, &index, &lines);
         let Walked {
             faces: walked,
             hashes: face_hashes,
@@ -282,16 +276,15 @@ impl<'m> Decomposition<'m> {
         // Cells of dimension 1 and 0, each with its skeleton, absorbed by an
         // adjacent 2-cell with the same skeleton in the same embedding.
         // Resolved in parallel where no new class is needed.
-        let at_face = |f: FaceId| position[f];
         let resolve = |site: LowerSite, faces: &[FaceId], sk: LowerSkeleton| {
             let cell = |f: FaceId, origin: usize| LowerCell {
                 site,
-                class: skeleton_index[at_face(f)],
+                class: skeleton_index[position[f]],
                 origin,
                 absorbed_by: Some(f),
             };
             match sk {
-                LowerSkeleton::Face(f) => Resolved::Cell(cell(f, origins[at_face(f)])),
+                LowerSkeleton::Face(f) => Resolved::Cell(cell(f, origins[position[f]])),
                 LowerSkeleton::Own(sk) => {
                     // Equal compact skeletons are equal skeletons in the
                     // same embedding, and need no class lookup.

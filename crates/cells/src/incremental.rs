@@ -393,6 +393,11 @@ impl<'a> Walker<'a> {
         }
     }
 
+    /// The number of 1- and 0-cells.
+    pub(crate) fn lower_count(&self) -> usize {
+        self.topo.sites.len()
+    }
+
     /// Walk the 2-cells: `corners[f]` are three vertices of face `f` whose
     /// centroid is inside it (`None` for the outer face); the result is
     /// the skeleton of each cell by face id. `progress(done)` is called
