@@ -1,13 +1,15 @@
-//! The decomposition (rays, arrangement, assignment, a skeleton per cell,
-//! classes) of thesis-size and family maps. Ids `decompose/{map}/{param}`.
+//! The decomposition (rays, arrangement, the skeleton of every cell of
+//! every dimension, classes) of thesis-size and family maps, ids
+//! `decompose/{map}/{param}`; and the sec. 3.6 boundary assignment, which
+//! the decomposition no longer needs, on its own: `assignment/{map}/{param}`.
 
 // The allocator of every binary of the workspace (see Cargo.toml).
 #[global_allocator]
 static ALLOCATOR: mimalloc::MiMalloc = mimalloc::MiMalloc;
 
-use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion, Throughput};
+use criterion::{criterion_group, criterion_main, BatchSize, BenchmarkId, Criterion, Throughput};
 use std::time::Duration;
-use wai_cells::Decomposition;
+use wai_cells::{visibility_rays, Arrangement, Decomposition};
 use wai_map::Map;
 
 fn maps() -> Vec<(String, String, Map)> {
@@ -51,8 +53,24 @@ fn bench(c: &mut Criterion) {
         );
         // Throughput in 2-cells per second (issue 7's measure).
         g.throughput(Throughput::Elements(counts.cells as u64));
+        g.bench_with_input(BenchmarkId::new(&name, &param), &map, |b, m| {
+            b.iter(|| {
+                let d = Decomposition::new(m);
+                (d.cells().len(), d.classes().len(), d.lower_cells().len())
+            })
+        });
+    }
+    g.finish();
+    let mut g = c.benchmark_group("assignment");
+    g.sample_size(10).measurement_time(Duration::from_secs(3));
+    for (name, param, map) in maps() {
+        let rays = visibility_rays(&map);
         g.bench_with_input(BenchmarkId::new(name, param), &map, |b, m| {
-            b.iter(|| Decomposition::new(m).counts())
+            b.iter_batched(
+                || Arrangement::new(m, &rays),
+                |a| a.conflicts().len(),
+                BatchSize::LargeInput,
+            )
         });
     }
     g.finish();

@@ -145,7 +145,10 @@ pub struct Arrangement {
     pub(crate) groups: Vec<RayGroup>,
     pub(crate) map: Map,
     pub(crate) rays: Vec<VisibilityRay>,
-    pub(crate) assignment: BoundaryAssignment,
+    /// Sec. 3.6, computed when first asked for: the decomposition does not
+    /// need it (its lower cells carry their own skeletons), claim A3.6's
+    /// checker and the counts do.
+    assignment: OnceLock<BoundaryAssignment>,
 }
 
 /// The primitive integer direction of `line`.
@@ -428,22 +431,45 @@ impl Arrangement {
     }
 
     /// Same as [`Arrangement::new`], keeping `rays` without copying them.
-    pub fn from_rays(map: &Map, owned: Vec<VisibilityRay>) -> Arrangement {
-        let rays = &owned[..];
-        let v = map.vertices();
-        let n = v.len();
-        let mut pts = Points::new();
-        for &p in v {
-            pts.intern(RatPoint::from(p));
-        }
-        // Groups, their directions, and the ray ends.
-        let groups: Vec<RayGroup> = group_by_line(rays)
+    pub fn from_rays(map: &Map, rays: Vec<VisibilityRay>) -> Arrangement {
+        Arrangement::from_rays_beside(map, rays, |_, _| ()).0
+    }
+
+    /// [`Arrangement::from_rays`], and `beside(groups, rays)` run at the
+    /// same time (on another thread when one is free: much of the
+    /// construction is sequential).
+    pub(crate) fn from_rays_beside<T: Send>(
+        map: &Map,
+        rays: Vec<VisibilityRay>,
+        beside: impl FnOnce(&[RayGroup], &[VisibilityRay]) -> T + Send,
+    ) -> (Arrangement, T) {
+        // Groups and their directions.
+        let groups: Vec<RayGroup> = group_by_line(&rays)
             .into_iter()
             .map(|(key, rs)| {
                 let dir = primitive_dir(&rays[rs[0]].line);
                 RayGroup { key, rays: rs, dir }
             })
             .collect();
+        let (mut arr, t) = rayon::join(
+            || Arrangement::assemble(map, &rays, &groups),
+            || beside(&groups, &rays),
+        );
+        arr.groups = groups;
+        arr.rays = rays;
+        (arr, t)
+    }
+
+    /// The arrangement of the map and `rays` in ray groups `groups`, but
+    /// for those two (left empty).
+    fn assemble(map: &Map, rays: &[VisibilityRay], groups: &[RayGroup]) -> Arrangement {
+        let v = map.vertices();
+        let n = v.len();
+        let mut pts = Points::new();
+        for &p in v {
+            pts.intern(RatPoint::from(p));
+        }
+        // The ray ends, and each group's points.
         let mut group_of = vec![0; rays.len()];
         for (g, grp) in groups.iter().enumerate() {
             for &r in &grp.rays {
@@ -528,7 +554,7 @@ impl Arrangement {
             .for_each(|(ids, &d)| sort_along(d, ids, pt));
         on_line
             .par_iter_mut()
-            .zip(&groups)
+            .zip(groups)
             .for_each(|(ids, g)| sort_along(g.dir, ids, pt));
         for (i, ids) in on_edge.iter().enumerate() {
             let d = edge_dirs[i];
@@ -654,7 +680,7 @@ impl Arrangement {
                 h = half_edges[h].next;
             }
         }
-        let mut arr = Arrangement {
+        Arrangement {
             vertices,
             half_edges,
             faces,
@@ -665,13 +691,11 @@ impl Arrangement {
             edges,
             ray_list,
             dirs: dir_of,
-            groups,
+            groups: Vec::new(),
             map: map.clone(),
-            rays: owned,
-            assignment: BoundaryAssignment::default(),
-        };
-        arr.assignment = assign(&arr);
-        arr
+            rays: Vec::new(),
+            assignment: OnceLock::new(),
+        }
     }
 
     /// The exterior of the map (always face 0).
@@ -709,7 +733,7 @@ impl Arrangement {
         &self.points()[v]
     }
     /// The exact points of the vertices, by id (built on the first call:
-    /// the decomposition itself needs only [`Arrangement::pt`]).
+    /// the decomposition itself needs only their `i128` coordinates).
     pub fn points(&self) -> &[RatPoint] {
         self.points.get_or_init(|| {
             (0..self.small.len())
@@ -829,19 +853,20 @@ impl Arrangement {
     /// Sec. 3.6: the cell that owns the points of edge `e`'s relative
     /// interior. See [`BoundaryAssignment`] for the rule.
     pub fn owner_of_edge(&self, e: EdgeId) -> FaceId {
-        self.assignment.edge_owner[e]
+        self.assignment().edge_owner[e]
     }
     /// Sec. 3.6: the cell that owns vertex `v`; `None` when the rays
     /// through it assign it to no common cell (a [`Conflict::Vertex`]).
     pub fn owner_of_vertex(&self, v: VertexId) -> Option<FaceId> {
-        self.assignment.vertex_owner[v]
+        self.assignment().vertex_owner[v]
     }
     /// Every boundary piece that two rays assign to different cells.
     pub fn conflicts(&self) -> &[Conflict] {
-        &self.assignment.conflicts
+        &self.assignment().conflicts
     }
+    /// The boundary assignment of sec. 3.6, computed on the first call.
     pub fn assignment(&self) -> &BoundaryAssignment {
-        &self.assignment
+        self.assignment.get_or_init(|| assign(self))
     }
 
     /// Planted violations for tests: point half-edge `h`'s twin at `t`.

@@ -1,12 +1,13 @@
-//! The visibility cell decomposition as one value: rays, arrangement,
-//! boundary assignment (sec. 3.6), the skeleton of every cell (Def 3.9) and
-//! the equivalence classes of cells (Def 3.10).
+//! The visibility cell decomposition as one value: rays, arrangement, the
+//! skeleton of every cell of every dimension (Def 3.9) and the equivalence
+//! classes of cells (Def 3.10); the boundary assignment (sec. 3.6) when
+//! asked for.
 
 use crate::arrangement::{cross_sign, Arrangement, EdgeId, FaceId, HalfEdgeId, VertexId};
 use crate::assignment::BoundaryAssignment;
 use crate::eye::{Eye, Pt};
 use crate::fx::HashChains;
-use crate::incremental::{Compact, EdgeLines, LowerSkeleton, Walked, Walker};
+use crate::incremental::{line_views, Compact, EdgeLines, LowerSkeleton, Walked, Walker};
 use crate::rays::{visibility_rays, VisibilityRay};
 use rayon::prelude::*;
 use rug::Integer;
@@ -22,8 +23,8 @@ const NOT_A_CELL: usize = usize::MAX;
 /// The visibility cell decomposition of a map (Def 3.8) with the skeleton
 /// of each cell (Def 3.9) and its equivalence classes (Def 3.10).
 ///
-/// Built in one pass: [`visibility_rays`], [`Arrangement::new`] (which
-/// applies the boundary assignment of sec. 3.6), then for every cell its
+/// Built in one pass: [`visibility_rays`], [`Arrangement::new`], then for
+/// every cell its
 /// skeleton, found by walking the arrangement from one visibility query
 /// (sec. 3.9.2: crossing an edge on a ray line changes the visibility of
 /// the map vertices on that line only; see the `incremental` module).
@@ -43,7 +44,8 @@ const NOT_A_CELL: usize = usize::MAX;
 /// ([`Decomposition::class_lower_cells`]). This replaces the sec. 3.6
 /// boundary assignment, which cannot give every boundary point a cell with
 /// its skeleton (claim A3.6, `counterexamples/T3.3b-doorway-1d-cell.json`);
-/// the assignment is still computed and reported by the arrangement.
+/// the assignment is still computed and reported by the arrangement, when
+/// first asked for ([`Decomposition::assignment`], [`Counts::conflicts`]).
 ///
 /// # Edge cases
 /// - The skeleton of a cell is computed at one point (an interior point of
@@ -190,8 +192,8 @@ pub struct Counts {
 }
 
 impl<'m> Decomposition<'m> {
-    /// Rays, arrangement, assignment, the skeleton of every cell (Def 3.9)
-    /// and the equivalence classes (Def 3.10).
+    /// Rays, arrangement, the skeleton of every cell (Def 3.9) and the
+    /// equivalence classes (Def 3.10).
     pub fn new(map: &'m Map) -> Decomposition<'m> {
         Decomposition::with_progress(map, &mut |_, _| {})
     }
@@ -215,7 +217,9 @@ impl<'m> Decomposition<'m> {
         rays: Vec<VisibilityRay>,
         progress: &mut dyn FnMut(usize, usize),
     ) -> Decomposition<'m> {
-        let arrangement = Arrangement::from_rays(map, rays);
+        // The lines of the ray groups for the walk, beside the arrangement.
+        let (arrangement, line_views) =
+            Arrangement::from_rays_beside(map, rays, |groups, rays| line_views(map, groups, rays));
         let cells: Vec<FaceId> = arrangement.cells().collect();
         let total = cells.len();
         let mut position = vec![NOT_A_CELL; arrangement.face_count()];
@@ -224,7 +228,7 @@ impl<'m> Decomposition<'m> {
         }
         let index = VisibilityIndex::new(map);
         let lines = EdgeLines::new(map);
-        let walker = Walker::new(map, &arrangement, &index, &lines);
+        let walker = Walker::new(map, &arrangement, &index, &lines, line_views);
         // Progress counts the cells of every dimension.
         let all = total + walker.lower_count();
         progress(0, all);
@@ -251,7 +255,7 @@ impl<'m> Decomposition<'m> {
                 progress(done, all);
             }
         });
-        let skeleton = |i: usize| walked[cells[i]].as_ref().expect("every cell is walked");
+        let skeleton = |i: usize| walked[cells[i]].get().expect("every cell is walked");
         let mut table = ClassTable::new(map, &lines);
         let hashes: Vec<u64> = cells.iter().map(|&f| face_hashes[f]).collect();
         let first = first_alike(&hashes, |i, j| {
@@ -290,7 +294,7 @@ impl<'m> Decomposition<'m> {
                     // same embedding, and need no class lookup.
                     match faces
                         .iter()
-                        .find(|&&f| walked[f].as_ref().is_some_and(|w| *w == sk))
+                        .find(|&&f| walked[f].get().is_some_and(|w| *w == sk))
                     {
                         Some(&f) => Resolved::Cell(cell(f, sk.origin())),
                         None => Resolved::Own(site, faces.to_vec(), sk),
@@ -298,7 +302,7 @@ impl<'m> Decomposition<'m> {
                 }
             }
         };
-        let mut lower: Vec<LowerCell> = Vec::new();
+        let mut lower: Vec<LowerCell> = Vec::with_capacity(walker.lower_count());
         walker.lower(&walked, &early, resolve, &mut |block| {
             for r in block {
                 let c = match r {
@@ -588,7 +592,7 @@ impl<'a> ClassTable<'a> {
 
     /// The class of skeleton `sk`, a new empty one (with `rep`, which is
     /// `sk`) if it was not seen before. `walked`: the 2-cells' skeletons.
-    fn intern(&mut self, sk: &Compact, rep: Rep, walked: &[Option<Compact>]) -> usize {
+    fn intern(&mut self, sk: &Compact, rep: Rep, walked: &[OnceLock<Compact>]) -> usize {
         // Classes pushed unfiled (those of the 2-cells) are filed when
         // first needed: most maps need none.
         for c in self.filed..self.skeletons.len() {
@@ -667,9 +671,9 @@ enum Rep {
 }
 
 impl Rep {
-    fn get<'a>(&'a self, walked: &'a [Option<Compact>]) -> &'a Compact {
+    fn get<'a>(&'a self, walked: &'a [OnceLock<Compact>]) -> &'a Compact {
         match self {
-            Rep::Face(f) => walked[*f].as_ref().expect("every cell is walked"),
+            Rep::Face(f) => walked[*f].get().expect("every cell is walked"),
             Rep::Own(c) => c,
         }
     }

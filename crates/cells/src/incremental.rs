@@ -31,17 +31,15 @@
 //! dimension of the test maps, and the T3.3b checker compares the two on
 //! every cell of every stress map.
 
-use crate::arrangement::{cross_sign, inside_corner, Arrangement, FaceId, Support, VertexId};
+use crate::arrangement::{Arrangement, FaceId, RayGroup, Support, VertexId};
 use crate::decomposition::LowerSite;
 use crate::eye::{angle_cmp, dir, mul, Eye};
 use crate::fx::FxHasher;
 use crate::line_view::{Beside, LineView};
-use crate::rays::LineKey;
+use crate::rays::{LineKey, VisibilityRay};
 use rayon::prelude::*;
 use rug::Integer;
-use std::cmp::Ordering;
-use std::collections::VecDeque;
-use std::sync::atomic::{AtomicUsize, Ordering as AtomicOrdering};
+use std::sync::atomic::{AtomicU32, AtomicU64, AtomicUsize, Ordering as AtomicOrdering};
 use std::sync::OnceLock;
 use wai_exact::{Line, Orientation, Point, RatPoint};
 use wai_map::Map;
@@ -248,6 +246,15 @@ pub(crate) struct Walker<'a> {
     reflex: Vec<bool>,
 }
 
+/// The line of each ray group, in the arrangement's order of groups
+/// (built beside the arrangement: [`Arrangement::from_rays_beside`]).
+pub(crate) fn line_views(map: &Map, groups: &[RayGroup], rays: &[VisibilityRay]) -> Vec<LineView> {
+    groups
+        .par_iter()
+        .map(|g| LineView::new(map, rays[g.rays[0]].source(), g.dir))
+        .collect()
+}
+
 /// No ray group, no lower cell, no skeleton found early.
 const NONE: u32 = u32::MAX;
 
@@ -264,9 +271,11 @@ struct Topology {
     /// ([`LineView::slot`]), [`NONE`] for map edges; its index in `sites`
     /// ([`NONE`] for map edges).
     edge: Vec<[u32; 3]>,
-    /// By vertex: its index in `sites` ([`NONE`] on the map boundary), and
-    /// its number of outgoing half-edges (= corners of faces).
-    vertex: Vec<[u32; 2]>,
+    /// By vertex: its index in `sites` ([`NONE`] on the map boundary), its
+    /// number of outgoing half-edges (= corners of faces), and the first of
+    /// them in the arrangement's counter-clockwise order
+    /// ([`Arrangement::outgoing`]).
+    vertex: Vec<[u32; 3]>,
     /// The 1-cells (edges on rays, by id), then the 0-cells (vertices off
     /// the map boundary, by id).
     sites: Vec<LowerSite>,
@@ -275,7 +284,7 @@ struct Topology {
 impl Topology {
     fn new(arr: &Arrangement, lines: &[LineView]) -> Topology {
         let id = |i: usize| u32::try_from(i).expect("fewer than 2^32 arrangement elements");
-        let half = (0..arr.half_edge_count())
+        let half: Vec<[u32; 3]> = (0..arr.half_edge_count())
             .into_par_iter()
             .map(|h| {
                 let he = arr.half_edge(h);
@@ -312,15 +321,17 @@ impl Topology {
                     .map(LowerSite::Vertex),
             )
             .collect();
-        let mut vertex = vec![[NONE, 0]; arr.vertex_count()];
+        let mut vertex: Vec<[u32; 3]> = (0..arr.vertex_count())
+            .map(|v| [NONE, 0, id(arr.vertex(v).out)])
+            .collect();
         for (i, &site) in sites.iter().enumerate() {
             match site {
                 LowerSite::Edge(e) => edge[e][2] = id(i),
                 LowerSite::Vertex(v) => vertex[v][0] = id(i),
             }
         }
-        for h in 0..arr.half_edge_count() {
-            vertex[arr.half_edge(h).origin][1] += 1;
+        for h in &half {
+            vertex[h[1] as usize][1] += 1;
         }
         Topology {
             half,
@@ -347,6 +358,22 @@ impl Topology {
         self.half[h][1] as usize
     }
 
+    /// The outgoing half-edges of vertex `v` counter-clockwise, from the
+    /// arrangement's first ([`Arrangement::outgoing`]'s order), into `out`.
+    /// Turning by `next` of the twin goes clockwise, so the turn is
+    /// collected and its tail reversed.
+    fn outgoing(&self, v: VertexId, out: &mut Vec<usize>) {
+        out.clear();
+        let first = self.vertex[v][2] as usize;
+        out.push(first);
+        let mut h = self.half[first ^ 1][0] as usize;
+        while h != first {
+            out.push(h);
+            h = self.half[h ^ 1][0] as usize;
+        }
+        out[1..].reverse();
+    }
+
     fn face(&self, h: usize) -> FaceId {
         self.half[h][2] as usize
     }
@@ -368,17 +395,16 @@ pub(crate) struct Early {
 }
 
 impl<'a> Walker<'a> {
+    /// The walker over `arr`, whose ray groups' lines are `lines`
+    /// ([`line_views`]).
     pub(crate) fn new(
         map: &'a Map,
         arr: &'a Arrangement,
         index: &'a VisibilityIndex<'a>,
         edge_lines: &'a EdgeLines,
+        lines: Vec<LineView>,
     ) -> Self {
-        let lines = arr
-            .ray_groups()
-            .par_iter()
-            .map(|g| LineView::new(map, arr.rays()[g.rays[0]].source(), g.dir))
-            .collect::<Vec<LineView>>();
+        debug_assert_eq!(lines.len(), arr.ray_groups().len(), "a line per ray group");
         let topo = Topology::new(arr, &lines);
         let n = map.vertices().len();
         Walker {
@@ -424,54 +450,51 @@ impl<'a> Walker<'a> {
             part_of[f] = (i / size) as u32;
         }
         let done = AtomicUsize::new(0);
+        // One table for all parts: each part writes its own faces and
+        // sites, and reads only those.
+        let shared = Shared {
+            faces: (0..arr.face_count()).map(|_| OnceLock::new()).collect(),
+            hashes: (0..arr.face_count()).map(|_| AtomicU64::new(0)).collect(),
+            early_face: (0..self.topo.sites.len())
+                .map(|_| AtomicU32::new(NONE))
+                .collect(),
+        };
         // Parts 1.. on the pool's threads, part 0 here, reporting progress.
-        let others: Vec<OnceLock<Part>> = (1..parts).map(|_| OnceLock::new()).collect();
+        let others: Vec<OnceLock<Vec<(u32, Compact)>>> =
+            (1..parts).map(|_| OnceLock::new()).collect();
         let range = |p: usize| &order[p * size..((p + 1) * size).min(order.len())];
-        let (part_of, done) = (&part_of, &done);
+        let (part_of, done, sh) = (&part_of, &done, &shared);
         let first = rayon::in_place_scope(|scope| {
             for (p, slot) in (1..parts).zip(&others) {
                 scope.spawn(move |_| {
-                    let walked = self.walk_part(range(p), p as u32, part_of, corners, &mut || {
+                    let own = self.walk_part(range(p), p as u32, part_of, corners, sh, &mut || {
                         done.fetch_add(1, AtomicOrdering::Relaxed);
                     });
-                    slot.set(walked).expect("each part is walked once");
+                    slot.set(own).expect("each part is walked once");
                 });
             }
-            self.walk_part(range(0), 0, part_of, corners, &mut || {
+            self.walk_part(range(0), 0, part_of, corners, sh, &mut || {
                 progress(done.fetch_add(1, AtomicOrdering::Relaxed) + 1);
             })
         });
-        let mut walked: Vec<Part> = std::iter::once(first)
-            .chain(others.into_iter().map(|s| s.into_inner().expect("walked")))
-            .collect();
-        let (mut faces, mut hashes, mut found) = walked.swap_remove(0);
-        for (other, other_hashes, more) in walked {
-            for ((f, sk), h) in other.into_iter().enumerate().zip(other_hashes) {
-                if sk.is_some() {
-                    faces[f] = sk;
-                    hashes[f] = h;
-                }
-            }
-            found.extend(more);
+        let mut own = first;
+        for other in others {
+            own.extend(other.into_inner().expect("walked"));
         }
-        let mut early = Early {
-            face: vec![NONE; self.topo.sites.len()],
-            own: Vec::new(),
-        };
-        for (i, sk) in found {
-            match sk {
-                LowerSkeleton::Face(f) => {
-                    early.face[i as usize] = u32::try_from(f).expect("fewer than 2^32 faces")
-                }
-                LowerSkeleton::Own(c) => early.own.push((i, c)),
-            }
-        }
-        early.own.sort_unstable_by_key(|&(i, _)| i);
+        own.sort_unstable_by_key(|&(i, _)| i);
         progress(done.load(AtomicOrdering::Relaxed));
-        Walked {
+        let Shared {
             faces,
             hashes,
-            early,
+            early_face,
+        } = shared;
+        Walked {
+            faces,
+            hashes: hashes.into_iter().map(AtomicU64::into_inner).collect(),
+            early: Early {
+                face: early_face.into_iter().map(AtomicU32::into_inner).collect(),
+                own,
+            },
         }
     }
 
@@ -507,48 +530,53 @@ impl<'a> Walker<'a> {
     }
 
     /// Walk the cells of part `part` (`part_of`, by face), starting from
-    /// those of `order` not yet reached: the skeleton and class hash of
-    /// each, by face id; and the skeleton of each lower cell whose 2-cells
-    /// are all in the part, by site, found when the last of them is walked
-    /// (while its skeleton is at hand, not in a later pass).
+    /// those of `order` not yet reached, into `shared`: the skeleton and
+    /// class hash of each, by face id; and the skeleton of each lower cell
+    /// whose 2-cells are all in the part, by site, found when the last of
+    /// them is walked (while its skeleton is at hand, not in a later pass):
+    /// those with a 2-cell's skeleton in `shared`, those with their own
+    /// returned.
+    ///
+    /// Depth first: a cell is walked right after the cell it was reached
+    /// from, whose skeleton it starts from, so that one is still in cache.
     fn walk_part(
         &self,
         order: &[FaceId],
         part: u32,
         part_of: &[u32],
         corners: &[Option<[VertexId; 3]>],
+        shared: &Shared,
         progress: &mut dyn FnMut(),
-    ) -> Part {
+    ) -> Vec<(u32, Compact)> {
         let arr = self.arr;
-        let nf = arr.face_count();
-        // By face: Vis, once reached; then its skeleton, which keeps it.
-        let mut reached: Vec<Option<Vec<u32>>> = vec![None; nf];
-        let mut faces: Vec<Option<Compact>> = vec![None; nf];
-        let mut queue = VecDeque::new();
-        // By face: the walked face it was reached from, across which line.
-        let mut from: Vec<Option<(FaceId, usize)>> = vec![None; nf];
-        let mut hashes = vec![0u64; nf];
-        let mut early: Vec<(u32, LowerSkeleton)> = Vec::new();
+        let faces = &shared.faces;
+        // By face: reached (in this part's faces only).
+        let mut queued = vec![false; arr.face_count()];
+        // Faces to walk (a stack), each with the walked face it was reached
+        // from and the line crossed (group, slot, side of the face), if any.
+        let mut stack: Vec<(FaceId, Option<Crossed>)> = Vec::new();
+        let mut own: Vec<(u32, Compact)> = Vec::new();
         let mut scratch = Scratch::default();
         // By vertex off the map boundary: its corners in walked 2-cells.
         let mut corners_walked = vec![0u32; arr.vertex_count()];
         for &start in order {
-            if part_of[start] != part || faces[start].is_some() || reached[start].is_some() {
+            if part_of[start] != part || queued[start] {
                 continue;
             }
-            let c = corners[start].expect("cells have a point");
-            reached[start] = Some(self.queried(&crate::decomposition::centroid(arr, c)));
-            queue.push_back(start);
-            while let Some(f) = queue.pop_front() {
-                let here = reached[f].take().expect("queued faces have Vis");
+            queued[start] = true;
+            stack.push((start, None));
+            while let Some((f, from)) = stack.pop() {
                 let c = corners[f].expect("a cell");
                 let eye = Eye::centroid(arr.pt(c[0]), arr.pt(c[1]), arr.pt(c[2]));
-                let sk = match from[f] {
-                    Some((p, g)) => {
-                        let parent = faces[p].as_ref().expect("walked");
+                let sk = match from {
+                    Some((p, g, slot, side)) => {
+                        let parent = faces[p].get().expect("walked");
+                        let here = self.across(&parent.vis, &[(g, slot)], Some(side));
                         self.compact_across(here, &eye, parent, g)
                     }
-                    None => self.compact(here, &eye),
+                    None => {
+                        self.compact(self.queried(&crate::decomposition::centroid(arr, c)), &eye)
+                    }
                 };
                 for h in self.topo.cycle(f) {
                     let Some((g, slot)) = self.topo.line(h / 2) else {
@@ -556,11 +584,7 @@ impl<'a> Walker<'a> {
                     };
                     let t = h ^ 1;
                     let other = self.topo.face(t);
-                    if other == arr.outer_face()
-                        || part_of[other] != part
-                        || faces[other].is_some()
-                        || reached[other].is_some()
-                    {
+                    if other == arr.outer_face() || part_of[other] != part || queued[other] {
                         continue;
                     }
                     // Half-edge 2e runs along the group's direction, its
@@ -570,40 +594,52 @@ impl<'a> Walker<'a> {
                     } else {
                         Beside::Right
                     };
-                    reached[other] = Some(self.across(&sk.vis, &[(g, slot)], Some(side)));
-                    from[other] = Some((f, g));
-                    queue.push_back(other);
+                    queued[other] = true;
+                    stack.push((other, Some((f, g, slot, side))));
                 }
-                hashes[f] = sk.class_hash(self.map, self.edge_lines);
-                faces[f] = Some(sk);
-                // The lower cells whose 2-cells are all walked now.
+                shared.hashes[f].store(
+                    sk.class_hash(self.map, self.edge_lines),
+                    AtomicOrdering::Relaxed,
+                );
+                if faces[f].set(sk).is_err() {
+                    unreachable!("each face is walked once");
+                }
+                // The lower cells whose 2-cells are all walked now (all in
+                // this part).
                 let topo = &self.topo;
                 for h in topo.cycle(f) {
-                    let mut found = |i: u32, site: LowerSite, faces: &[Option<Compact>]| {
-                        let (_, sk) = self.lower_cell(site, faces, &mut scratch);
-                        early.push((i, sk));
+                    let mut found = |i: u32, site: LowerSite| match self.lower_cell(
+                        site,
+                        faces,
+                        &mut scratch,
+                    ) {
+                        LowerSkeleton::Face(g) => shared.early_face[i as usize].store(
+                            u32::try_from(g).expect("fewer than 2^32 faces"),
+                            AtomicOrdering::Relaxed,
+                        ),
+                        LowerSkeleton::Own(c) => own.push((i, c)),
                     };
                     let v = topo.origin(h);
-                    let [site, degree] = topo.vertex[v];
+                    let [site, degree, _] = topo.vertex[v];
                     if site != NONE {
                         corners_walked[v] += 1;
                         if corners_walked[v] == degree {
-                            found(site, LowerSite::Vertex(v), &faces);
+                            found(site, LowerSite::Vertex(v));
                         }
                     }
                     let e = h / 2;
                     let site = topo.edge[e][2];
                     if site != NONE {
                         let other = topo.face(h ^ 1);
-                        if other != f && faces[other].is_some() {
-                            found(site, LowerSite::Edge(e), &faces);
+                        if other != f && part_of[other] == part && faces[other].get().is_some() {
+                            found(site, LowerSite::Edge(e));
                         }
                     }
                 }
                 progress();
             }
         }
-        (faces, hashes, early)
+        own
     }
 
     /// After [`Walker::walk`] (`walked`, `early`): the skeleton of every
@@ -615,7 +651,7 @@ impl<'a> Walker<'a> {
     /// time, in that order, on the caller's thread.
     pub(crate) fn lower<T: Send>(
         &self,
-        walked: &[Option<Compact>],
+        walked: &[OnceLock<Compact>],
         early: &Early,
         resolve: impl Fn(LowerSite, &[FaceId], LowerSkeleton) -> T + Sync,
         sink: &mut dyn FnMut(Vec<T>),
@@ -635,82 +671,94 @@ impl<'a> Walker<'a> {
                             .own
                             .binary_search_by_key(&(i as u32), |&(at, _)| at)
                             .ok();
-                        let (faces, sk) = match own {
-                            Some(o) => (
-                                self.faces_of(site),
-                                LowerSkeleton::Own(early.own[o].1.clone()),
-                            ),
+                        let sk = match own {
+                            Some(o) => {
+                                self.faces_of(site, scratch);
+                                LowerSkeleton::Own(early.own[o].1.clone())
+                            }
                             None => self.lower_cell(site, walked, scratch),
                         };
-                        resolve(site, faces.as_slice(), sk)
+                        resolve(site, &scratch.faces, sk)
                     })
                     .collect(),
             );
         }
     }
 
-    /// The 2-cells next to a lower cell, and its skeleton. `walked` holds
-    /// the skeletons of those 2-cells at least.
+    /// The skeleton of a lower cell, with the 2-cells next to it left in
+    /// `scratch.faces` (in the order of [`Walker::faces_of`]). `walked`
+    /// holds the skeletons of those 2-cells at least.
     fn lower_cell(
         &self,
         site: LowerSite,
-        walked: &[Option<Compact>],
+        walked: &[OnceLock<Compact>],
         scratch: &mut Scratch,
-    ) -> (Faces, LowerSkeleton) {
-        let arr = self.arr;
+    ) -> LowerSkeleton {
+        self.faces_of(site, scratch);
+        let mut lines = std::mem::take(&mut scratch.lines);
+        let mut sides = std::mem::take(&mut scratch.sides);
+        lines.clear();
+        sides.clear();
         match site {
             LowerSite::Edge(e) => {
-                let line = self.topo.line(e).expect("1-cells lie on rays");
-                let faces = [self.topo.face(2 * e), self.topo.face(2 * e + 1)];
+                lines.push(self.topo.line(e).expect("1-cells lie on rays"));
                 // Half-edge 2e runs along the line, its face on the left.
-                let sides = [Beside::Left, Beside::Right];
-                let lines = [line];
-                let sk = self.lower_skeleton(site, &faces, walked, &lines, &sides, scratch);
-                (Faces::Two(faces), sk)
+                sides.extend([Beside::Left, Beside::Right]);
             }
-            LowerSite::Vertex(v) => {
-                let out = arr.outgoing(v);
-                let faces: Vec<FaceId> = out.iter().map(|&h| arr.half_edge(h).face).collect();
-                let lines = self.lines_through(&out);
-                // The side of each line each face lies on: that of a
-                // direction strictly inside its corner, between its
-                // outgoing half-edge and the next counter-clockwise.
+            LowerSite::Vertex(_) => {
+                let out = &scratch.out;
+                lines.extend(out.iter().filter_map(|&h| self.topo.line(h / 2)));
+                // The vertex is no event of a line through it, so it shares
+                // the slot of the line's edges next to it.
+                lines.sort_unstable();
+                lines.dedup_by_key(|l| l.0);
+                // The face of out[i] fills the corner from out[i] to the
+                // next counter-clockwise. Counter-clockwise from the
+                // half-edge along a line's direction to the one against
+                // it, the corners lie left of the line, the others right.
+                // The vertex is off the map boundary and rays start and
+                // end on it, so both half-edges exist.
                 let k = out.len();
-                let mut sides = Vec::with_capacity(k * lines.len());
-                for i in 0..k {
-                    let w = inside_corner(arr.direction(out[i]), arr.direction(out[next(i, k)]));
-                    for &(g, _) in &lines {
-                        sides.push(match cross_sign(arr.ray_group(g).dir, w) {
-                            Ordering::Less => Beside::Right,
-                            _ => Beside::Left,
-                        });
+                sides.resize(k * lines.len(), Beside::Right);
+                for (j, &(g, _)) in lines.iter().enumerate() {
+                    let along = |forward: bool| {
+                        out.iter()
+                            .position(|&h| {
+                                h % 2 == usize::from(!forward)
+                                    && self.topo.line(h / 2).is_some_and(|(l, _)| l == g)
+                            })
+                            .expect("a line through an interior vertex runs both ways")
+                    };
+                    let (from, to) = (along(true), along(false));
+                    let mut i = from;
+                    while i != to {
+                        sides[i * lines.len() + j] = Beside::Left;
+                        i = next(i, k);
                     }
                 }
-                let sk = self.lower_skeleton(site, &faces, walked, &lines, &sides, scratch);
-                (Faces::Many(faces), sk)
             }
         }
+        let sk = self.lower_skeleton(site, walked, &lines, &sides, scratch);
+        scratch.lines = lines;
+        scratch.sides = sides;
+        sk
     }
 
-    /// The 2-cells next to a lower cell, in the order of
-    /// [`Walker::lower_cell`].
-    fn faces_of(&self, site: LowerSite) -> Faces {
-        let arr = self.arr;
+    /// The 2-cells next to a lower cell into `scratch.faces`: an edge's
+    /// left then right face; a vertex's faces counter-clockwise, one per
+    /// outgoing half-edge (left in `scratch.out`).
+    fn faces_of(&self, site: LowerSite, scratch: &mut Scratch) {
+        scratch.faces.clear();
         match site {
-            LowerSite::Edge(e) => Faces::Two([self.topo.face(2 * e), self.topo.face(2 * e + 1)]),
-            LowerSite::Vertex(v) => Faces::Many(arr.faces_around(v)),
+            LowerSite::Edge(e) => scratch
+                .faces
+                .extend([self.topo.face(2 * e), self.topo.face(2 * e + 1)]),
+            LowerSite::Vertex(v) => {
+                self.topo.outgoing(v, &mut scratch.out);
+                let faces = scratch.out.iter().map(|&h| self.topo.face(h));
+                scratch.faces.extend(faces);
+            }
         }
-    }
-
-    /// The ray groups through an interior vertex with outgoing half-edges
-    /// `out`, each with the vertex's slot on it. The vertex is no event of
-    /// the line, so it shares the slot of the edges on the line next to it.
-    fn lines_through(&self, out: &[usize]) -> Vec<(usize, u32)> {
-        let mut lines: Vec<(usize, u32)> =
-            out.iter().filter_map(|&h| self.topo.line(h / 2)).collect();
-        lines.sort_unstable();
-        lines.dedup_by_key(|l| l.0);
-        lines
     }
 
     /// Vis at a point q on the lines `lines` (ray group and q's slot on
@@ -897,20 +945,33 @@ impl<'a> Walker<'a> {
 
     /// The skeleton at the point q of a lower cell on `lines` that sees
     /// what 2-cell `f` (skeleton `face`) sees: the same vertices and
-    /// origin, and the same artificial edges except where the gap's ends
-    /// lie on one of the lines. Elsewhere every test of [`Walker::gap`]
-    /// has the same sign at q as in the open 2-cell: a line through a
-    /// vertex x that q sees, on which q lies, is a ray line through x (q on
-    /// the extension of edge x, or on the line from a vertex x sees through
-    /// x), and the only ray lines through q are `lines`.
+    /// origin, and the same artificial edges except at some gaps x → y with
+    /// an end on the lines, which are tested again at q.
+    ///
+    /// A test of [`Walker::gap`] has the same sign at q as in the open
+    /// 2-cell unless q lies on the test's line, and such a line is a ray
+    /// line through q, hence one of `lines`: the line of edge x (q sees x,
+    /// so q lies on its extension beyond x, a ray from x), that of edge
+    /// y − 1 (a ray from y along it), or a line from x through a vertex x
+    /// sees (the ray from x beyond it). So a gap is tested again only if x
+    /// lies on one of the lines, or y and y − 1 lie on one.
     fn relabel(
         &self,
         f: FaceId,
         face: &Compact,
         near: &[u32],
         site: LowerSite,
+        lines: &[(usize, u32)],
         touched: &mut Vec<usize>,
     ) -> LowerSkeleton {
+        let n = self.map.vertices().len();
+        let on = |u: usize| lines.iter().any(|&(g, _)| self.lines[g].contains(u as u32));
+        let along = |a: usize, b: usize| {
+            lines.iter().any(|&(g, _)| {
+                let l = &self.lines[g];
+                l.contains(a as u32) && l.contains(b as u32)
+            })
+        };
         // The gaps at the vertices of the lines that f sees (those the cell
         // sees on them, `near`), before and after each in Vis.
         let k = face.vis.len();
@@ -922,16 +983,17 @@ impl<'a> Walker<'a> {
                 .expect("f sees the vertices the cell sees on its lines");
             touched.extend([j, back(j, 1, k)]);
         }
-        if touched.is_empty() {
-            return LowerSkeleton::Face(f);
-        }
         touched.sort_unstable();
         touched.dedup();
-        let eye = self.site_eye(site);
+        let mut eye: Option<Eye> = None;
         let mut own: Option<Compact> = None;
         for &s in touched.iter() {
             let (x, y) = (face.vis[s] as usize, face.vis[next(s, k)] as usize);
-            let e = self.gap(x, y, k, &eye);
+            if face.edges[s] == FULL || !(on(x) || along(back(y, 1, n), y)) {
+                continue;
+            }
+            let eye = eye.get_or_insert_with(|| self.site_eye(site));
+            let e = self.gap(x, y, k, eye);
             if e != face.edges[s] {
                 own.get_or_insert_with(|| face.clone()).edges[s] = e;
             }
@@ -943,26 +1005,28 @@ impl<'a> Walker<'a> {
     }
 
     /// The skeleton of a 1- or 0-cell on `lines` (ray group and the cell's
-    /// slot on it), next to the 2-cells `faces` (all cells).
+    /// slot on it), next to the 2-cells `scratch.faces` (all cells), each
+    /// on sides `sides[i * lines.len()..]` of the lines.
     ///
     /// Off its lines the cell sees what its 2-cells see, so its Vis equals
     /// Vis of 2-cell f exactly when the vertices f sees on the lines are
-    /// those the cell sees on them (the nearest each way): a test on the
-    /// few vertices of the lines, not on all of Vis. Then f's skeleton is
-    /// relabelled; otherwise Vis is built and its skeleton computed.
+    /// those the cell sees on them, the nearest each way: when from f's
+    /// side of each line the view along it stops at them
+    /// ([`LineView::sees_past`]). Then f's skeleton is relabelled;
+    /// otherwise Vis is built and its skeleton computed.
     fn lower_skeleton(
         &self,
         site: LowerSite,
-        faces: &[FaceId],
-        walked: &[Option<Compact>],
+        walked: &[OnceLock<Compact>],
         lines: &[(usize, u32)],
         sides: &[Beside],
         scratch: &mut Scratch,
     ) -> LowerSkeleton {
         let Scratch {
             near,
-            seen_on,
             touched,
+            faces,
+            ..
         } = scratch;
         near.clear();
         for &(g, slot) in lines {
@@ -972,30 +1036,27 @@ impl<'a> Walker<'a> {
         near.dedup();
         let mut same = None;
         for (i, &f) in faces.iter().enumerate() {
-            let Some(sk) = &walked[f] else {
+            let Some(sk) = walked[f].get() else {
                 continue;
             };
-            // What f sees on the lines is what is seen from just beside
-            // each line there, on f's side (the walk's own update).
-            seen_on.clear();
-            for (j, &(g, slot)) in lines.iter().enumerate() {
-                let side = sides[i * lines.len() + j];
-                self.lines[g].seen_in(slot as usize, Some(side), seen_on);
-            }
-            seen_on.sort_unstable();
-            seen_on.dedup();
-            // (That this agrees with f's Vis is the T3.3b checker's to
+            let side = &sides[i * lines.len()..(i + 1) * lines.len()];
+            // (That f sees the near vertices is the T3.3b checker's to
             // test; here it only may not panic.)
-            if *seen_on == *near && near.iter().all(|u| sk.vis.binary_search(u).is_ok()) {
+            if lines
+                .iter()
+                .zip(side)
+                .all(|(&(g, slot), &b)| !self.lines[g].sees_past(slot as usize, b))
+                && near.iter().all(|u| sk.vis.binary_search(u).is_ok())
+            {
                 same = Some((f, sk));
                 break;
             }
         }
         match same {
-            Some((f, sk)) => self.relabel(f, sk, near, site, touched),
+            Some((f, sk)) => self.relabel(f, sk, near, site, lines, touched),
             None => {
                 let base = walked[faces[0]]
-                    .as_ref()
+                    .get()
                     .expect("the cells next to a lower cell are walked");
                 let seen = self.across(&base.vis, lines, None);
                 LowerSkeleton::Own(self.compact(seen, &self.site_eye(site)))
@@ -1022,17 +1083,26 @@ impl<'a> Walker<'a> {
     }
 }
 
+/// How the walk reached a 2-cell: from a walked 2-cell, across a ray
+/// group's line in a slot, onto a side of it.
+type Crossed = (FaceId, usize, u32, Beside);
+
 /// Cells per part of the walk, at least.
 const MIN_PART: usize = 256;
 
-/// A walked part: skeletons and class hashes by face (of the part's
-/// faces), and the lower cells' skeletons found in it.
-type Part = (Vec<Option<Compact>>, Vec<u64>, Vec<(u32, LowerSkeleton)>);
+/// What the parts of the walk write, each to its own faces and sites:
+/// by face, the skeleton and class hash; by site, the 2-cell whose
+/// skeleton a lower cell found in the walk has.
+struct Shared {
+    faces: Vec<OnceLock<Compact>>,
+    hashes: Vec<AtomicU64>,
+    early_face: Vec<AtomicU32>,
+}
 
 /// The walk's results: by face, the skeleton and its class hash
 /// ([`Compact::class_hash`]); the lower cells' skeletons found on the way.
 pub(crate) struct Walked {
-    pub(crate) faces: Vec<Option<Compact>>,
+    pub(crate) faces: Vec<OnceLock<Compact>>,
     pub(crate) hashes: Vec<u64>,
     pub(crate) early: Early,
 }
@@ -1040,27 +1110,20 @@ pub(crate) struct Walked {
 /// Lower cells computed in parallel between two calls of the sink.
 const LOWER_BLOCK: usize = 1 << 13;
 
-/// The 2-cells next to a lower cell.
-enum Faces {
-    Two([FaceId; 2]),
-    Many(Vec<FaceId>),
-}
-
-impl Faces {
-    fn as_slice(&self) -> &[FaceId] {
-        match self {
-            Faces::Two(f) => f,
-            Faces::Many(f) => f,
-        }
-    }
-}
-
 /// Buffers reused from lower cell to lower cell.
 #[derive(Default)]
 struct Scratch {
+    /// The vertices seen on the cell's lines.
     near: Vec<u32>,
-    seen_on: Vec<u32>,
+    /// Gaps of a 2-cell's skeleton to test again.
     touched: Vec<usize>,
+    /// The 2-cells next to the cell ([`Walker::faces_of`]).
+    faces: Vec<FaceId>,
+    /// A vertex's outgoing half-edges.
+    out: Vec<usize>,
+    /// The cell's lines and slots, and each face's side of each line.
+    lines: Vec<(usize, u32)>,
+    sides: Vec<Beside>,
 }
 
 /// `(i + 1) mod k` for `i < k`, without a division (hot loops).

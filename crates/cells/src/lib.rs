@@ -1,9 +1,10 @@
 //! The visibility cell decomposition (thesis sec. 3.6, Def 3.8, Thm 3.3).
 //!
 //! This crate is the `cells` stage of the pipeline: map → visibility rays →
-//! exact arrangement of map edges and rays → cells with the boundary
-//! assignment of sec. 3.6 → the skeleton of each cell (Def 3.9) →
-//! equivalence classes of cells (Def 3.10).
+//! exact arrangement of map edges and rays → cells of dimension 2, 1 and 0
+//! → the skeleton of each cell (Def 3.9) → equivalence classes of cells
+//! (Def 3.10). The boundary assignment of sec. 3.6 is computed beside it,
+//! when asked for.
 //!
 //! Its principal type is [`Decomposition`]: all of these stages for one
 //! map, with the cells in face order, an exact interior point of each, the

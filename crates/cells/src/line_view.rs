@@ -226,40 +226,54 @@ impl LineView {
         }
     }
 
+    /// Whether a viewpoint just beside the line on side `beside`, in slot
+    /// `slot`, sees more of the line's vertices than a point of the slot
+    /// itself: whether [`LineView::seen_in`] runs past the nearest vertex
+    /// either way.
+    pub(crate) fn sees_past(&self, slot: usize, beside: Beside) -> bool {
+        let past = |i: usize, forward: bool| {
+            matches!(self.events[i].1, Event::Vertex { .. })
+                && self
+                    .step(i, forward, beside)
+                    .is_some_and(|j| matches!(self.events[j].1, Event::Vertex { .. }))
+        };
+        (slot < self.events.len() && past(slot, true)) || (slot > 0 && past(slot - 1, false))
+    }
+
     fn walk(&self, mut i: usize, forward: bool, beside: Option<Beside>, out: &mut Vec<u32>) {
         while i < self.events.len() {
-            let Event::Vertex { v, left, right } = self.events[i].1 else {
+            let Event::Vertex { v, .. } = self.events[i].1 else {
                 return;
             };
             out.push(v);
-            let Some(side) = beside else {
-                return;
-            };
-            if (side == Beside::Left && left) || (side == Beside::Right && right) {
-                return;
+            match beside.and_then(|side| self.step(i, forward, side)) {
+                Some(j) => i = j,
+                None => return,
             }
-            let s = if forward {
-                if i + 1 >= self.events.len() {
-                    return;
-                }
-                self.stretches[i]
-            } else {
-                if i == 0 {
-                    return;
-                }
-                self.stretches[i - 1]
-            };
-            match s {
-                Stretch::Interior => {}
-                Stretch::Exterior => return,
-                Stretch::Edge(interior) if interior == side => {}
-                Stretch::Edge(_) => return,
-            }
-            if forward {
-                i += 1;
-            } else {
-                i -= 1;
-            }
+        }
+    }
+
+    /// From vertex event `i`, the next event a viewpoint just beside the
+    /// line on side `side` sees along it, if the view runs on: past the
+    /// vertex unless one of its edges leaves to that side, and through the
+    /// stretch beyond if it is interior or a map edge with its interior on
+    /// that side.
+    fn step(&self, i: usize, forward: bool, side: Beside) -> Option<usize> {
+        let Event::Vertex { left, right, .. } = self.events[i].1 else {
+            return None;
+        };
+        if (side == Beside::Left && left) || (side == Beside::Right && right) {
+            return None;
+        }
+        let (s, j) = if forward {
+            (*self.stretches.get(i)?, i + 1)
+        } else {
+            (self.stretches[i.checked_sub(1)?], i - 1)
+        };
+        match s {
+            Stretch::Interior => Some(j),
+            Stretch::Edge(interior) if interior == side => Some(j),
+            Stretch::Exterior | Stretch::Edge(_) => None,
         }
     }
 }
