@@ -55,9 +55,9 @@ use wai_visibility::{LineLabel, Skeleton, SkeletonKey, VisibilityIndex};
 /// [`Compact::same_skeleton`] settles.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub(crate) struct Compact {
-    vis: Vec<u32>,
-    /// `edges[i]` runs from `vis[i]` to `vis[i + 1]` (cyclically).
-    edges: Vec<u32>,
+    /// Vis, then the edges (one allocation): `edges[i]` runs from `vis[i]`
+    /// to `vis[i + 1]` (cyclically).
+    data: Box<[u32]>,
     /// The origin is `vis[shift]`.
     shift: u32,
 }
@@ -66,22 +66,33 @@ pub(crate) struct Compact {
 const FULL: u32 = u32::MAX;
 
 impl Compact {
+    /// Vis: the map vertices seen, ascending.
+    fn vis(&self) -> &[u32] {
+        &self.data[..self.data.len() / 2]
+    }
+
+    /// By gap of Vis, its edge: [`FULL`] or the map edge.
+    fn edges(&self) -> &[u32] {
+        &self.data[self.data.len() / 2..]
+    }
+
+    fn edges_mut(&mut self) -> &mut [u32] {
+        let k = self.data.len() / 2;
+        &mut self.data[k..]
+    }
+
     /// The origin map vertex.
     pub(crate) fn origin(&self) -> usize {
-        self.vis[self.shift as usize] as usize
+        self.vis()[self.shift as usize] as usize
     }
 
     /// The skeleton's vertices and edges in order from the origin: map
     /// vertex ids, and `None` (full) or the map edge of an artificial edge.
     fn rotated(&self) -> impl Iterator<Item = (u32, Option<u32>)> + '_ {
         let s = self.shift as usize;
-        let pair = |i: usize| {
-            (
-                self.vis[i],
-                (self.edges[i] != FULL).then_some(self.edges[i]),
-            )
-        };
-        (s..self.vis.len()).chain(0..s).map(pair)
+        let (vis, edges) = (self.vis(), self.edges());
+        let pair = move |i: usize| (vis[i], (edges[i] != FULL).then_some(edges[i]));
+        (s..vis.len()).chain(0..s).map(pair)
     }
 
     /// The canonical key (as [`Skeleton::key`] would give it).
@@ -185,7 +196,7 @@ impl Compact {
         let mut h = FxHasher::default();
         // One word per vertex and per edge: the hash only sorts skeletons
         // into buckets, [`Compact::same_skeleton`] decides.
-        h.write_usize(self.vis.len());
+        h.write_usize(self.data.len());
         for (u, e) in self.rotated() {
             // Below 2^(MAX_COORD_BITS + 1): no overflow.
             let p = v[u as usize];
@@ -204,7 +215,7 @@ impl Compact {
     pub(crate) fn same_skeleton(&self, other: &Compact, map: &Map, lines: &EdgeLines) -> bool {
         let v = map.vertices();
         let (o, p) = (v[self.origin()], v[other.origin()]);
-        self.vis.len() == other.vis.len()
+        self.data.len() == other.data.len()
             && self.rotated().zip(other.rotated()).all(|((x, e), (y, f))| {
                 let (x, y) = (v[x as usize], v[y as usize]);
                 x.x - o.x == y.x - p.x
@@ -557,6 +568,8 @@ impl<'a> Walker<'a> {
         let mut stack: Vec<(FaceId, Option<Crossed>)> = Vec::new();
         let mut own: Vec<(u32, Compact)> = Vec::new();
         let mut scratch = Scratch::default();
+        // Vis of the cell at hand, and what it sees on the line crossed.
+        let (mut here, mut seen): (Vec<u32>, Vec<u32>) = (Vec::new(), Vec::new());
         // By vertex off the map boundary: its corners in walked 2-cells.
         let mut corners_walked = vec![0u32; arr.vertex_count()];
         for &start in order {
@@ -571,11 +584,12 @@ impl<'a> Walker<'a> {
                 let sk = match from {
                     Some((p, g, slot, side)) => {
                         let parent = faces[p].get().expect("walked");
-                        let here = self.across(&parent.vis, &[(g, slot)], Some(side));
-                        self.compact_across(here, &eye, parent, g)
+                        let bufs = (&mut here, &mut seen);
+                        self.across(parent.vis(), &[(g, slot)], Some(side), bufs);
+                        self.compact_across(&here, &eye, parent, g)
                     }
                     None => {
-                        self.compact(self.queried(&crate::decomposition::centroid(arr, c)), &eye)
+                        self.compact(&self.queried(&crate::decomposition::centroid(arr, c)), &eye)
                     }
                 };
                 for h in self.topo.cycle(f) {
@@ -764,15 +778,21 @@ impl<'a> Walker<'a> {
     /// Vis at a point q on the lines `lines` (ray group and q's slot on
     /// it), or beside the one line on side `beside`, from Vis of a 2-cell
     /// next to q: unchanged off the lines, recomputed on them.
-    fn across(&self, base: &[u32], lines: &[(usize, u32)], beside: Option<Beside>) -> Vec<u32> {
-        let mut out: Vec<u32> = Vec::with_capacity(base.len() + 4);
+    fn across(
+        &self,
+        base: &[u32],
+        lines: &[(usize, u32)],
+        beside: Option<Beside>,
+        (out, seen): (&mut Vec<u32>, &mut Vec<u32>),
+    ) {
+        out.clear();
         if let [(g, slot)] = lines {
             // One line: base minus its vertices, merged with those seen on
             // it; all three ascending.
             let line = &self.lines[*g];
             let on = line.vertices();
-            let mut seen = Vec::new();
-            line.seen_in(*slot as usize, beside, &mut seen);
+            seen.clear();
+            line.seen_in(*slot as usize, beside, seen);
             seen.sort_unstable();
             let (mut j, mut m) = (0, 0);
             for &u in base {
@@ -790,7 +810,7 @@ impl<'a> Walker<'a> {
             }
             out.extend_from_slice(&seen[m..]);
             out.dedup();
-            return out;
+            return;
         }
         out.extend(
             base.iter()
@@ -798,11 +818,10 @@ impl<'a> Walker<'a> {
                 .filter(|&u| lines.iter().all(|&(g, _)| !self.lines[g].contains(u))),
         );
         for &(g, slot) in lines {
-            self.lines[g].seen_in(slot as usize, beside, &mut out);
+            self.lines[g].seen_in(slot as usize, beside, out);
         }
         out.sort_unstable();
         out.dedup();
-        out
     }
 
     /// Vis at a 2-cell's point by a query: the skeleton's map vertices.
@@ -818,13 +837,13 @@ impl<'a> Walker<'a> {
     }
 
     /// The compact skeleton of q from Vis(q) (ascending map ids).
-    fn compact(&self, vis: Vec<u32>, eye: &Eye) -> Compact {
+    fn compact(&self, vis: &[u32], eye: &Eye) -> Compact {
         let k = vis.len();
         assert!(k > 0, "a point of the interior sees a map vertex ({eye:?})");
-        let edges: Vec<u32> = (0..k)
-            .map(|s| self.gap(vis[s] as usize, vis[next(s, k)] as usize, k, eye))
-            .collect();
-        self.with_origin(vis, edges)
+        let mut data = Vec::with_capacity(2 * k);
+        data.extend_from_slice(vis);
+        data.extend((0..k).map(|s| self.gap(vis[s] as usize, vis[next(s, k)] as usize, k, eye)));
+        self.with_origin(data)
     }
 
     /// [`Walker::compact`] for a 2-cell reached from the 2-cell `parent`
@@ -834,12 +853,12 @@ impl<'a> Walker<'a> {
     /// through x or y (the line of edge x or of edge y − 1, or a line from
     /// x through a vertex it sees), and between the two cells only the
     /// line of `g` is crossed.
-    fn compact_across(&self, vis: Vec<u32>, eye: &Eye, parent: &Compact, g: usize) -> Compact {
-        let (k, pk) = (vis.len(), parent.vis.len());
+    fn compact_across(&self, vis: &[u32], eye: &Eye, parent: &Compact, g: usize) -> Compact {
+        let (pvis, pedges) = (parent.vis(), parent.edges());
+        let (k, pk) = (vis.len(), pvis.len());
         if k < 2 || pk < 2 {
             return self.compact(vis, eye);
         }
-        let pvis = &parent.vis;
         // Which of Vis lie on the line, and where each x sits in the
         // parent's Vis: merges of ascending lists.
         let on = self.lines[g].vertices();
@@ -852,7 +871,8 @@ impl<'a> Walker<'a> {
         };
         let first_on = on_line(vis[0]);
         let mut here_on = first_on;
-        let mut edges: Vec<u32> = Vec::with_capacity(k);
+        let mut data: Vec<u32> = Vec::with_capacity(2 * k);
+        data.extend_from_slice(vis);
         let mut j = 0;
         for s in 0..k {
             let (x, y) = (vis[s], vis[next(s, k)]);
@@ -861,8 +881,8 @@ impl<'a> Walker<'a> {
                 j += 1;
             }
             let kept = !here_on && !next_on && j < pk && pvis[j] == x && pvis[next(j, pk)] == y;
-            edges.push(if kept {
-                parent.edges[j]
+            data.push(if kept {
+                pedges[j]
             } else {
                 self.gap(x as usize, y as usize, k, eye)
             });
@@ -883,19 +903,19 @@ impl<'a> Walker<'a> {
             }
             let shift = vis.binary_search(&best).expect("the origin is seen");
             return Compact {
-                vis,
-                edges,
+                data: data.into_boxed_slice(),
                 shift: u32::try_from(shift).expect("fewer than 2^32 vertices"),
             };
         }
-        self.with_origin(vis, edges)
+        self.with_origin(data)
     }
 
-    /// The compact skeleton from Vis and its edges in Vis order, with the
-    /// origin: the leftmost, then lowest, of the reflex vertices seen,
-    /// else of all seen.
-    fn with_origin(&self, vis: Vec<u32>, edges: Vec<u32>) -> Compact {
+    /// The compact skeleton from Vis and its edges in Vis order (`data`),
+    /// with the origin: the leftmost, then lowest, of the reflex vertices
+    /// seen, else of all seen.
+    fn with_origin(&self, data: Vec<u32>) -> Compact {
         let v = self.map.vertices();
+        let vis = &data[..data.len() / 2];
         let k = vis.len();
         let pick = |pool: &mut dyn Iterator<Item = usize>| {
             pool.min_by_key(|&s| {
@@ -907,8 +927,7 @@ impl<'a> Walker<'a> {
             .or_else(|| pick(&mut (0..k)))
             .expect("k > 0");
         Compact {
-            vis,
-            edges,
+            data: data.into_boxed_slice(),
             shift: u32::try_from(o).expect("fewer than 2^32 vertices"),
         }
     }
@@ -954,33 +973,35 @@ impl<'a> Walker<'a> {
     /// so q lies on its extension beyond x, a ray from x), that of edge
     /// y − 1 (a ray from y along it), or a line from x through a vertex x
     /// sees (the ray from x beyond it). So a gap is tested again only if x
-    /// lies on one of the lines, or y and y − 1 lie on one.
+    /// lies on one of the lines, or y and y − 1 lie on one. A vertex of Vis
+    /// on a line through q is the nearest one that way: one of `near`.
+    ///
+    /// `at`: where each of `near` sits in f's Vis.
+    #[allow(clippy::too_many_arguments)]
     fn relabel(
         &self,
         f: FaceId,
         face: &Compact,
         near: &[u32],
+        at: &[usize],
         site: LowerSite,
         lines: &[(usize, u32)],
         touched: &mut Vec<usize>,
     ) -> LowerSkeleton {
-        let n = self.map.vertices().len();
-        let on = |u: usize| lines.iter().any(|&(g, _)| self.lines[g].contains(u as u32));
+        let v = self.map.vertices();
+        let n = v.len();
         let along = |a: usize, b: usize| {
             lines.iter().any(|&(g, _)| {
                 let l = &self.lines[g];
-                l.contains(a as u32) && l.contains(b as u32)
+                l.passes(v[a]) && l.passes(v[b])
             })
         };
         // The gaps at the vertices of the lines that f sees (those the cell
         // sees on them, `near`), before and after each in Vis.
-        let k = face.vis.len();
+        let (vis, edges) = (face.vis(), face.edges());
+        let k = vis.len();
         touched.clear();
-        for &u in near {
-            let j = face
-                .vis
-                .binary_search(&u)
-                .expect("f sees the vertices the cell sees on its lines");
+        for &j in at {
             touched.extend([j, back(j, 1, k)]);
         }
         touched.sort_unstable();
@@ -988,14 +1009,14 @@ impl<'a> Walker<'a> {
         let mut eye: Option<Eye> = None;
         let mut own: Option<Compact> = None;
         for &s in touched.iter() {
-            let (x, y) = (face.vis[s] as usize, face.vis[next(s, k)] as usize);
-            if face.edges[s] == FULL || !(on(x) || along(back(y, 1, n), y)) {
+            let (x, y) = (vis[s] as usize, vis[next(s, k)] as usize);
+            if edges[s] == FULL || !(near.contains(&(x as u32)) || along(back(y, 1, n), y)) {
                 continue;
             }
             let eye = eye.get_or_insert_with(|| self.site_eye(site));
             let e = self.gap(x, y, k, eye);
-            if e != face.edges[s] {
-                own.get_or_insert_with(|| face.clone()).edges[s] = e;
+            if e != edges[s] {
+                own.get_or_insert_with(|| face.clone()).edges_mut()[s] = e;
             }
         }
         match own {
@@ -1024,6 +1045,7 @@ impl<'a> Walker<'a> {
     ) -> LowerSkeleton {
         let Scratch {
             near,
+            at,
             touched,
             faces,
             ..
@@ -1042,24 +1064,34 @@ impl<'a> Walker<'a> {
             let side = &sides[i * lines.len()..(i + 1) * lines.len()];
             // (That f sees the near vertices is the T3.3b checker's to
             // test; here it only may not panic.)
-            if lines
+            if !lines
                 .iter()
                 .zip(side)
                 .all(|(&(g, slot), &b)| !self.lines[g].sees_past(slot as usize, b))
-                && near.iter().all(|u| sk.vis.binary_search(u).is_ok())
             {
+                continue;
+            }
+            at.clear();
+            for u in near.iter() {
+                match sk.vis().binary_search(u) {
+                    Ok(j) => at.push(j),
+                    Err(_) => break,
+                }
+            }
+            if at.len() == near.len() {
                 same = Some((f, sk));
                 break;
             }
         }
         match same {
-            Some((f, sk)) => self.relabel(f, sk, near, site, lines, touched),
+            Some((f, sk)) => self.relabel(f, sk, near, at, site, lines, touched),
             None => {
                 let base = walked[faces[0]]
                     .get()
                     .expect("the cells next to a lower cell are walked");
-                let seen = self.across(&base.vis, lines, None);
-                LowerSkeleton::Own(self.compact(seen, &self.site_eye(site)))
+                let mut seen = Vec::new();
+                self.across(base.vis(), lines, None, (&mut seen, &mut Vec::new()));
+                LowerSkeleton::Own(self.compact(&seen, &self.site_eye(site)))
             }
         }
     }
@@ -1113,8 +1145,10 @@ const LOWER_BLOCK: usize = 1 << 13;
 /// Buffers reused from lower cell to lower cell.
 #[derive(Default)]
 struct Scratch {
-    /// The vertices seen on the cell's lines.
+    /// The vertices seen on the cell's lines, and where each sits in a
+    /// 2-cell's Vis.
     near: Vec<u32>,
+    at: Vec<usize>,
     /// Gaps of a 2-cell's skeleton to test again.
     touched: Vec<usize>,
     /// The 2-cells next to the cell ([`Walker::faces_of`]).

@@ -41,11 +41,15 @@ enum Stretch {
 }
 
 /// One line of the arrangement's rays, directed by `dir`, with its events
-/// sorted along it.
+/// sorted along it: their positions, and apart (what the walk reads, 8
+/// bytes an event) what they are.
 #[derive(Clone, Debug)]
 pub(crate) struct LineView {
+    /// A point of the line, and its direction.
+    through: Point,
     dir: (i128, i128),
-    events: Vec<(Along, Event)>,
+    positions: Vec<Along>,
+    events: Vec<Event>,
     /// `stretches[i]` lies between events `i` and `i + 1`.
     stretches: Vec<Stretch>,
     /// The map vertices on the line, ascending.
@@ -163,16 +167,19 @@ impl LineView {
             stretches.push(s);
             before = s;
         }
+        let (positions, events): (Vec<Along>, Vec<Event>) = events.into_iter().unzip();
         let mut on_line: Vec<u32> = events
             .iter()
-            .filter_map(|(_, e)| match e {
+            .filter_map(|e| match e {
                 Event::Vertex { v, .. } => Some(*v),
                 Event::Crossing => None,
             })
             .collect();
         on_line.sort_unstable();
         LineView {
+            through,
             dir: d,
+            positions,
             events,
             stretches,
             on_line,
@@ -182,6 +189,11 @@ impl LineView {
     /// The map vertices on the line, ascending.
     pub(crate) fn vertices(&self) -> &[u32] {
         &self.on_line
+    }
+
+    /// Whether point `p` lies on the line.
+    pub(crate) fn passes(&self, p: Point) -> bool {
+        Dir::Small(self.dir.0, self.dir.1).cross(&dir(self.through, p)) == Ordering::Equal
     }
 
     /// Whether map vertex `v` lies on the line.
@@ -199,14 +211,14 @@ impl LineView {
     /// share a slot; points of an arrangement edge on the line do too,
     /// since every event inside a ray's segment is an arrangement vertex.
     pub(crate) fn slot(&self, t: &Along) -> usize {
-        self.events
-            .partition_point(|(s, _)| s.cmp(t) != Ordering::Greater)
+        self.positions
+            .partition_point(|s| s.cmp(t) != Ordering::Greater)
     }
 
     /// The number of events strictly before position `t`.
     pub(crate) fn slot_before(&self, t: &Along) -> usize {
-        self.events
-            .partition_point(|(s, _)| s.cmp(t) == Ordering::Less)
+        self.positions
+            .partition_point(|s| s.cmp(t) == Ordering::Less)
     }
 
     /// The map vertices on the line seen from a point of the interior of
@@ -232,17 +244,17 @@ impl LineView {
     /// either way.
     pub(crate) fn sees_past(&self, slot: usize, beside: Beside) -> bool {
         let past = |i: usize, forward: bool| {
-            matches!(self.events[i].1, Event::Vertex { .. })
+            matches!(self.events[i], Event::Vertex { .. })
                 && self
                     .step(i, forward, beside)
-                    .is_some_and(|j| matches!(self.events[j].1, Event::Vertex { .. }))
+                    .is_some_and(|j| matches!(self.events[j], Event::Vertex { .. }))
         };
         (slot < self.events.len() && past(slot, true)) || (slot > 0 && past(slot - 1, false))
     }
 
     fn walk(&self, mut i: usize, forward: bool, beside: Option<Beside>, out: &mut Vec<u32>) {
         while i < self.events.len() {
-            let Event::Vertex { v, .. } = self.events[i].1 else {
+            let Event::Vertex { v, .. } = self.events[i] else {
                 return;
             };
             out.push(v);
@@ -259,7 +271,7 @@ impl LineView {
     /// stretch beyond if it is interior or a map edge with its interior on
     /// that side.
     fn step(&self, i: usize, forward: bool, side: Beside) -> Option<usize> {
-        let Event::Vertex { left, right, .. } = self.events[i].1 else {
+        let Event::Vertex { left, right, .. } = self.events[i] else {
             return None;
         };
         if (side == Beside::Left && left) || (side == Beside::Right && right) {
