@@ -521,6 +521,14 @@ impl Arrangement {
             Some((i, j, x))
         });
         pts.reserve(crossings.len());
+        let mut more = vec![0usize; groups.len()];
+        for &(i, j, _) in &crossings {
+            more[group_of[i]] += 1;
+            more[group_of[j]] += 1;
+        }
+        for (ids, more) in on_line.iter_mut().zip(more) {
+            ids.reserve_exact(more);
+        }
         for (i, j, x) in crossings {
             let id = pts.intern_meet(x);
             on_line[group_of[i]].push(id);

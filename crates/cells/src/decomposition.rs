@@ -236,9 +236,10 @@ impl<'m> Decomposition<'m> {
 
         let shapes: Vec<(usize, [VertexId; 3])> = cells
             .par_iter()
-            .map(|&f| {
-                let hs = arrangement.face_half_edges(f);
-                (hs.len(), interior_corners(&arrangement, &hs))
+            .map_init(Vec::new, |hs, &f| {
+                hs.clear();
+                hs.extend(arrangement.face_cycle(f));
+                (hs.len(), interior_corners(&arrangement, hs))
             })
             .collect();
         let (sizes, cell_corners): (Vec<usize>, Vec<[VertexId; 3]>) = shapes.into_iter().unzip();

@@ -139,8 +139,9 @@ impl Wide {
 pub(crate) struct EdgeLines {
     /// By map edge: (a, b, c), c also as an `i128` if it fits.
     by_edge: Vec<(i128, i128, Integer, Option<i128>)>,
-    /// By map edge: (a, b, c mod 2^128), for hashing.
-    wrapping: Vec<(i128, i128, i128)>,
+    /// By map edge, for hashing: (a, b, c) modulo 2^64, and a mix of a
+    /// and b.
+    wrapping: Vec<[u64; 4]>,
 }
 
 impl EdgeLines {
@@ -158,20 +159,25 @@ impl EdgeLines {
             .collect();
         let wrapping = by_edge
             .iter()
-            .map(|(a, b, c, _)| (*a, *b, c.to_i128_wrapping()))
+            .map(|(a, b, c, _)| {
+                // Truncation is reduction modulo 2^64.
+                let (a, b) = (*a as u64, *b as u64);
+                let mix = a.wrapping_mul(0x9e37_79b9_7f4a_7c15) ^ b.rotate_left(32);
+                [a, b, c.to_u64_wrapping(), mix]
+            })
             .collect();
         EdgeLines { by_edge, wrapping }
     }
 
     /// A hash of edge e's line relative to `o`: (a, b, c − a·o.x − b·o.y)
-    /// modulo 2^128, mixed into one value. Arithmetic modulo 2^128 is a
-    /// ring homomorphism, so equal lines give equal values however large.
-    fn relative_wrapping(&self, e: u32, o: Point) -> i128 {
-        let (a, b, c) = self.wrapping[e as usize];
+    /// modulo 2^64, mixed into one value. Arithmetic modulo 2^64 is a ring
+    /// homomorphism, so equal lines give equal values however large.
+    fn relative_wrapping(&self, e: u32, o: Point) -> u64 {
+        let [a, b, c, mix] = self.wrapping[e as usize];
         let c = c
-            .wrapping_sub(a.wrapping_mul(o.x))
-            .wrapping_sub(b.wrapping_mul(o.y));
-        c ^ a.wrapping_mul(0x9e37_79b9_7f4a_7c15) ^ b.rotate_left(32)
+            .wrapping_sub(a.wrapping_mul(o.x as u64))
+            .wrapping_sub(b.wrapping_mul(o.y as u64));
+        c ^ mix
     }
 
     /// Edge e's line relative to `o`: (a, b, c − a·o.x − b·o.y).
@@ -203,7 +209,7 @@ impl Compact {
             h.write_u64((p.x - o.x) as u64 ^ ((p.y - o.y) as u64).rotate_left(32));
             match e {
                 None => h.write_u8(0),
-                Some(e) => h.write_u64(lines.relative_wrapping(e, o) as u64),
+                Some(e) => h.write_u64(lines.relative_wrapping(e, o)),
             }
         }
         h.finish()
@@ -306,23 +312,40 @@ impl Topology {
         let outer = (0..arr.face_count())
             .map(|f| id(arr.face(f).outer))
             .collect();
-        let mut edge: Vec<[u32; 3]> = (0..arr.edge_count())
-            .into_par_iter()
-            .map(|e| {
-                let Support::Rays(g) = arr.edge_support(e) else {
-                    return [NONE; 3];
-                };
-                let l = &lines[g];
-                let (a, b) = (arr.half_edge(2 * e).origin, arr.dest(2 * e));
-                let slot = l.slot(&l.position_of(arr.pt(a)));
-                debug_assert_eq!(
-                    slot,
-                    l.slot_before(&l.position_of(arr.pt(b))),
-                    "an event strictly inside arrangement edge {e}"
-                );
-                [id(g), id(slot), NONE]
+        // The edges on rays come group by group, each group's in order
+        // along its line (half-edge 2e forward), so their slots are found
+        // by one pass along each line.
+        let mut runs: Vec<(usize, std::ops::Range<usize>)> = Vec::new();
+        for e in 0..arr.edge_count() {
+            if let Support::Rays(g) = arr.edge_support(e) {
+                match runs.last_mut() {
+                    Some((h, r)) if *h == g && r.end == e => r.end = e + 1,
+                    _ => runs.push((g, e..e + 1)),
+                }
+            }
+        }
+        let slots: Vec<(usize, usize, usize)> = runs
+            .par_iter()
+            .flat_map_iter(|(g, r)| {
+                let l = &lines[*g];
+                let mut slot = 0;
+                r.clone().map(move |e| {
+                    let (a, b) = (arr.half_edge(2 * e).origin, arr.dest(2 * e));
+                    slot = l.slot_from(&l.position_of(arr.pt(a)), slot);
+                    debug_assert_eq!(slot, l.slot(&l.position_of(arr.pt(a))));
+                    debug_assert_eq!(
+                        slot,
+                        l.slot_before(&l.position_of(arr.pt(b))),
+                        "an event strictly inside arrangement edge {e}"
+                    );
+                    (e, *g, slot)
+                })
             })
             .collect();
+        let mut edge: Vec<[u32; 3]> = vec![[NONE; 3]; arr.edge_count()];
+        for (e, g, slot) in slots {
+            edge[e] = [id(g), id(slot), NONE];
+        }
         let sites: Vec<LowerSite> = (0..arr.edge_count())
             .filter(|&e| edge[e][0] != NONE)
             .map(LowerSite::Edge)
@@ -859,34 +882,52 @@ impl<'a> Walker<'a> {
         if k < 2 || pk < 2 {
             return self.compact(vis, eye);
         }
-        // Which of Vis lie on the line, and where each x sits in the
-        // parent's Vis: merges of ascending lists.
+        // Off the line both Vis are one list, so the kept gaps come in runs
+        // that are runs of the parent's gaps: copied whole. A run from x
+        // ends before a vertex of the line, or where the two lists part.
         let on = self.lines[g].vertices();
-        let mut m = 0;
-        let mut on_line = |x: u32| {
-            while m < on.len() && on[m] < x {
-                m += 1;
-            }
-            m < on.len() && on[m] == x
-        };
-        let first_on = on_line(vis[0]);
-        let mut here_on = first_on;
+        let on_line = |x: u32| on.binary_search(&x).is_ok();
         let mut data: Vec<u32> = Vec::with_capacity(2 * k);
         data.extend_from_slice(vis);
-        let mut j = 0;
-        for s in 0..k {
-            let (x, y) = (vis[s], vis[next(s, k)]);
-            let next_on = if s + 1 == k { first_on } else { on_line(y) };
-            while j < pk && pvis[j] < x {
+        // `m`: the first vertex of the line above x; `j`: x in the parent.
+        let (mut s, mut j, mut m) = (0, 0, 0);
+        while s < k {
+            let x = vis[s];
+            while m < on.len() && on[m] <= x {
+                m += 1;
+            }
+            if m > 0 && on[m - 1] == x {
+                data.push(self.gap(x as usize, vis[next(s, k)] as usize, k, eye));
+                s += 1;
+                continue;
+            }
+            while pvis[j] < x {
                 j += 1;
             }
-            let kept = !here_on && !next_on && j < pk && pvis[j] == x && pvis[next(j, pk)] == y;
+            // Gaps s, s + 1, ... while the next vertices agree and are off
+            // the line (all below the line's next vertex).
+            let bound = on.get(m).copied().unwrap_or(u32::MAX);
+            let mut r = 0;
+            while s + r + 1 < k
+                && j + r + 1 < pk
+                && vis[s + r + 1] == pvis[j + r + 1]
+                && vis[s + r + 1] < bound
+            {
+                r += 1;
+            }
+            data.extend_from_slice(&pedges[j..j + r]);
+            s += r;
+            j += r;
+            // The gap after the run: the last of Vis (to the first), or to
+            // a vertex of the line, or where the lists part.
+            let (x, y) = (vis[s], vis[next(s, k)]);
+            let kept = !on_line(y) && pvis[next(j, pk)] == y;
             data.push(if kept {
                 pedges[j]
             } else {
                 self.gap(x as usize, y as usize, k, eye)
             });
-            here_on = next_on;
+            s += 1;
         }
         // The origin: off the line Vis did not change, so a reflex parent
         // origin off it stays first unless a reflex vertex of the line now

@@ -215,6 +215,15 @@ impl LineView {
             .partition_point(|s| s.cmp(t) != Ordering::Greater)
     }
 
+    /// [`LineView::slot`], for a point known to lie at or after slot
+    /// `from`: a pass from there, for points taken in order along the line.
+    pub(crate) fn slot_from(&self, t: &Along, mut from: usize) -> usize {
+        while from < self.positions.len() && self.positions[from].cmp(t) != Ordering::Greater {
+            from += 1;
+        }
+        from
+    }
+
     /// The number of events strictly before position `t`.
     pub(crate) fn slot_before(&self, t: &Along) -> usize {
         self.positions
