@@ -132,7 +132,7 @@ pub struct Arrangement {
     /// fit (the fast paths start from these).
     pub(crate) small: Vec<Option<[i128; 3]>>,
     /// The points whose coordinates do not fit, by ascending vertex.
-    pub(crate) big: Vec<(VertexId, RatPoint)>,
+    pub(crate) big: BigPoints,
     /// By vertex: its exact point, built when first asked for.
     pub(crate) points: OnceLock<Vec<RatPoint>>,
     pub(crate) on_boundary: Vec<bool>,

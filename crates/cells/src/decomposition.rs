@@ -24,10 +24,10 @@ const NOT_A_CELL: usize = usize::MAX;
 /// of each cell (Def 3.9) and its equivalence classes (Def 3.10).
 ///
 /// Built in one pass: [`visibility_rays`], [`Arrangement::new`], then for
-/// every cell its
-/// skeleton, found by walking the arrangement from one visibility query
-/// (sec. 3.9.2: crossing an edge on a ray line changes the visibility of
-/// the map vertices on that line only; see the `incremental` module).
+/// every cell its skeleton, found by walking the arrangement from one
+/// visibility query (sec. 3.9.2: crossing an edge on a ray line changes the
+/// visibility of the map vertices on that line only; see the `incremental`
+/// module).
 /// Cells with equal skeletons (equal canonical [`SkeletonKey`]s) form a
 /// class. Skeletons are compared in map terms, up to translation, exactly
 /// and without building their keys; the keys

@@ -1105,10 +1105,10 @@ impl<'a> Walker<'a> {
             let side = &sides[i * lines.len()..(i + 1) * lines.len()];
             // (That f sees the near vertices is the T3.3b checker's to
             // test; here it only may not panic.)
-            if !lines
+            if lines
                 .iter()
                 .zip(side)
-                .all(|(&(g, slot), &b)| !self.lines[g].sees_past(slot as usize, b))
+                .any(|(&(g, slot), &b)| self.lines[g].sees_past(slot as usize, b))
             {
                 continue;
             }

@@ -32,8 +32,9 @@ impl Arrangement {
         if nh != 2 * self.edges.len() {
             return Err(format!("{nh} half-edges for {} edges", self.edges.len()));
         }
-        if self.points().len() != nv {
-            return Err(format!("{} points for {nv} vertices", self.points().len()));
+        let np = self.points().len();
+        if np != nv {
+            return Err(format!("{np} points for {nv} vertices"));
         }
         for (h, he) in self.half_edges.iter().enumerate() {
             if he.twin >= nh || he.next >= nh || he.prev >= nh || he.origin >= nv || he.face >= nf {
@@ -99,10 +100,11 @@ impl Arrangement {
         let mv = self.map.vertices();
         let n = mv.len();
         let map_pt = |i: usize| RatPoint::from(mv[i % n]);
+        let points = self.points();
         // Edges on their supports, in the support's direction.
         for (e, geom) in self.edges.iter().enumerate() {
             let (a, b) = (self.half_edges[2 * e].origin, self.dest(2 * e));
-            let (pa, pb) = (&self.points()[a], &self.points()[b]);
+            let (pa, pb) = (&points[a], &points[b]);
             if a == b || pa == pb {
                 return Err(format!("edge {e}: zero length"));
             }
@@ -147,7 +149,7 @@ impl Arrangement {
         let ring: Vec<&RatPoint> = self
             .face_vertices(outer)
             .into_iter()
-            .map(|v| &self.points()[v])
+            .map(|v| &points[v])
             .collect();
         if area_twice_rat(&ring) != -map_area.clone() {
             return Err("outer face: area is not −area(M)".to_string());
@@ -162,7 +164,7 @@ impl Arrangement {
             if sorted.len() != vs.len() {
                 return Err(format!("face {f}: a vertex repeats on its boundary"));
             }
-            let ring: Vec<&RatPoint> = vs.iter().map(|&v| &self.points()[v]).collect();
+            let ring: Vec<&RatPoint> = vs.iter().map(|&v| &points[v]).collect();
             let k = ring.len();
             for i in 0..k {
                 let (a, b, c) = (ring[i], ring[(i + 1) % k], ring[(i + 2) % k]);
@@ -203,17 +205,18 @@ impl Arrangement {
     /// No vertex in an edge's relative interior; no two edges cross or
     /// overlap. Candidates by integer bounding boxes, sorted by x.
     fn check_no_crossings(&self) -> Result<(), String> {
+        let points = self.points();
         let ends = |e: usize| (self.half_edges[2 * e].origin, self.dest(2 * e));
         let eboxes: Vec<[i128; 4]> = (0..self.edges.len())
             .map(|e| {
                 let (a, b) = ends(e);
-                bbox([&self.points()[a], &self.points()[b]])
+                bbox([&points[a], &points[b]])
             })
             .collect();
-        let vboxes: Vec<[i128; 4]> = self.points().iter().map(|p| bbox([p])).collect();
+        let vboxes: Vec<[i128; 4]> = points.iter().map(|p| bbox([p])).collect();
         // A point's box is at most 1 wide: sort by xmin and scan from
         // xmin ≥ eb[0] − 1 while xmin ≤ eb[2].
-        let mut vorder: Vec<usize> = (0..self.points().len()).collect();
+        let mut vorder: Vec<usize> = (0..points.len()).collect();
         vorder.sort_by_key(|&v| vboxes[v][0]);
         for (e, eb) in eboxes.iter().enumerate() {
             let (a, b) = ends(e);
@@ -225,7 +228,7 @@ impl Arrangement {
                 if v == a || v == b || !boxes_meet(&vboxes[v], eb) {
                     continue;
                 }
-                if on_closed_segment(&self.points()[a], &self.points()[b], &self.points()[v]) {
+                if on_closed_segment(&points[a], &points[b], &points[v]) {
                     return Err(format!("vertex {v} lies in the interior of edge {e}"));
                 }
             }
