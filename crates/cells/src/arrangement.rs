@@ -8,8 +8,9 @@
 
 use crate::assignment::{assign, BoundaryAssignment, Conflict};
 use crate::eye::{mul, small_of, Eye, Pt};
-use crate::fx::{FxHashMap, HashChains};
+use crate::fx::HashChains;
 use crate::rays::{group_by_line, LineKey, VisibilityRay};
+use crate::small::{SmallCoords, Span};
 use rayon::prelude::*;
 use rug::{Integer, Rational};
 use std::cmp::Ordering;
@@ -262,9 +263,78 @@ struct Points {
     /// By point: its homogeneous coordinates as `i128`s, if they fit.
     small: Vec<Option<[i128; 3]>>,
     /// The points whose coordinates fit, by them.
-    by_small: FxHashMap<[i128; 3], VertexId>,
+    by_small: SmallTable,
     /// The others, by hash.
     by_hash: HashChains,
+}
+
+/// The ids of points whose coordinates fit, by those coordinates: open
+/// addressing with linear probing, each slot 8 bytes (the id + 1, 0 when
+/// empty, and the high half of the hash), so that the table of a large
+/// arrangement stays small enough to be cache-friendly; the coordinates
+/// themselves are read from the points' table.
+#[derive(Default)]
+struct SmallTable {
+    slots: Vec<(u32, u32)>,
+    len: usize,
+}
+
+impl SmallTable {
+    fn hash(t: &[i128; 3]) -> u64 {
+        let mut h = crate::fx::FxHasher::default();
+        for &c in t {
+            std::hash::Hasher::write_i128(&mut h, c);
+        }
+        std::hash::Hasher::finish(&h)
+    }
+
+    /// The id filed under `t`, or else `new`, filed now. `small` holds
+    /// the coordinates of every id filed.
+    fn find_or_file(
+        &mut self,
+        t: [i128; 3],
+        new: VertexId,
+        small: &[Option<[i128; 3]>],
+    ) -> VertexId {
+        if 2 * (self.len + 1) > self.slots.len() {
+            self.reserve(2 * self.len + 16, small);
+        }
+        let h = SmallTable::hash(&t);
+        let tag = (h >> 32) as u32;
+        let mask = self.slots.len() - 1;
+        let mut i = h as usize & mask;
+        loop {
+            let (g, id) = self.slots[i];
+            if id == 0 {
+                let id = u32::try_from(new + 1).expect("fewer than 2^32 points");
+                self.slots[i] = (tag, id);
+                self.len += 1;
+                return new;
+            }
+            if g == tag && small[id as usize - 1] == Some(t) {
+                return id as usize - 1;
+            }
+            i = (i + 1) & mask;
+        }
+    }
+
+    /// Room for `n` points in all, at most half the slots full.
+    fn reserve(&mut self, n: usize, small: &[Option<[i128; 3]>]) {
+        let size = (2 * n).next_power_of_two();
+        if size <= self.slots.len() {
+            return;
+        }
+        let old = std::mem::replace(&mut self.slots, vec![(0, 0); size]);
+        let mask = size - 1;
+        for (g, id) in old.into_iter().filter(|&(_, id)| id != 0) {
+            let t = small[id as usize - 1].expect("filed points fit");
+            let mut i = SmallTable::hash(&t) as usize & mask;
+            while self.slots[i].1 != 0 {
+                i = (i + 1) & mask;
+            }
+            self.slots[i] = (g, id);
+        }
+    }
 }
 
 /// A point as the pairs of rays construct it.
@@ -280,7 +350,7 @@ impl Points {
         Points {
             points: Vec::new(),
             small: Vec::new(),
-            by_small: FxHashMap::default(),
+            by_small: SmallTable::default(),
             by_hash: HashChains::default(),
         }
     }
@@ -304,7 +374,7 @@ impl Points {
     /// point if it is at hand.
     fn intern_small(&mut self, t: [i128; 3], exact: Option<RatPoint>) -> VertexId {
         let new = self.points.len();
-        let id = *self.by_small.entry(t).or_insert(new);
+        let id = self.by_small.find_or_file(t, new, &self.small);
         if id == new {
             self.push(exact, Some(t));
         }
@@ -352,7 +422,7 @@ impl Points {
     fn reserve(&mut self, more: usize) {
         self.points.reserve(more);
         self.small.reserve(more);
-        self.by_small.reserve(more);
+        self.by_small.reserve(self.small.len() + more, &self.small);
     }
 
     fn push(&mut self, p: Option<RatPoint>, small: Option<[i128; 3]>) {
@@ -496,17 +566,26 @@ impl Arrangement {
             .map(|(r, &e)| bbox([pts.exact(r.anchor), pts.exact(e)]))
             .collect();
         // Closed segments on different lines meet iff neither has both
-        // endpoints strictly on one side of the other's line: exact
-        // orientations (the ends through `Eye`'s checked i128 path), and
-        // the point is constructed only for pairs that meet. Pairs are
+        // endpoints strictly on one side of the other's line: exact signs
+        // (each ray a [`Span`] on the `i64` path of `crate::small`, else
+        // orientations with the ends through `Eye`'s checked i128 path),
+        // and the point is constructed only for pairs that meet. Pairs are
         // visited in order of their boxes' left sides, stopping once a box
         // starts right of the current one.
-        let eyes: Vec<Eye> = ends.iter().map(|&e| Eye::new(pts.exact(e))).collect();
-        let apart = |i: usize, j: usize| {
-            let (a, b) = (rays[j].line.a(), rays[j].line.b());
-            let sa = orientation(a, b, rays[i].start());
-            let se = eyes[i].orientation(a, b);
-            sa == se && sa != Orientation::Collinear
+        let spans: Option<Vec<Span>> =
+            SmallCoords::of(v).map(|c| rays.iter().map(|r| c.span(r)).collect());
+        let eyes: Vec<Eye> = match spans {
+            Some(_) => Vec::new(),
+            None => ends.iter().map(|&e| Eye::new(pts.exact(e))).collect(),
+        };
+        let apart = |i: usize, j: usize| match &spans {
+            Some(s) => s[i].apart_from(&s[j]),
+            None => {
+                let (a, b) = (rays[j].line.a(), rays[j].line.b());
+                let sa = orientation(a, b, rays[i].start());
+                let se = eyes[i].orientation(a, b);
+                sa == se && sa != Orientation::Collinear
+            }
         };
         let crossings = meeting_pairs(&boxes, |i, j| {
             if group_of[i] == group_of[j] || apart(i, j) || apart(j, i) {

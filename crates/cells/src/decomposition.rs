@@ -599,7 +599,7 @@ impl<'a> ClassTable<'a> {
         for c in self.filed..self.skeletons.len() {
             self.by_hash.find_or_file(self.hashes[c], c, |_| false);
         }
-        let h = sk.class_hash(self.map, self.lines);
+        let h = sk.class_hash(self.lines);
         let c = self.skeletons.len();
         let (skeletons, map, lines) = (&self.skeletons, self.map, self.lines);
         let same = |at: usize| skeletons[at].get(walked).same_skeleton(sk, map, lines);

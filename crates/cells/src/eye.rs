@@ -185,6 +185,17 @@ impl Eye {
         })
     }
 
+    /// The homogeneous coordinates `[x, y, w]` of q when each is below
+    /// `2^NARROW_BITS` in magnitude ([`crate::small::EdgeTurns::left`]).
+    #[inline]
+    pub(crate) fn narrow(&self) -> Option<[i128; 3]> {
+        let fits = |c: i128| c.unsigned_abs() < 1 << crate::small::NARROW_BITS;
+        match self {
+            Eye::Small { x, y, w } if fits(*x) && fits(*y) && fits(*w) => Some([*x, *y, *w]),
+            _ => None,
+        }
+    }
+
     /// The direction from q to the map vertex `a`, scaled by W > 0.
     pub(crate) fn toward(&self, a: Point) -> Dir {
         match self {

@@ -34,9 +34,9 @@
 use crate::arrangement::{Arrangement, FaceId, RayGroup, Support, VertexId};
 use crate::decomposition::LowerSite;
 use crate::eye::{angle_cmp, dir, mul, Eye};
-use crate::fx::FxHasher;
 use crate::line_view::{Beside, LineView};
 use crate::rays::{LineKey, VisibilityRay};
+use crate::small::{EdgeTurns, SmallCoords};
 use rayon::prelude::*;
 use rug::Integer;
 use std::sync::atomic::{AtomicU32, AtomicU64, AtomicUsize, Ordering as AtomicOrdering};
@@ -142,7 +142,15 @@ pub(crate) struct EdgeLines {
     /// By map edge, for hashing: (a, b, c) modulo 2^64, and a mix of a
     /// and b.
     wrapping: Vec<[u64; 4]>,
+    /// By map vertex, for hashing: its coordinates modulo 2^64.
+    coords: Vec<[u64; 2]>,
+    /// Powers of an odd constant, two per map vertex: the weights of the
+    /// words of [`Compact::class_hash`] by position.
+    powers: Vec<u64>,
 }
+
+/// The word of a full edge in [`Compact::class_hash`].
+const FULL_WORD: u64 = 0x2545_f491_4f6c_dd1d;
 
 impl EdgeLines {
     pub(crate) fn new(map: &Map) -> EdgeLines {
@@ -166,17 +174,30 @@ impl EdgeLines {
                 [a, b, c.to_u64_wrapping(), mix]
             })
             .collect();
-        EdgeLines { by_edge, wrapping }
+        // Truncation is reduction modulo 2^64.
+        let coords = v.iter().map(|p| [p.x as u64, p.y as u64]).collect();
+        let powers = std::iter::successors(Some(0x9e37_79b9_7f4a_7c15u64), |&p| {
+            Some(p.wrapping_mul(0x9e37_79b9_7f4a_7c15))
+        })
+        .take(2 * n)
+        .collect();
+        EdgeLines {
+            by_edge,
+            wrapping,
+            coords,
+            powers,
+        }
     }
 
-    /// A hash of edge e's line relative to `o`: (a, b, c − a·o.x − b·o.y)
-    /// modulo 2^64, mixed into one value. Arithmetic modulo 2^64 is a ring
-    /// homomorphism, so equal lines give equal values however large.
-    fn relative_wrapping(&self, e: u32, o: Point) -> u64 {
+    /// A hash of edge e's line relative to a point o, given as `(ox, oy)`
+    /// modulo 2^64: (a, b, c − a·o.x − b·o.y) modulo 2^64, mixed into one
+    /// value. Arithmetic modulo 2^64 is a ring homomorphism, so equal lines
+    /// give equal values however large.
+    fn relative_wrapping(&self, e: u32, ox: u64, oy: u64) -> u64 {
         let [a, b, c, mix] = self.wrapping[e as usize];
         let c = c
-            .wrapping_sub(a.wrapping_mul(o.x as u64))
-            .wrapping_sub(b.wrapping_mul(o.y as u64));
+            .wrapping_sub(a.wrapping_mul(ox))
+            .wrapping_sub(b.wrapping_mul(oy));
         c ^ mix
     }
 
@@ -195,24 +216,42 @@ impl EdgeLines {
 impl Compact {
     /// A hash of the skeleton up to translation: equal for compact
     /// skeletons whose keys are equal ([`Compact::same_skeleton`]).
-    pub(crate) fn class_hash(&self, map: &Map, lines: &EdgeLines) -> u64 {
-        use std::hash::Hasher;
-        let v = map.vertices();
-        let o = v[self.origin()];
-        let mut h = FxHasher::default();
-        // One word per vertex and per edge: the hash only sorts skeletons
-        // into buckets, [`Compact::same_skeleton`] decides.
-        h.write_usize(self.data.len());
-        for (u, e) in self.rotated() {
-            // Below 2^(MAX_COORD_BITS + 1): no overflow.
-            let p = v[u as usize];
-            h.write_u64((p.x - o.x) as u64 ^ ((p.y - o.y) as u64).rotate_left(32));
-            match e {
-                None => h.write_u8(0),
-                Some(e) => h.write_u64(lines.relative_wrapping(e, o)),
-            }
-        }
-        h.finish()
+    ///
+    /// One word per vertex (its offset from the origin) and per edge (its
+    /// line relative to the origin, or a constant for a full edge), all
+    /// modulo 2^64, each times its own power of an odd constant, summed and
+    /// mixed: the products are independent, so they overlap in the
+    /// pipeline where a chained hash would wait on each step. The hash only
+    /// sorts skeletons into buckets; [`Compact::same_skeleton`] decides.
+    pub(crate) fn class_hash(&self, lines: &EdgeLines) -> u64 {
+        let (vis, edges) = (self.vis(), self.edges());
+        let (k, s) = (vis.len(), self.shift as usize);
+        let c = &lines.coords;
+        let [ox, oy] = c[vis[s] as usize];
+        let (before, after) = lines.powers[..2 * k].split_at(2 * (k - s));
+        let step = |acc: u64, (u, e, p): (&u32, &u32, &[u64])| {
+            let [x, y] = c[*u as usize];
+            let w = x.wrapping_sub(ox) ^ y.wrapping_sub(oy).rotate_left(32);
+            let f = if *e == FULL {
+                FULL_WORD
+            } else {
+                lines.relative_wrapping(*e, ox, oy)
+            };
+            acc.wrapping_add(w.wrapping_mul(p[0]))
+                .wrapping_add(f.wrapping_mul(p[1]))
+        };
+        let zip = |vis: &'_ [u32], edges: &'_ [u32], pow: &'_ [u64]| {
+            let pairs = vis.iter().zip(edges).zip(pow.chunks_exact(2));
+            pairs.map(|((u, e), p)| (u, e, p)).fold(0u64, step)
+        };
+        let acc = (k as u64)
+            .wrapping_add(zip(&vis[s..], &edges[s..], before))
+            .wrapping_add(zip(&vis[..s], &edges[..s], after));
+        // MurmurHash3's finaliser: every bit of the sum reaches the high
+        // and the low bits, which the class table's buckets use.
+        let h = (acc ^ (acc >> 33)).wrapping_mul(0xff51_afd7_ed55_8ccd);
+        let h = (h ^ (h >> 33)).wrapping_mul(0xc4ce_b9fe_1a85_ec53);
+        h ^ (h >> 33)
     }
 
     /// Whether two compact skeletons are one skeleton, i.e. have equal
@@ -261,6 +300,8 @@ pub(crate) struct Walker<'a> {
     views: Vec<OnceLock<Vec<(usize, usize)>>>,
     /// By map vertex: reflex in the map.
     reflex: Vec<bool>,
+    /// By map edge, for maps on the `i64` paths: [`EdgeTurns`].
+    turns: Option<EdgeTurns>,
 }
 
 /// The line of each ray group, in the arrangement's order of groups
@@ -450,6 +491,7 @@ impl<'a> Walker<'a> {
             topo,
             views: (0..n).map(|_| OnceLock::new()).collect(),
             reflex: (0..n).map(|i| map.is_reflex(i)).collect(),
+            turns: SmallCoords::of(map.vertices()).map(|c| c.edge_turns()),
         }
     }
 
@@ -634,10 +676,7 @@ impl<'a> Walker<'a> {
                     queued[other] = true;
                     stack.push((other, Some((f, g, slot, side))));
                 }
-                shared.hashes[f].store(
-                    sk.class_hash(self.map, self.edge_lines),
-                    AtomicOrdering::Relaxed,
-                );
+                shared.hashes[f].store(sk.class_hash(self.edge_lines), AtomicOrdering::Relaxed);
                 if faces[f].set(sk).is_err() {
                     unreachable!("each face is walked once");
                 }
@@ -979,11 +1018,16 @@ impl<'a> Walker<'a> {
     fn gap(&self, x: usize, y: usize, k: usize, eye: &Eye) -> u32 {
         let v = self.map.vertices();
         let n = v.len();
+        // Whether q lies left of map edge e.
+        let left_of = |e: usize| match self.turns.as_ref().zip(eye.narrow()) {
+            Some((turns, q)) => turns.left(e, q),
+            None => eye.orientation(v[e], v[next(e, n)]) == Orientation::CounterClockwise,
+        };
         let e = if y == next(x, n) && k > 1 {
             return FULL;
-        } else if eye.orientation(v[x], v[next(x, n)]) == Orientation::CounterClockwise {
+        } else if left_of(x) {
             x
-        } else if eye.orientation(v[back(y, 1, n)], v[y]) == Orientation::CounterClockwise {
+        } else if left_of(back(y, 1, n)) {
             back(y, 1, n)
         } else {
             self.beyond(x, eye)

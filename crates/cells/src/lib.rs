@@ -46,6 +46,7 @@ mod incremental;
 mod line_view;
 mod rays;
 mod sanity;
+mod small;
 
 pub use arrangement::{
     Arrangement, EdgeGeometry, EdgeId, Face, FaceId, HalfEdge, HalfEdgeId, RayGroup, Support,

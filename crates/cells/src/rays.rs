@@ -1,12 +1,13 @@
 //! Visibility rays (Def 3.8), exactly.
 
+use crate::small::SmallCoords;
 use rayon::prelude::*;
 use rug::Integer;
 use std::cmp::Ordering;
 use std::collections::BTreeMap;
 use wai_exact::{
     compare_along, compare_intersections_along, construct_intersection, gcd_u128, orientation,
-    side_of_line, Line, Orientation, Point, RatPoint, Side,
+    Line, Orientation, Point, RatPoint, Side,
 };
 use wai_map::Map;
 use wai_visibility::{OnMap, VisibilityIndex};
@@ -275,26 +276,87 @@ pub fn visibility_rays(map: &Map) -> Vec<VisibilityRay> {
     let v = map.vertices();
     let n = v.len();
     let index = VisibilityIndex::new(map);
+    let small = SmallCoords::of(v);
+    let at = Vertices {
+        v,
+        small: small.as_ref(),
+    };
     // Each reflex vertex's rays on their own (in parallel), in order.
     let by_vertex: Vec<Vec<VisibilityRay>> = map
         .reflex_vertices()
         .par_iter()
         .map_init(
             || vec![Side::On; n],
-            |sides, &a| rays_from(v, &index, sides, a),
+            |sides, &a| rays_from(at, &index, sides, a),
         )
         .collect();
     by_vertex.concat()
 }
 
+/// The map's vertices, with their `i64` coordinates when they fit
+/// ([`crate::small`]).
+#[derive(Clone, Copy)]
+struct Vertices<'a> {
+    v: &'a [Point],
+    small: Option<&'a SmallCoords>,
+}
+
+impl Vertices<'_> {
+    /// The orientation of vertices `(a, b, c)`: exact either way.
+    #[inline]
+    fn orientation(&self, a: usize, b: usize, c: usize) -> Orientation {
+        match self.small {
+            Some(s) => s.orientation(a, b, c),
+            None => orientation(self.v[a], self.v[b], self.v[c]),
+        }
+    }
+
+    /// `sides[k]`: the side of vertex `k` of the line directed from vertex
+    /// `j` to vertex `a`, for every `k`.
+    fn sides(&self, j: usize, a: usize, sides: &mut [Side]) {
+        match self.small {
+            Some(s) => s.sides(j, a, sides),
+            None => {
+                for (side, &c) in sides.iter_mut().zip(self.v) {
+                    *side = orientation(self.v[j], self.v[a], c).into();
+                }
+            }
+        }
+    }
+
+    /// The order along `line` (directed from vertex `j` to vertex `a`) of
+    /// its meeting points with edges `k` and `b` (`Less`: edge `k`'s comes
+    /// first), both crossing it.
+    fn compare_crossings(
+        &self,
+        line: &Line,
+        (j, a): (usize, usize),
+        k: usize,
+        b: usize,
+    ) -> Ordering {
+        match self.small {
+            Some(s) => s.compare_crossings((j, a), k, b),
+            None => {
+                let n = self.v.len();
+                let edge = |k: usize| {
+                    Line::new(self.v[k], self.v[next_of(k, n)]).expect("map vertices are distinct")
+                };
+                compare_intersections_along(line, &edge(k), &edge(b))
+                    .expect("crossing edges are not parallel to the ray")
+            }
+        }
+    }
+}
+
 /// The visibility rays from reflex vertex `a` (`sides`: a buffer of one
 /// entry per map vertex).
 fn rays_from(
-    v: &[Point],
+    at: Vertices<'_>,
     index: &VisibilityIndex,
     sides: &mut [Side],
     a: usize,
 ) -> Vec<VisibilityRay> {
+    let v = at.v;
     let n = v.len();
     let mut rays = Vec::new();
     let (prev, next) = ((a + n - 1) % n, (a + 1) % n);
@@ -312,8 +374,8 @@ fn rays_from(
         // cross(e1, u) ≥ 0 and cross(u, e2) ≥ 0. For u = v_r − v these
         // are o1 ≠ CCW and o2 ≠ CW; for u = v − v_r they are o1 ≠ CW and
         // o2 ≠ CCW.
-        let o1 = orientation(v[a], v[prev], v[j]);
-        let o2 = orientation(v[a], v[next], v[j]);
+        let o1 = at.orientation(a, prev, j);
+        let o2 = at.orientation(a, next, j);
         use Orientation::{Clockwise as Cw, CounterClockwise as Ccw};
         if o1 != Ccw && o2 != Cw {
             continue; // (a): the ray's direction leaves the map at v_r
@@ -327,10 +389,11 @@ fn rays_from(
             continue;
         }
         let line = Line::new(v[j], v[a]).expect("map vertices are distinct");
-        if !sides_if_visible(v, &line, sides, a, j, !adjacent) {
+        at.sides(j, a, sides);
+        if !adjacent && !visible(at, &line, sides, a, j) {
             continue; // v is not visible from v_r
         }
-        rays.push(shoot(v, line, sides, a, j));
+        rays.push(shoot(at, line, sides, a, j));
     }
     rays
 }
@@ -342,17 +405,11 @@ fn opposite(s: Side, t: Side) -> bool {
     )
 }
 
-/// Fill `sides[k]` with the side of `v[k]` relative to `line` (through
-/// `v[j]` and `v[a]`). If `check`, stop early and return `false` as soon as
-/// the open segment between `v[j]` and `v[a]` is seen to meet the boundary.
-fn sides_if_visible(
-    v: &[Point],
-    line: &Line,
-    sides: &mut [Side],
-    a: usize,
-    j: usize,
-    check: bool,
-) -> bool {
+/// Whether the open segment between vertices `j` and `a` misses the
+/// boundary, given the side of every vertex of the line through them
+/// (`sides`).
+fn visible(at: Vertices<'_>, line: &Line, sides: &[Side], a: usize, j: usize) -> bool {
+    let v = at.v;
     let n = v.len();
     // A vertex strictly between blocks (grazing blocks, sec. 2.2); this also
     // covers every map edge collinear with the segment that overlaps it.
@@ -364,22 +421,24 @@ fn sides_if_visible(
     };
     // Edge k0 → k1 with endpoints strictly on opposite sides crosses the
     // open segment iff v[j] and v[a] lie strictly on opposite sides of it.
-    let crosses = |k0: usize, k1: usize, s0: Side, s1: Side| {
-        opposite(s0, s1) && {
-            let oj = orientation(v[k0], v[k1], v[j]);
-            let oa = orientation(v[k0], v[k1], v[a]);
-            opposite(oj.into(), oa.into())
-        }
+    let crosses = |k0: usize, k1: usize| {
+        opposite(sides[k0], sides[k1])
+            && opposite(
+                at.orientation(k0, k1, j).into(),
+                at.orientation(k0, k1, a).into(),
+            )
     };
-    for k in 0..n {
-        let s = side_of_line(line, v[k]);
-        sides[k] = s;
-        if check && ((s == Side::On && between(k)) || (k > 0 && crosses(k - 1, k, sides[k - 1], s)))
-        {
-            return false;
-        }
+    !(0..n).any(|k| (sides[k] == Side::On && between(k)) || crosses(k, next_of(k, n)))
+}
+
+/// `(k + 1) mod n` for `k < n`.
+#[inline]
+fn next_of(k: usize, n: usize) -> usize {
+    if k + 1 == n {
+        0
+    } else {
+        k + 1
     }
-    !(check && crosses(n - 1, 0, sides[n - 1], sides[0]))
 }
 
 /// For an edge `p → q` whose endpoints lie strictly on opposite sides of a
@@ -391,44 +450,41 @@ fn sides_if_visible(
 /// the right of `L`; `g(X) = 0`, so `u` precedes `X` iff `g(u)` and the
 /// slope have opposite signs. `g(u) ≠ 0`: else `u` would be `X`, a map
 /// vertex in the relative interior of an edge.
-fn before_crossing(p: Point, q: Point, side_q: Side, u: Point) -> bool {
-    (orientation(p, q, u) == Orientation::Clockwise) == (side_q == Side::Right)
+fn before_crossing(at: Vertices<'_>, p: usize, q: usize, side_q: Side, u: usize) -> bool {
+    (at.orientation(p, q, u) == Orientation::Clockwise) == (side_q == Side::Right)
 }
 
 /// Shoot the ray from `v[a]` along `line` (directed from `v[j]` to `v[a]`).
-fn shoot(v: &[Point], line: Line, sides: &[Side], a: usize, j: usize) -> VisibilityRay {
+fn shoot(at: Vertices<'_>, line: Line, sides: &[Side], a: usize, j: usize) -> VisibilityRay {
+    let v = at.v;
     let n = v.len();
     let edge_line = |k: usize| Line::new(v[k], v[(k + 1) % n]).expect("map vertices are distinct");
     // The nearest crossing of an edge's relative interior beyond v_r.
     let mut nearest: Option<usize> = None;
     for k in 0..n {
         let k1 = (k + 1) % n;
-        if !opposite(sides[k], sides[k1]) || !before_crossing(v[k], v[k1], sides[k1], v[a]) {
+        if !opposite(sides[k], sides[k1]) || !before_crossing(at, k, k1, sides[k1], a) {
             continue;
         }
         let closer = match nearest {
             None => true,
-            Some(b) => {
-                compare_intersections_along(&line, &edge_line(k), &edge_line(b))
-                    .expect("crossing edges are not parallel to the ray")
-                    == Ordering::Less
-            }
+            Some(b) => at.compare_crossings(&line, (j, a), k, b) == Ordering::Less,
         };
         if closer {
             nearest = Some(k);
         }
     }
     // The map vertices on the ray beyond v_r and before that crossing.
-    let mut on_ray: Vec<usize> = (0..n)
-        .filter(|&u| {
-            sides[u] == Side::On
-                && compare_along(&line, v[a], v[u]) == Ordering::Less
-                && match nearest {
-                    None => true,
-                    Some(k) => before_crossing(v[k], v[(k + 1) % n], sides[(k + 1) % n], v[u]),
-                }
-        })
-        .collect();
+    let mut on_ray: Vec<usize> = Vec::new();
+    for (u, &s) in sides.iter().enumerate() {
+        if s == Side::On
+            && compare_along(&line, v[a], v[u]) == Ordering::Less
+            && nearest
+                .is_none_or(|k| before_crossing(at, k, next_of(k, n), sides[next_of(k, n)], u))
+        {
+            on_ray.push(u);
+        }
+    }
     on_ray.sort_by(|&x, &y| compare_along(&line, v[x], v[y]));
     let mut grazed = Vec::new();
     let mut end = None;

@@ -109,14 +109,35 @@ impl RatPoint {
         if w == 0 {
             return None;
         }
-        let g = gcd_u128(
-            gcd_u128(x.unsigned_abs(), y.unsigned_abs()),
-            w.unsigned_abs(),
-        );
+        if let (Ok(x), Ok(y), Ok(w)) = (i64::try_from(x), i64::try_from(y), i64::try_from(w)) {
+            // The same in 64 bits, whose divisions are several times faster.
+            let mut g = gcd_u64(w.unsigned_abs(), x.unsigned_abs());
+            if g != 1 {
+                g = gcd_u64(g, y.unsigned_abs());
+            }
+            let (x, y, w) = match i64::try_from(g) {
+                Ok(1) => (x, y, w),
+                Ok(g) => (x / g, y / g, w / g),
+                // g = 2^63 divides w: |w| = 2^63 and x, y are 0 or ±2^63.
+                Err(_) => (x.signum(), y.signum(), w.signum()),
+            };
+            let s = if w < 0 { -1 } else { 1 };
+            return Some([i128::from(x) * s, i128::from(y) * s, i128::from(w) * s]);
+        }
+        // From w, the smallest as a rule, and no division when the first
+        // gcd is already 1 (most crossings of rays).
+        let mut g = gcd_u128(w.unsigned_abs(), x.unsigned_abs());
+        if g != 1 {
+            g = gcd_u128(g, y.unsigned_abs());
+        }
         // g ≥ 1 divides |w| ≤ 2^127, so the quotients fit unless g = 1 and
         // a value is i128::MIN, which only a negation below can hit.
-        let g = i128::try_from(g).ok()?;
-        let (x, y, w) = (x / g, y / g, w / g);
+        let (x, y, w) = if g == 1 {
+            (x, y, w)
+        } else {
+            let g = i128::try_from(g).ok()?;
+            (x / g, y / g, w / g)
+        };
         if w < 0 {
             Some([x.checked_neg()?, y.checked_neg()?, w.checked_neg()?])
         } else {

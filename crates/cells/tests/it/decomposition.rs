@@ -439,3 +439,62 @@ fn lower_tally(d: &Decomposition<'_>, dim: u8) -> KeptAbsorbed {
     }
     t
 }
+
+/// The `i64` paths of the rays and of the arrangement's pairs of rays
+/// (map coordinates below 2^30) against the general ones: each map scaled
+/// by 2^31 has the same decomposition, count for count and class for
+/// class, with its skeletons scaled.
+#[test]
+fn same_decomposition_beyond_the_i64_paths() {
+    let maps = [
+        wai_gen::random("random-orthogonal", 30, 1).unwrap(),
+        wai_gen::random("random-simple-2opt", 20, 2).unwrap(),
+        wai_gen::family("comb-convex-chain", &[3]).unwrap(),
+        wai_gen::family("overlap-fan", &[0]).unwrap(),
+        wai_gen::family("corridor-niches", &[2]).unwrap(),
+    ];
+    let s: i128 = 1 << 31;
+    for m in &maps {
+        let ring = m
+            .vertices()
+            .iter()
+            .map(|p| wai_exact::Point::new(p.x * s, p.y * s));
+        let (big, norm) = Map::from_ring(ring.collect()).unwrap();
+        assert!(norm.is_identity());
+        let (d, e) = (Decomposition::new(m), Decomposition::new(&big));
+        assert_eq!(d.counts(), e.counts(), "{:?}", m.name());
+        assert_eq!(d.classes(), e.classes(), "{:?}", m.name());
+        // Vertex ids follow the order in which crossings are found, which
+        // may differ: 0-cells are compared by their points.
+        let by_point = |d: &Decomposition, scale: i128| {
+            let mut cells: Vec<_> = d
+                .lower_cells()
+                .iter()
+                .map(|l| {
+                    let site = match l.site {
+                        LowerSite::Edge(e) => (Some(e), None),
+                        LowerSite::Vertex(v) => {
+                            let p = d.arrangement().point(v);
+                            let x = rug::Integer::from(p.hx() * scale);
+                            let y = rug::Integer::from(p.hy() * scale);
+                            (None, Some(RatPoint::new(x, y, p.hw().clone()).unwrap()))
+                        }
+                    };
+                    (site, l.class, l.origin, l.absorbed_by)
+                })
+                .collect();
+            cells.sort();
+            cells
+        };
+        assert!(
+            by_point(&d, s) == by_point(&e, 1),
+            "{:?}: lower cells",
+            m.name()
+        );
+        for (a, b) in d.skeletons().iter().zip(e.skeletons()) {
+            let scaled: Vec<(i128, i128)> =
+                a.offsets.iter().map(|&(x, y)| (x * s, y * s)).collect();
+            assert_eq!(scaled, b.offsets, "{:?}", m.name());
+        }
+    }
+}

@@ -196,13 +196,17 @@ fn invariant_under_rigid_motions() {
 
 /// Scaling by 2^40 and 2^70 takes every predicate off its `i128` fast
 /// path (`INTERSECTION_FAST_BITS = 30`, `ORIENTATION_FAST_BITS = 62`) onto
-/// GMP: the rays scale with the map.
+/// GMP, and the rays off their own `i64` path (coordinates below 2^30):
+/// the rays scale with the map.
 #[test]
 fn invariant_under_scaling_beyond_fast_paths() {
     let maps = [
         wai_gen::random("special-chamfer", 24, 3).unwrap(),
         wai_gen::random("random-simple-star", 20, 1).unwrap(),
         wai_gen::family("corridor-niches", &[2]).unwrap(),
+        // Orthogonal: collinear edges, rays through several vertices.
+        wai_gen::random("random-orthogonal", 40, 2).unwrap(),
+        wai_gen::family("comb-convex-chain", &[3]).unwrap(),
     ];
     for m in &maps {
         let rays = visibility_rays(m);

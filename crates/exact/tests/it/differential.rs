@@ -527,6 +527,27 @@ proptest! {
         check_construct_intersection_i128(&l1, &l2);
     }
 
+    /// The 64-bit path of lowest terms: values in `i64` with a common
+    /// factor (so the gcd is rarely 1), and the extremes of `i64`.
+    #[test]
+    fn rat_point_from_i64_range_equals_new(
+        t in prop::array::uniform3(prop_oneof![
+            small(20),
+            any::<i64>().prop_map(i128::from),
+            Just(i128::from(i64::MIN)),
+            Just(i128::from(i64::MAX)),
+        ]),
+        g in prop_oneof![Just(1i128), 2i128..1000, (0u32..40).prop_map(|s| 1i128 << s)],
+    ) {
+        let fit = |v: i128| {
+            let m = v.checked_mul(g).unwrap_or(v);
+            if i64::try_from(m).is_ok() { m } else { v }
+        };
+        let [x, y, w] = t.map(fit);
+        let gmp = wai_exact::RatPoint::new(Integer::from(x), Integer::from(y), Integer::from(w));
+        prop_assert_eq!(wai_exact::RatPoint::from_i128(x, y, w), gmp);
+    }
+
     #[test]
     fn rat_point_from_i128_equals_new(x in any_i128(), y in any_i128(), w in any_i128()) {
         let gmp = wai_exact::RatPoint::new(Integer::from(x), Integer::from(y), Integer::from(w));
