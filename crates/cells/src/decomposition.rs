@@ -228,20 +228,26 @@ impl<'m> Decomposition<'m> {
         }
         let index = VisibilityIndex::new(map);
         let lines = EdgeLines::new(map);
-        let walker = Walker::new(map, &arrangement, &index, &lines, line_views);
+        // The walker's topology is mostly sequential: beside it, each
+        // cell's size and three corners for its interior point.
+        let (walker, shapes) = rayon::join(
+            || Walker::new(map, &arrangement, &index, &lines, line_views),
+            || {
+                cells
+                    .par_iter()
+                    .map_init(Vec::new, |hs, &f| {
+                        hs.clear();
+                        hs.extend(arrangement.face_cycle(f));
+                        (hs.len(), interior_corners(&arrangement, hs))
+                    })
+                    .collect::<Vec<(usize, [VertexId; 3])>>()
+            },
+        );
         // Progress counts the cells of every dimension.
         let all = total + walker.lower_count();
         progress(0, all);
         let step = (all / 100).max(1);
 
-        let shapes: Vec<(usize, [VertexId; 3])> = cells
-            .par_iter()
-            .map_init(Vec::new, |hs, &f| {
-                hs.clear();
-                hs.extend(arrangement.face_cycle(f));
-                (hs.len(), interior_corners(&arrangement, hs))
-            })
-            .collect();
         let (sizes, cell_corners): (Vec<usize>, Vec<[VertexId; 3]>) = shapes.into_iter().unzip();
         let mut corners: Vec<Option<[VertexId; 3]>> = vec![None; arrangement.face_count()];
         for (&f, &c) in cells.iter().zip(&cell_corners) {

@@ -302,14 +302,18 @@ pub(crate) struct Walker<'a> {
     reflex: Vec<bool>,
     /// By map edge, for maps on the `i64` paths: [`EdgeTurns`].
     turns: Option<EdgeTurns>,
+    /// The cells in the order the walk splits into parts
+    /// ([`Walker::breadth_first`]).
+    order: Vec<FaceId>,
 }
 
 /// The line of each ray group, in the arrangement's order of groups
 /// (built beside the arrangement: [`Arrangement::from_rays_beside`]).
 pub(crate) fn line_views(map: &Map, groups: &[RayGroup], rays: &[VisibilityRay]) -> Vec<LineView> {
+    let small = SmallCoords::of(map.vertices());
     groups
         .par_iter()
-        .map(|g| LineView::new(map, rays[g.rays[0]].source(), g.dir))
+        .map(|g| LineView::new(map, small.as_ref(), rays[g.rays[0]].from, g.dir))
         .collect()
 }
 
@@ -481,8 +485,10 @@ impl<'a> Walker<'a> {
     ) -> Self {
         debug_assert_eq!(lines.len(), arr.ray_groups().len(), "a line per ray group");
         let topo = Topology::new(arr, &lines);
+        let order = breadth_first(arr, &topo);
         let n = map.vertices().len();
         Walker {
+            order,
             map,
             edge_lines,
             arr,
@@ -516,7 +522,7 @@ impl<'a> Walker<'a> {
         progress: &mut dyn FnMut(usize),
     ) -> Walked {
         let arr = self.arr;
-        let order = self.breadth_first();
+        let order = &self.order;
         let parts = rayon::current_num_threads()
             .min(order.len() / MIN_PART)
             .max(1);
@@ -572,37 +578,6 @@ impl<'a> Walker<'a> {
                 own,
             },
         }
-    }
-
-    /// The cells in breadth-first order across ray edges, from each cell
-    /// not yet reached (the interior of the map is connected and cells
-    /// meet across ray edges, so the first one reaches all).
-    fn breadth_first(&self) -> Vec<FaceId> {
-        let arr = self.arr;
-        let mut seen = vec![false; arr.face_count()];
-        let mut order = Vec::with_capacity(arr.face_count());
-        for start in arr.cells() {
-            if seen[start] {
-                continue;
-            }
-            seen[start] = true;
-            let mut i = order.len();
-            order.push(start);
-            while i < order.len() {
-                let f = order[i];
-                i += 1;
-                for h in self.topo.cycle(f) {
-                    if self.topo.line(h / 2).is_some() {
-                        let other = self.topo.face(h ^ 1);
-                        if other != arr.outer_face() && !seen[other] {
-                            seen[other] = true;
-                            order.push(other);
-                        }
-                    }
-                }
-            }
-        }
-        order
     }
 
     /// Walk the cells of part `part` (`part_of`, by face), starting from
@@ -1198,6 +1173,36 @@ impl<'a> Walker<'a> {
         );
         view[at - 1].1
     }
+}
+
+/// The cells in breadth-first order across ray edges, from each cell
+/// not yet reached (the interior of the map is connected and cells
+/// meet across ray edges, so the first one reaches all).
+fn breadth_first(arr: &Arrangement, topo: &Topology) -> Vec<FaceId> {
+    let mut seen = vec![false; arr.face_count()];
+    let mut order = Vec::with_capacity(arr.face_count());
+    for start in arr.cells() {
+        if seen[start] {
+            continue;
+        }
+        seen[start] = true;
+        let mut i = order.len();
+        order.push(start);
+        while i < order.len() {
+            let f = order[i];
+            i += 1;
+            for h in topo.cycle(f) {
+                if topo.line(h / 2).is_some() {
+                    let other = topo.face(h ^ 1);
+                    if other != arr.outer_face() && !seen[other] {
+                        seen[other] = true;
+                        order.push(other);
+                    }
+                }
+            }
+        }
+    }
+    order
 }
 
 /// How the walk reached a 2-cell: from a walked 2-cell, across a ray

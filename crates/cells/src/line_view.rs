@@ -8,6 +8,7 @@
 
 use crate::arrangement::Along;
 use crate::eye::{angle_cmp, dir, mul, Dir, Pt};
+use crate::small::SmallCoords;
 use rug::{Integer, Rational};
 use std::cmp::Ordering;
 use wai_exact::Point;
@@ -103,13 +104,26 @@ fn crossing_gmp(o: Point, a: Point, b: Point, d: (i128, i128)) -> Rational {
 }
 
 impl LineView {
-    /// The line through `through` with direction `dir` (primitive).
-    pub(crate) fn new(map: &Map, through: Point, d: (i128, i128)) -> LineView {
+    /// The line through map vertex `from` with direction `dir`
+    /// (primitive); `small`: the map's coordinates on the `i64` path, if
+    /// they fit it.
+    pub(crate) fn new(
+        map: &Map,
+        small: Option<&SmallCoords>,
+        from: usize,
+        d: (i128, i128),
+    ) -> LineView {
         let v = map.vertices();
         let n = v.len();
-        let ld = Dir::Small(d.0, d.1);
-        let side = |p: Point| ld.cross(&dir(through, p));
-        let sides: Vec<Ordering> = v.iter().map(|&p| side(p)).collect();
+        let through = v[from];
+        // By map vertex: `Greater` left of the line, `Less` right of it.
+        let sides: Vec<Ordering> = match small {
+            Some(s) => s.turns_from(from, d),
+            None => {
+                let ld = Dir::Small(d.0, d.1);
+                v.iter().map(|&p| ld.cross(&dir(through, p))).collect()
+            }
+        };
         let mut events: Vec<(Along, Event)> = Vec::new();
         for (i, &p) in v.iter().enumerate() {
             if sides[i] == Ordering::Equal {

@@ -102,6 +102,20 @@ impl SmallCoords {
         (n1 * e2).cmp(&(n2 * e1))
     }
 
+    /// By map vertex, the sign of `d × (v − v_from)`: `Greater` left of the
+    /// line through vertex `from` with direction `d`, a difference of
+    /// coordinates or a divisor of one (below `2^31`).
+    pub(crate) fn turns_from(&self, from: usize, d: (i128, i128)) -> Vec<Ordering> {
+        let s = &self.0;
+        let d = [
+            i64::try_from(d.0).expect("a direction between small points"),
+            i64::try_from(d.1).expect("a direction between small points"),
+        ];
+        s.iter()
+            .map(|&c| cross(d, sub(c, s[from])).cmp(&0))
+            .collect()
+    }
+
     /// The map's edges as [`EdgeTurns`].
     pub(crate) fn edge_turns(&self) -> EdgeTurns {
         let s = &self.0;
