@@ -826,27 +826,27 @@ impl<'a> Walker<'a> {
         if let [(g, slot)] = lines {
             // One line: base minus its vertices, merged with those seen on
             // it; all three ascending.
+            // The vertices seen on the line are some of its vertices, and
+            // off it Vis is unchanged: base is copied in stretches between
+            // the line's vertices, which are those seen now.
             let line = &self.lines[*g];
             let on = line.vertices();
             seen.clear();
             line.seen_in(*slot as usize, beside, seen);
             seen.sort_unstable();
-            let (mut j, mut m) = (0, 0);
-            for &u in base {
-                while j < on.len() && on[j] < u {
-                    j += 1;
-                }
-                if j < on.len() && on[j] == u {
-                    continue;
-                }
-                while m < seen.len() && seen[m] < u {
-                    out.push(seen[m]);
+            seen.dedup();
+            let (mut from, mut m) = (0, 0);
+            for &u in on {
+                let at = from + base[from..].partition_point(|&b| b < u);
+                out.extend_from_slice(&base[from..at]);
+                from = if base.get(at) == Some(&u) { at + 1 } else { at };
+                if seen.get(m) == Some(&u) {
+                    out.push(u);
                     m += 1;
                 }
-                out.push(u);
             }
-            out.extend_from_slice(&seen[m..]);
-            out.dedup();
+            out.extend_from_slice(&base[from..]);
+            assert_eq!(m, seen.len(), "the vertices seen on a line lie on it");
             return;
         }
         out.extend(
@@ -921,14 +921,9 @@ impl<'a> Walker<'a> {
             // Gaps s, s + 1, ... while the next vertices agree and are off
             // the line (all below the line's next vertex).
             let bound = on.get(m).copied().unwrap_or(u32::MAX);
-            let mut r = 0;
-            while s + r + 1 < k
-                && j + r + 1 < pk
-                && vis[s + r + 1] == pvis[j + r + 1]
-                && vis[s + r + 1] < bound
-            {
-                r += 1;
-            }
+            let below = vis[s + 1..].partition_point(|&u| u < bound);
+            let most = below.min(pk - j - 1);
+            let r = common_prefix(&vis[s + 1..s + 1 + most], &pvis[j + 1..j + 1 + most]);
             data.extend_from_slice(&pedges[j..j + r]);
             s += r;
             j += r;
@@ -1248,6 +1243,23 @@ struct Scratch {
     /// The cell's lines and slots, and each face's side of each line.
     lines: Vec<(usize, u32)>,
     sides: Vec<Beside>,
+}
+
+/// The length of the longest common prefix of `a` and `b` (equally long),
+/// compared eight at a time first.
+fn common_prefix(a: &[u32], b: &[u32]) -> usize {
+    let mut i = 0;
+    for (x, y) in a.chunks_exact(8).zip(b.chunks_exact(8)) {
+        if x != y {
+            break;
+        }
+        i += 8;
+    }
+    i + a[i..]
+        .iter()
+        .zip(&b[i..])
+        .take_while(|(x, y)| x == y)
+        .count()
 }
 
 /// `(i + 1) mod k` for `i < k`, without a division (hot loops).
