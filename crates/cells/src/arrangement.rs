@@ -337,6 +337,17 @@ impl SmallTable {
     }
 }
 
+/// The first half of [`Arrangement::assemble`]'s work: the points so far,
+/// the group of each ray, its end, each group's points so far, and the
+/// pairs of rays (on different lines) that meet, with their points.
+struct Found {
+    pts: Points,
+    group_of: Vec<usize>,
+    ends: Vec<VertexId>,
+    on_line: Vec<Vec<VertexId>>,
+    crossings: Vec<(usize, usize, Meet)>,
+}
+
 /// A point as the pairs of rays construct it.
 enum Meet {
     /// Its homogeneous coordinates in lowest terms, `w > 0`.
@@ -521,20 +532,23 @@ impl Arrangement {
                 RayGroup { key, rays: rs, dir }
             })
             .collect();
-        let (mut arr, t) = rayon::join(
-            || Arrangement::assemble(map, &rays, &groups),
-            || beside(&groups, &rays),
-        );
+        let (mut arr, t) = Arrangement::assemble(map, &rays, &groups, beside);
         arr.groups = groups;
         arr.rays = rays;
         (arr, t)
     }
 
     /// The arrangement of the map and `rays` in ray groups `groups`, but
-    /// for those two (left empty).
-    fn assemble(map: &Map, rays: &[VisibilityRay], groups: &[RayGroup]) -> Arrangement {
+    /// for those two (left empty); and `beside(groups, rays)`, run beside
+    /// its sequential second half ([`Arrangement::link`]) once the pairs of
+    /// rays that meet are found.
+    fn assemble<T: Send>(
+        map: &Map,
+        rays: &[VisibilityRay],
+        groups: &[RayGroup],
+        beside: impl FnOnce(&[RayGroup], &[VisibilityRay]) -> T + Send,
+    ) -> (Arrangement, T) {
         let v = map.vertices();
-        let n = v.len();
         let mut pts = Points::new();
         for &p in v {
             pts.intern(RatPoint::from(p));
@@ -547,7 +561,7 @@ impl Arrangement {
             }
         }
         let ends: Vec<VertexId> = rays.iter().map(|r| pts.ray_end(r)).collect();
-        let mut on_line: Vec<Vec<VertexId>> = groups
+        let on_line: Vec<Vec<VertexId>> = groups
             .iter()
             .map(|grp| {
                 let mut ids = Vec::new();
@@ -599,6 +613,32 @@ impl Arrangement {
             };
             Some((i, j, x))
         });
+        let found = Found {
+            pts,
+            group_of,
+            ends,
+            on_line,
+            crossings,
+        };
+        rayon::join(
+            || Arrangement::link(map, rays, groups, found),
+            || beside(groups, rays),
+        )
+    }
+
+    /// The second half of [`Arrangement::assemble`]: every point stored
+    /// once, the edges along each line and map edge, the half-edges
+    /// linked around each vertex, the faces traced.
+    fn link(map: &Map, rays: &[VisibilityRay], groups: &[RayGroup], found: Found) -> Arrangement {
+        let v = map.vertices();
+        let n = v.len();
+        let Found {
+            mut pts,
+            group_of,
+            ends,
+            mut on_line,
+            crossings,
+        } = found;
         pts.reserve(crossings.len());
         let mut more = vec![0usize; groups.len()];
         for &(i, j, _) in &crossings {
