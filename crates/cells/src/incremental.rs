@@ -484,8 +484,8 @@ impl<'a> Walker<'a> {
         lines: Vec<LineView>,
     ) -> Self {
         debug_assert_eq!(lines.len(), arr.ray_groups().len(), "a line per ray group");
-        let topo = Topology::new(arr, &lines);
-        let order = breadth_first(arr, &topo);
+        // The order reads the arrangement itself, beside the topology.
+        let (topo, order) = rayon::join(|| Topology::new(arr, &lines), || breadth_first(arr));
         let n = map.vertices().len();
         Walker {
             order,
@@ -1173,7 +1173,7 @@ impl<'a> Walker<'a> {
 /// The cells in breadth-first order across ray edges, from each cell
 /// not yet reached (the interior of the map is connected and cells
 /// meet across ray edges, so the first one reaches all).
-fn breadth_first(arr: &Arrangement, topo: &Topology) -> Vec<FaceId> {
+fn breadth_first(arr: &Arrangement) -> Vec<FaceId> {
     let mut seen = vec![false; arr.face_count()];
     let mut order = Vec::with_capacity(arr.face_count());
     for start in arr.cells() {
@@ -1186,9 +1186,9 @@ fn breadth_first(arr: &Arrangement, topo: &Topology) -> Vec<FaceId> {
         while i < order.len() {
             let f = order[i];
             i += 1;
-            for h in topo.cycle(f) {
-                if topo.line(h / 2).is_some() {
-                    let other = topo.face(h ^ 1);
+            for h in arr.face_cycle(f) {
+                if let Support::Rays(_) = arr.edge_support(h / 2) {
+                    let other = arr.half_edge(h ^ 1).face;
                     if other != arr.outer_face() && !seen[other] {
                         seen[other] = true;
                         order.push(other);
