@@ -33,8 +33,11 @@
 //!
 //! # Invariant
 //! No floating point is read or written: every decision is a `wai_exact`
-//! predicate on integer map vertices, and every constructed point is an
-//! exact [`wai_exact::RatPoint`].
+//! predicate on integer map vertices or, for maps whose coordinates are
+//! below 2^30, the same sign computed in `i64`/`i128` with its bound proven
+//! where it is used (the `small` module; the scaling tests compare both
+//! paths), and every constructed point is an exact
+//! [`wai_exact::RatPoint`].
 
 mod arrangement;
 mod assignment;
