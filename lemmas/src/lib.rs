@@ -17,8 +17,8 @@
 //!   `driver`, not a claim's module.
 //! - One module per claim, named after the claim's id in lower case with `.`
 //!   replaced by `_` ([`Claim::module_name`]): [`l3_1a`], [`l3_1b`],
-//!   [`l3_1c`], [`d3_5`], [`t3_2`], [`t3_3a`], [`t3_3b`], [`a3_6`], [`t3_9a`] so
-//!   far; `t4_2.rs`, `t5_17.rs`,
+//!   [`l3_1c`], [`d3_5`], [`t3_2`], [`t3_3a`], [`t3_3b`], [`a3_6`], [`l3_5`],
+//!   [`l3_7`], [`t3_9a`] so far; `t4_2.rs`, `t5_17.rs`,
 //!   `l3_7t.rs`, … to come. Each module
 //!   - opens with a doc comment that states the claim in our own words and
 //!     cites the thesis (`/// Claim T4.2 (Theorem 4.2).`),
@@ -47,6 +47,8 @@ pub mod driver;
 pub mod l3_1a;
 pub mod l3_1b;
 pub mod l3_1c;
+pub mod l3_5;
+pub mod l3_7;
 pub mod ratio;
 pub mod sample;
 pub mod study;
@@ -258,13 +260,15 @@ pub static CLAIMS: &[Claim] = &[
         Exact,
         "Lemma 3.5",
         "A point with skeleton V* lies in the kernel of exactly one embedding of V*.",
-    ),
+    )
+    .checked(l3_5::checker),
     c(
         "L3.7",
         Exact,
         "Lemma 3.7",
         "A skeleton has at most r embeddings, valid or not.",
-    ),
+    )
+    .checked(l3_7::checker),
     c(
         "C3.8",
         Exact,

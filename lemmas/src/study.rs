@@ -4,15 +4,18 @@
 //!
 //! map → visibility index → decomposition (rays, arrangement, the skeleton
 //! of every cell of every dimension, classes) → sampled visibility
-//! polygons. Later chapters add their structures here (embeddings,
-//! candidate edges), so a stress run builds each once per map.
+//! polygons; → the embeddings of every class's skeleton (Def 3.11) with
+//! their candidate edges and kernels. Later chapters add their structures
+//! here, so a stress run builds each once per map.
 
 use std::cell::{OnceCell, RefCell};
 use std::collections::BTreeMap;
 use std::rc::Rc;
 
 use wai_cells::{Arrangement, Decomposition, VisibilityRay};
+use wai_embed::{Embedder, Embedding};
 use wai_map::Map;
+use wai_visibility::ConvexRegion;
 use wai_visibility::{VisibilityIndex, VisibilityPolygon};
 
 use crate::sample;
@@ -24,6 +27,16 @@ pub struct Study<'m> {
     decomposition: OnceCell<Decomposition<'m>>,
     /// By sample limit: V_p of [`sample::viewpoints`]`(map, limit)`.
     polygons: RefCell<BTreeMap<usize, Rc<Vec<VisibilityPolygon>>>>,
+    /// By class of the decomposition: its skeleton's embeddings.
+    embeddings: OnceCell<Vec<Vec<Embedded>>>,
+}
+
+/// An embedding of a class's skeleton (Def 3.11) and its kernel
+/// h(ker V*) (Def 3.12), in map coordinates.
+#[derive(Debug, Clone)]
+pub struct Embedded {
+    pub embedding: Embedding,
+    pub kernel: ConvexRegion,
 }
 
 impl<'m> Study<'m> {
@@ -34,6 +47,7 @@ impl<'m> Study<'m> {
             index: OnceCell::new(),
             decomposition: OnceCell::new(),
             polygons: RefCell::new(BTreeMap::new()),
+            embeddings: OnceCell::new(),
         }
     }
 
@@ -61,6 +75,29 @@ impl<'m> Study<'m> {
     /// The visibility rays (Def 3.8).
     pub fn rays(&self) -> &[VisibilityRay] {
         self.decomposition().rays()
+    }
+
+    /// By class of the decomposition (its index in
+    /// [`Decomposition::skeletons`]): every embedding of its skeleton in
+    /// the map, by ascending h(v0), with its kernel.
+    pub fn embeddings(&self) -> &[Vec<Embedded>] {
+        self.embeddings.get_or_init(|| {
+            let embedder = Embedder::new(self.map);
+            self.decomposition()
+                .skeletons()
+                .iter()
+                .map(|key| {
+                    embedder
+                        .embeddings(key)
+                        .into_iter()
+                        .map(|embedding| Embedded {
+                            kernel: embedding.kernel(self.map),
+                            embedding,
+                        })
+                        .collect()
+                })
+                .collect()
+        })
     }
 
     /// V_p of each of [`sample::viewpoints`]`(map, limit)`, by the

@@ -7,8 +7,8 @@ use wai_lemmas::{claim, claims_without_checker, Kind, Status, CLAIMS};
 /// Claims whose checker module has landed. Add an id here when its row in
 /// `CLAIMS` becomes `Status::Checker`.
 const WITH_CHECKER: &[&str] = &[
-    "L3.1a", "L3.1b", "L3.1c", "D3.5", "T3.2", "T3.3a", "T3.3b", "A3.6", "T3.9a", "T3.9b", "T3.10",
-    "T5.17",
+    "L3.1a", "L3.1b", "L3.1c", "D3.5", "T3.2", "T3.3a", "T3.3b", "A3.6", "L3.5", "L3.7", "T3.9a",
+    "T3.9b", "T3.10", "T5.17",
 ];
 
 /// The (id, kind) of every row of every table of `CLAIMS.md` whose header's

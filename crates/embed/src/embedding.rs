@@ -1,0 +1,182 @@
+//! Def 3.11: the embeddings of a skeleton in a map, and the candidate
+//! edges of their artificial edges.
+
+use crate::sight::EdgeSight;
+use std::collections::HashMap;
+use std::sync::OnceLock;
+use wai_exact::Point;
+use wai_map::Map;
+use wai_visibility::{kernel_of_ring, ConvexRegion, LineLabel, SkeletonKey, VisibilityIndex};
+
+/// An embedding h of a skeleton V* in the map (Def 3.11): where each
+/// vertex of V* lands, and the candidate edges of each artificial edge.
+///
+/// h is a translation, fixed by the image of the origin v0 (the proof of
+/// Lemma 3.7): `h(p) = p + h(v0)` in the skeleton's coordinates, whose
+/// origin is v0.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Embedding {
+    /// The map vertex h(v0).
+    pub origin: usize,
+    /// By skeleton vertex, in the key's order (counter-clockwise from
+    /// v0): the map vertex h(v).
+    pub vertices: Vec<usize>,
+    /// By skeleton edge (from vertex i to i + 1): for an artificial edge,
+    /// its candidate edges in h (map edge ids, ascending: never empty);
+    /// for a full edge, empty.
+    pub candidates: Vec<Vec<usize>>,
+}
+
+impl Embedding {
+    /// The embedded skeleton polygon h(V◇): the map points of its
+    /// vertices, counter-clockwise from h(v0).
+    pub fn polygon(&self, map: &Map) -> Vec<Point> {
+        self.vertices.iter().map(|&m| map.vertices()[m]).collect()
+    }
+
+    /// The embedded kernel h(ker V*) (Def 3.12): the kernel of h(V◇),
+    /// which h, a translation, carries from ker V*.
+    pub fn kernel(&self, map: &Map) -> ConvexRegion {
+        kernel_of_ring(&self.polygon(map))
+    }
+}
+
+/// Finds the embeddings of skeletons in one map: the map's vertices by
+/// position, its edges by line, and the view from each map vertex,
+/// computed when first needed.
+#[derive(Debug)]
+pub struct Embedder<'m> {
+    map: &'m Map,
+    index: VisibilityIndex<'m>,
+    /// Map vertex by position.
+    at: HashMap<Point, usize>,
+    /// Map edges by their line, labelled relative to (0, 0).
+    on_line: HashMap<LineLabel, Vec<usize>>,
+    /// By map vertex: `VisibilityIndex::vertex_view`.
+    views: Vec<OnceLock<Vec<(usize, usize)>>>,
+}
+
+/// The embeddings of skeleton `key` in `map` (Def 3.11), by ascending
+/// map vertex h(v0). See [`Embedder::embeddings`].
+pub fn embeddings(map: &Map, key: &SkeletonKey) -> Vec<Embedding> {
+    Embedder::new(map).embeddings(key)
+}
+
+impl<'m> Embedder<'m> {
+    pub fn new(map: &'m Map) -> Embedder<'m> {
+        let v = map.vertices();
+        let n = v.len();
+        let mut on_line: HashMap<LineLabel, Vec<usize>> = HashMap::new();
+        let zero = Point::new(0, 0);
+        for e in 0..n {
+            let label = LineLabel::through(v[e], v[(e + 1) % n], zero);
+            on_line.entry(label).or_default().push(e);
+        }
+        Embedder {
+            map,
+            index: VisibilityIndex::new(map),
+            at: v.iter().enumerate().map(|(i, &p)| (p, i)).collect(),
+            on_line,
+            views: (0..n).map(|_| OnceLock::new()).collect(),
+        }
+    }
+
+    /// Every embedding of `key`, by ascending h(v0): one per map vertex at
+    /// which conditions 1–3 of Def 3.11 hold.
+    ///
+    /// # Edge cases
+    /// - Every map vertex is tried as h(v0), reflex or not: Def 3.11 does
+    ///   not ask for a reflex one (Lemma 3.7's bound r is for the claim's
+    ///   checker to confirm).
+    /// - Condition 2 is an "if and only if": a map edge between the images
+    ///   of two skeleton vertices that are not joined by a full edge rules
+    ///   the placement out.
+    pub fn embeddings(&self, key: &SkeletonKey) -> Vec<Embedding> {
+        (0..self.map.n())
+            .filter_map(|o| self.embedding_at(key, o))
+            .collect()
+    }
+
+    /// The embedding of `key` with h(v0) at map vertex `origin`, if
+    /// conditions 1–3 of Def 3.11 hold there.
+    pub fn embedding_at(&self, key: &SkeletonKey, origin: usize) -> Option<Embedding> {
+        let v = self.map.vertices();
+        let n = v.len();
+        let o = v[origin];
+        let k = key.offsets.len();
+        // 1. Each vertex lands on a map vertex (a translation is injective).
+        let vertices: Vec<usize> = key
+            .offsets
+            .iter()
+            .map(|&(dx, dy)| {
+                let p = Point::new(o.x.checked_add(dx)?, o.y.checked_add(dy)?);
+                self.at.get(&p).copied()
+            })
+            .collect::<Option<_>>()?;
+        // 2. Full edges are exactly the map edges among the images.
+        let image: HashMap<usize, usize> =
+            vertices.iter().enumerate().map(|(i, &m)| (m, i)).collect();
+        let full = |i: usize| key.labels[i].is_none();
+        for i in 0..k {
+            let j = (i + 1) % k;
+            let adjacent =
+                vertices[j] == (vertices[i] + 1) % n || vertices[i] == (vertices[j] + 1) % n;
+            if full(i) != adjacent {
+                return None;
+            }
+            for m in [(vertices[i] + 1) % n, (vertices[i] + n - 1) % n] {
+                if let Some(&j) = image.get(&m) {
+                    let joined = (j == (i + 1) % k && full(i)) || (i == (j + 1) % k && full(j));
+                    if !joined {
+                        return None;
+                    }
+                }
+            }
+        }
+        // 3. Each artificial edge has a candidate edge.
+        let mut candidates = vec![Vec::new(); k];
+        for i in 0..k {
+            let Some(label) = &key.labels[i] else {
+                continue;
+            };
+            let (a, b) = (vertices[i], vertices[(i + 1) % k]);
+            candidates[i] = self.candidates(label, o, a, b);
+            if candidates[i].is_empty() {
+                return None;
+            }
+        }
+        Some(Embedding {
+            origin,
+            vertices,
+            candidates,
+        })
+    }
+
+    /// The map edges on the line `label` (relative to `o`) with a point
+    /// that map vertices `a` and `b` both see, ascending.
+    fn candidates(&self, label: &LineLabel, o: Point, a: usize, b: usize) -> Vec<usize> {
+        // The same line relative to (0, 0): a·x + b·y = c + a·o.x + b·o.y,
+        // still in lowest terms (the gcd of a and b divides the change).
+        let absolute = LineLabel {
+            a: label.a.clone(),
+            b: label.b.clone(),
+            c: label.c.clone() + &label.a * o.x + &label.b * o.y,
+        };
+        let Some(edges) = self.on_line.get(&absolute) else {
+            return Vec::new();
+        };
+        edges
+            .iter()
+            .copied()
+            .filter(|&e| {
+                let sight = |y: usize| EdgeSight::of(self.map, self.view(y), y, e);
+                sight(a).meets(&sight(b))
+            })
+            .collect()
+    }
+
+    /// The view from map vertex `y`.
+    fn view(&self, y: usize) -> &[(usize, usize)] {
+        self.views[y].get_or_init(|| self.index.vertex_view(y))
+    }
+}

@@ -1,0 +1,24 @@
+//! Embeddings of visibility skeletons (thesis sec. 3.7, Def 3.11).
+//!
+//! A skeleton V* fits the map wherever its vertices, translated so that
+//! its origin v0 lands on a map vertex, are map vertices (condition 1), its
+//! full edges are exactly the map edges among them (condition 2), and each
+//! artificial edge has a **candidate edge**: a map edge on the translated
+//! label line with a point that both ends of the artificial edge see
+//! (condition 3). [`embeddings`] finds every such placement of a
+//! [`SkeletonKey`] in a map, exactly.
+//!
+//! Seeing follows sec. 2.2 as the rest of the workspace reads it: two
+//! points see each other when the closed segment between them meets the
+//! boundary only at its ends and runs through the map; a point sees itself.
+//! [`EdgeSight`] is the part of a map edge a map vertex sees.
+//!
+//! # Invariant
+//! No floating point: positions along edges are GMP rationals, every sign
+//! an exact integer predicate.
+
+mod embedding;
+mod sight;
+
+pub use embedding::{embeddings, Embedder, Embedding};
+pub use sight::EdgeSight;

@@ -1,0 +1,2 @@
+mod embeddings;
+mod sight;
