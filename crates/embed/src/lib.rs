@@ -6,7 +6,7 @@
 //! artificial edge has a **candidate edge**: a map edge on the translated
 //! label line with a point that both ends of the artificial edge see
 //! (condition 3). [`embeddings`] finds every such placement of a
-//! [`SkeletonKey`] in a map, exactly.
+//! [`wai_visibility::SkeletonKey`] in a map, exactly.
 //!
 //! Seeing follows sec. 2.2 as the rest of the workspace reads it: two
 //! points see each other when the closed segment between them meets the
