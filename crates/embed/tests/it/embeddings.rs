@@ -2,28 +2,11 @@
 //! for every cell, with the cell's own map edges among the candidates;
 //! Lemma 3.7's bound; the corridor of niches; broken keys embed nowhere.
 
+use crate::common::maps;
 use std::collections::BTreeSet;
 use wai_cells::Decomposition;
 use wai_embed::{embeddings, Embedder};
-use wai_map::Map;
 use wai_visibility::{LineLabel, Skeleton, SkeletonEdge, SkeletonKey, VisibilityIndex};
-
-fn maps() -> Vec<Map> {
-    let mut maps = Vec::new();
-    for kind in wai_gen::RANDOM_KINDS {
-        for seed in 0..3 {
-            maps.push(wai_gen::random(kind.id, 18, seed).unwrap());
-        }
-    }
-    for (family, p) in [
-        ("corridor-niches", 3),
-        ("overlap-fan", 0),
-        ("comb-convex-chain", 3),
-    ] {
-        maps.push(wai_gen::family(family, &[p]).unwrap());
-    }
-    maps
-}
 
 /// Lemma 3.4: the skeleton of every cell embeds at the cell's own origin,
 /// placing each vertex on the map vertex it came from, and each artificial
@@ -32,7 +15,7 @@ fn maps() -> Vec<Map> {
 #[test]
 fn every_cell_embeds_at_its_own_origin() {
     let mut examined = 0;
-    for m in maps() {
+    for m in maps(18, 3) {
         let d = Decomposition::new(&m);
         let index = VisibilityIndex::new(&m);
         let embedder = Embedder::new(&m);

@@ -79,19 +79,7 @@ fn meets_needs_a_common_point() {
 #[test]
 fn agrees_with_sees_on_every_vertex_and_edge() {
     use wai_exact::{sees, RatPoint, Sight};
-    let mut maps = Vec::new();
-    for kind in wai_gen::RANDOM_KINDS {
-        for seed in 0..3 {
-            maps.push(wai_gen::random(kind.id, 16, seed).unwrap());
-        }
-    }
-    for (family, p) in [
-        ("corridor-niches", 2),
-        ("overlap-fan", 0),
-        ("comb-convex-chain", 2),
-    ] {
-        maps.push(wai_gen::family(family, &[p]).unwrap());
-    }
+    let maps = crate::common::maps(16, 2);
     let mut examined = 0usize;
     for m in &maps {
         let v = m.vertices();
