@@ -303,7 +303,7 @@ pub(crate) struct Walker<'a> {
     /// By map edge, for maps on the `i64` paths: [`EdgeTurns`].
     turns: Option<EdgeTurns>,
     /// The cells in the order the walk splits into parts
-    /// ([`Walker::breadth_first`]).
+    /// ([`breadth_first`]).
     order: Vec<FaceId>,
 }
 
@@ -824,11 +824,10 @@ impl<'a> Walker<'a> {
     ) {
         out.clear();
         if let [(g, slot)] = lines {
-            // One line: base minus its vertices, merged with those seen on
-            // it; all three ascending.
-            // The vertices seen on the line are some of its vertices, and
-            // off it Vis is unchanged: base is copied in stretches between
-            // the line's vertices, which are those seen now.
+            // One line: base minus its vertices, with those seen on it, all
+            // ascending. The vertices seen are some of the line's vertices,
+            // and off the line Vis is unchanged: base is copied in stretches
+            // between the line's vertices, each taken if seen now.
             let line = &self.lines[*g];
             let on = line.vertices();
             seen.clear();
@@ -1264,7 +1263,7 @@ fn common_prefix(a: &[u32], b: &[u32]) -> usize {
 
 /// `(i + 1) mod k` for `i < k`, without a division (hot loops).
 #[inline]
-fn next(i: usize, k: usize) -> usize {
+pub(crate) fn next(i: usize, k: usize) -> usize {
     if i + 1 == k {
         0
     } else {

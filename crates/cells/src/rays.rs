@@ -1,5 +1,6 @@
 //! Visibility rays (Def 3.8), exactly.
 
+use crate::incremental::next;
 use crate::small::SmallCoords;
 use rayon::prelude::*;
 use rug::Integer;
@@ -339,7 +340,7 @@ impl Vertices<'_> {
             None => {
                 let n = self.v.len();
                 let edge = |k: usize| {
-                    Line::new(self.v[k], self.v[next_of(k, n)]).expect("map vertices are distinct")
+                    Line::new(self.v[k], self.v[next(k, n)]).expect("map vertices are distinct")
                 };
                 compare_intersections_along(line, &edge(k), &edge(b))
                     .expect("crossing edges are not parallel to the ray")
@@ -428,17 +429,7 @@ fn visible(at: Vertices<'_>, line: &Line, sides: &[Side], a: usize, j: usize) ->
                 at.orientation(k0, k1, a).into(),
             )
     };
-    !(0..n).any(|k| (sides[k] == Side::On && between(k)) || crosses(k, next_of(k, n)))
-}
-
-/// `(k + 1) mod n` for `k < n`.
-#[inline]
-fn next_of(k: usize, n: usize) -> usize {
-    if k + 1 == n {
-        0
-    } else {
-        k + 1
-    }
+    !(0..n).any(|k| (sides[k] == Side::On && between(k)) || crosses(k, next(k, n)))
 }
 
 /// For an edge `p → q` whose endpoints lie strictly on opposite sides of a
@@ -479,8 +470,7 @@ fn shoot(at: Vertices<'_>, line: Line, sides: &[Side], a: usize, j: usize) -> Vi
     for (u, &s) in sides.iter().enumerate() {
         if s == Side::On
             && compare_along(&line, v[a], v[u]) == Ordering::Less
-            && nearest
-                .is_none_or(|k| before_crossing(at, k, next_of(k, n), sides[next_of(k, n)], u))
+            && nearest.is_none_or(|k| before_crossing(at, k, next(k, n), sides[next(k, n)], u))
         {
             on_ray.push(u);
         }

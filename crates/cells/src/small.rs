@@ -87,19 +87,29 @@ impl SmallCoords {
     /// in `i128`.
     pub(crate) fn compare_crossings(&self, (j, a): (usize, usize), k: usize, b: usize) -> Ordering {
         let s = &self.0;
-        let n = s.len();
         let (p, d) = (s[j], sub(s[a], s[j]));
         let t = |k: usize| {
-            let (e, f) = (s[k], sub(s[(k + 1) % n], s[k]));
-            let (num, den) = (cross(sub(e, p), f), cross(d, f));
-            if den < 0 {
-                (-i128::from(num), -i128::from(den))
-            } else {
-                (i128::from(num), i128::from(den))
-            }
+            let (num, den) = self.crossing(p, d, k);
+            (i128::from(num), i128::from(den))
         };
         let ((n1, e1), (n2, e2)) = (t(k), t(b));
         (n1 * e2).cmp(&(n2 * e1))
+    }
+
+    /// Where the line `p + t·d` meets the line of map edge `k` (from `e`,
+    /// direction `f`): `t = cross(e − p, f) / cross(d, f)` as
+    /// `(numerator, denominator)`, denominator positive, both below `2^63`
+    /// for `p` a map vertex and `d` a difference of map vertices. The edge
+    /// must not be parallel to `d`.
+    fn crossing(&self, p: [i64; 2], d: [i64; 2], k: usize) -> (i64, i64) {
+        let s = &self.0;
+        let (e, f) = (s[k], sub(s[(k + 1) % s.len()], s[k]));
+        let (num, den) = (cross(sub(e, p), f), cross(d, f));
+        if den < 0 {
+            (-num, -den)
+        } else {
+            (num, den)
+        }
     }
 
     /// By map vertex, the sign of `d × (v − v_from)`: `Greater` left of the
@@ -133,23 +143,13 @@ impl SmallCoords {
     /// Ray `r` as a [`Span`].
     pub(crate) fn span(&self, r: &VisibilityRay) -> Span {
         let s = &self.0;
-        let n = s.len();
         let a = s[r.anchor];
         let d = sub(a, s[r.from]);
         // The end a + (p/q)·d, q > 0.
         let (p, q) = match r.end.on_map {
             // On the line: the ratio of projections onto d.
             OnMap::Vertex(u) => (dot(sub(s[u], a), d), dot(d, d)),
-            // As in `compare_crossings`, from a.
-            OnMap::Edge(k) => {
-                let f = sub(s[(k + 1) % n], s[k]);
-                let (num, den) = (cross(sub(s[k], a), f), cross(d, f));
-                if den < 0 {
-                    (-num, -den)
-                } else {
-                    (num, den)
-                }
-            }
+            OnMap::Edge(k) => self.crossing(a, d, k),
         };
         Span { a, d, p, q }
     }
