@@ -11,6 +11,7 @@ use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion, Through
 use std::time::Duration;
 use wai_cells::Decomposition;
 use wai_embed::Embedder;
+use wai_visibility::VisibilityIndex;
 
 fn bench(c: &mut Criterion) {
     let maps = [
@@ -31,7 +32,8 @@ fn bench(c: &mut Criterion) {
     for (name, param, map) in &maps {
         let keys = Decomposition::new(map).skeletons().to_vec();
         let total: usize = {
-            let e = Embedder::new(map);
+            let index = VisibilityIndex::new(map);
+            let e = Embedder::new(&index);
             keys.iter().map(|k| e.embeddings(k).len()).sum()
         };
         eprintln!(
@@ -42,7 +44,8 @@ fn bench(c: &mut Criterion) {
         g.throughput(Throughput::Elements(keys.len() as u64));
         g.bench_with_input(BenchmarkId::new(*name, *param), map, |b, m| {
             b.iter(|| {
-                let e = Embedder::new(m);
+                let index = VisibilityIndex::new(m);
+                let e = Embedder::new(&index);
                 keys.iter()
                     .map(|k| {
                         e.embeddings(k)

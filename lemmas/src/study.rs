@@ -15,8 +15,7 @@ use std::rc::Rc;
 use wai_cells::{Arrangement, Decomposition, VisibilityRay};
 use wai_embed::{Embedder, Embedding};
 use wai_map::Map;
-use wai_visibility::ConvexRegion;
-use wai_visibility::{VisibilityIndex, VisibilityPolygon};
+use wai_visibility::{ConvexRegion, VisibilityIndex, VisibilityPolygon};
 
 use crate::sample;
 
@@ -82,7 +81,7 @@ impl<'m> Study<'m> {
     /// the map, by ascending h(v0), with its kernel.
     pub fn embeddings(&self) -> &[Vec<Embedded>] {
         self.embeddings.get_or_init(|| {
-            let embedder = Embedder::new(self.map);
+            let embedder = Embedder::new(self.index());
             self.decomposition()
                 .skeletons()
                 .iter()

@@ -43,11 +43,12 @@ impl Embedding {
 
 /// Finds the embeddings of skeletons in one map: the map's vertices by
 /// position, its edges by line, and the view from each map vertex,
-/// computed when first needed.
+/// computed when first needed from the map's visibility index (shared
+/// with whoever built it).
 #[derive(Debug)]
-pub struct Embedder<'m> {
-    map: &'m Map,
-    index: VisibilityIndex<'m>,
+pub struct Embedder<'a> {
+    map: &'a Map,
+    index: &'a VisibilityIndex<'a>,
     /// Map vertex by position.
     at: HashMap<Point, usize>,
     /// Map edges by their line, labelled relative to (0, 0).
@@ -59,11 +60,13 @@ pub struct Embedder<'m> {
 /// The embeddings of skeleton `key` in `map` (Def 3.11), by ascending
 /// map vertex h(v0). See [`Embedder::embeddings`].
 pub fn embeddings(map: &Map, key: &SkeletonKey) -> Vec<Embedding> {
-    Embedder::new(map).embeddings(key)
+    Embedder::new(&VisibilityIndex::new(map)).embeddings(key)
 }
 
-impl<'m> Embedder<'m> {
-    pub fn new(map: &'m Map) -> Embedder<'m> {
+impl<'a> Embedder<'a> {
+    /// The embedder of the map of `index`.
+    pub fn new(index: &'a VisibilityIndex<'a>) -> Embedder<'a> {
+        let map = index.map();
         let v = map.vertices();
         let n = v.len();
         let mut on_line: HashMap<LineLabel, Vec<usize>> = HashMap::new();
@@ -74,7 +77,7 @@ impl<'m> Embedder<'m> {
         }
         Embedder {
             map,
-            index: VisibilityIndex::new(map),
+            index,
             at: v.iter().enumerate().map(|(i, &p)| (p, i)).collect(),
             on_line,
             views: (0..n).map(|_| OnceLock::new()).collect(),

@@ -18,7 +18,7 @@ fn every_cell_embeds_at_its_own_origin() {
     for m in maps(18, 3) {
         let d = Decomposition::new(&m);
         let index = VisibilityIndex::new(&m);
-        let embedder = Embedder::new(&m);
+        let embedder = Embedder::new(&index);
         for &c in d.cells() {
             let vp = index.visibility_polygon(d.representative(c)).unwrap();
             let sk = Skeleton::of(&m, &vp).unwrap();
