@@ -16,6 +16,7 @@
 //! (CLAIMS.md, "What a checker reports"; STYLE.md 6).
 
 use std::borrow::Borrow;
+use std::collections::BTreeMap;
 use std::fmt;
 
 use wai_map::Map;
@@ -62,6 +63,10 @@ pub struct Report {
     /// The examined instances that broke the claim; never more than
     /// `examined`.
     pub violations: Vec<Violation>,
+    /// Further named counts a checker keeps beside `examined` (how many
+    /// verdicts a second method cross-checked, how many instances met a
+    /// stronger premise…); the driver sums them by name.
+    pub counts: BTreeMap<&'static str, u64>,
 }
 
 impl Report {
@@ -71,7 +76,13 @@ impl Report {
             claim,
             examined: 0,
             violations: Vec::new(),
+            counts: BTreeMap::new(),
         }
+    }
+
+    /// Adds `by` to the named count `name`.
+    pub fn count(&mut self, name: &'static str, by: u64) {
+        *self.counts.entry(name).or_default() += by;
     }
 
     /// Counts one examined instance, which holds if `violation` is `None`.
@@ -85,6 +96,9 @@ impl Report {
         debug_assert_eq!(self.claim, other.claim, "reports of one claim");
         self.examined += other.examined;
         self.violations.extend(other.violations);
+        for (name, by) in other.counts {
+            self.count(name, by);
+        }
     }
 }
 
@@ -128,6 +142,8 @@ pub struct ClaimTally {
     pub examined: u64,
     /// Every violation found.
     pub violations: Vec<FoundViolation>,
+    /// The checkers' further counts ([`Report::counts`]), summed.
+    pub counts: BTreeMap<&'static str, u64>,
 }
 
 /// The outcome of [`run`].
@@ -182,13 +198,19 @@ impl fmt::Display for Summary {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         writeln!(f, "{} maps", self.maps)?;
         for t in &self.tallies {
-            writeln!(
+            write!(
                 f,
                 "{}: examined {}, violations {}",
                 t.claim,
                 t.examined,
                 t.violations.len()
             )?;
+            if !t.counts.is_empty() {
+                let counts: Vec<String> =
+                    t.counts.iter().map(|(k, v)| format!("{k} {v}")).collect();
+                write!(f, " ({})", counts.join(", "))?;
+            }
+            writeln!(f)?;
         }
         for v in self.violations() {
             writeln!(
@@ -239,6 +261,7 @@ pub fn run<M: Borrow<Map>>(
                 claim: id,
                 examined: 0,
                 violations: Vec::new(),
+                counts: BTreeMap::new(),
             });
         }
     }
@@ -266,6 +289,9 @@ pub fn run<M: Borrow<Map>>(
                 .find(|t| t.claim == id)
                 .expect("every checker's claim has a tally");
             tally.examined += report.examined;
+            for (name, by) in &report.counts {
+                *tally.counts.entry(name).or_default() += by;
+            }
             if !report.violations.is_empty() {
                 let map_json = wai_map::json::to_json(map);
                 tally
@@ -457,6 +483,7 @@ mod tests {
                 claim: "T4.2",
                 examined: 0,
                 violations: vec![Violation::new("planted")],
+                counts: BTreeMap::new(),
             }
         }
     }

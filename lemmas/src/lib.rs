@@ -14,12 +14,14 @@
 //! - [`driver`]: [`Checker`], [`Report`], [`Violation`], [`run`], [`Summary`].
 //! - [`sample`]: the viewpoints and visibility polygons the chapter 3
 //!   checkers examine, and Def 3.4 read off a polygon's geometry. Like
-//!   `driver`, not a claim's module.
+//!   `driver`, not a claim's module; nor are [`ratio`] (the bound checkers'
+//!   ratios), [`study`] (the structures built once per map) and [`family`]
+//!   (which maps are a thesis family, for the `tight` checkers).
 //! - One module per claim, named after the claim's id in lower case with `.`
 //!   replaced by `_` ([`Claim::module_name`]): [`l3_1a`], [`l3_1b`],
 //!   [`l3_1c`], [`d3_5`], [`t3_2`], [`t3_3a`], [`t3_3b`], [`a3_6`], [`l3_5`],
-//!   [`l3_7`], [`t3_9a`] so far; `t4_2.rs`, `t5_17.rs`,
-//!   `l3_7t.rs`, … to come. Each module
+//!   [`l3_7`], [`l3_7t`], [`t3_9a`], [`t3_9b`], [`t3_10`], [`l4_1`],
+//!   [`t4_2`], [`t4_3`], [`t5_17`] so far; `l4_5.rs`, … to come. Each module
 //!   - opens with a doc comment that states the claim in our own words and
 //!     cites the thesis (`/// Claim T4.2 (Theorem 4.2).`),
 //!   - has a `## Trust` paragraph: exhaustive or sampled, and what the verdict
@@ -44,11 +46,14 @@
 pub mod a3_6;
 pub mod d3_5;
 pub mod driver;
+pub mod family;
 pub mod l3_1a;
 pub mod l3_1b;
 pub mod l3_1c;
 pub mod l3_5;
 pub mod l3_7;
+pub mod l3_7t;
+pub mod l4_1;
 pub mod ratio;
 pub mod sample;
 pub mod study;
@@ -58,6 +63,8 @@ pub mod t3_3a;
 pub mod t3_3b;
 pub mod t3_9a;
 pub mod t3_9b;
+pub mod t4_2;
+pub mod t4_3;
 pub mod t5_17;
 
 pub use driver::{run, Checker, ClaimTally, FoundViolation, Report, Summary, Violation};
@@ -300,7 +307,8 @@ pub static CLAIMS: &[Claim] = &[
         Tight,
         "Lemma 3.7 (tightness), Fig 3.12",
         "A corridor of niches gives one skeleton Omega(r) embeddings.",
-    ),
+    )
+    .checked(l3_7t::checker),
     c(
         "T3.10",
         Bound,
@@ -326,19 +334,22 @@ pub static CLAIMS: &[Claim] = &[
         Tight,
         "Lemma 4.1",
         "Omega(r) embeddings of one skeleton can all overlap in one point.",
-    ),
+    )
+    .checked(l4_1::checker),
     c(
         "T4.2",
         Exact,
         "Theorem 4.2",
         "Witnesses of two different valid embeddings of one skeleton whose skeleton polygons overlap never see each other.",
-    ),
+    )
+    .checked(t4_2::checker),
     c(
         "T4.3",
         Exact,
         "Theorem 4.3",
         "Witnesses of two different valid embeddings of one skeleton whose kernels overlap never see each other.",
-    ),
+    )
+    .checked(t4_3::checker),
     c(
         "L4.5",
         Exact,

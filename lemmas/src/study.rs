@@ -13,7 +13,10 @@ use std::collections::BTreeMap;
 use std::rc::Rc;
 
 use wai_cells::{Arrangement, Decomposition, VisibilityRay};
-use wai_embed::{Embedder, Embedding};
+use wai_embed::{
+    interiors_overlap, overlapping_valid_pairs, witness_regions, Embedder, Embedding, Mutual, Pt,
+    Sightlines, Witnesses,
+};
 use wai_map::Map;
 use wai_visibility::{ConvexRegion, VisibilityIndex, VisibilityPolygon};
 
@@ -28,6 +31,27 @@ pub struct Study<'m> {
     polygons: RefCell<BTreeMap<usize, Rc<Vec<VisibilityPolygon>>>>,
     /// By class of the decomposition: its skeleton's embeddings.
     embeddings: OnceCell<Vec<Vec<Embedded>>>,
+    /// By class, by embedding: the witness regions (Def 4.1).
+    witnesses: OnceCell<Vec<Vec<Witnesses>>>,
+    sightlines: OnceCell<Sightlines<'m>>,
+    /// Every pair of valid embeddings of one skeleton whose skeleton
+    /// polygons overlap, with the verdict on their witnesses.
+    overlapping: OnceCell<Vec<OverlappingPair>>,
+}
+
+/// Two different valid embeddings of one skeleton whose embedded skeleton
+/// polygons overlap (the premise of Theorem 4.2), by class and position in
+/// [`Study::embeddings`], `a < b`.
+#[derive(Debug, Clone)]
+pub struct OverlappingPair {
+    pub class: usize,
+    pub a: usize,
+    pub b: usize,
+    /// Whether the embedded kernels overlap too (Theorem 4.3's premise).
+    pub kernels_overlap: bool,
+    /// Whether a witness of one sees a witness of the other, by
+    /// [`Sightlines::regions_by_lines`].
+    pub sight: Mutual,
 }
 
 /// An embedding of a class's skeleton (Def 3.11) and its kernel
@@ -47,6 +71,9 @@ impl<'m> Study<'m> {
             decomposition: OnceCell::new(),
             polygons: RefCell::new(BTreeMap::new()),
             embeddings: OnceCell::new(),
+            witnesses: OnceCell::new(),
+            sightlines: OnceCell::new(),
+            overlapping: OnceCell::new(),
         }
     }
 
@@ -96,6 +123,60 @@ impl<'m> Study<'m> {
                         .collect()
                 })
                 .collect()
+        })
+    }
+
+    /// By class and embedding (as [`Study::embeddings`]): the witness
+    /// region (Def 4.1), the class's cells at the embedding's own v0.
+    pub fn witnesses(&self) -> &[Vec<Witnesses>] {
+        self.witnesses.get_or_init(|| {
+            let d = self.decomposition();
+            self.embeddings()
+                .iter()
+                .enumerate()
+                .map(|(class, all)| {
+                    let hs: Vec<Embedding> = all.iter().map(|h| h.embedding.clone()).collect();
+                    witness_regions(d, class, &hs)
+                })
+                .collect()
+        })
+    }
+
+    /// The map prepared for exact mutual-visibility tests of regions.
+    pub fn sightlines(&self) -> &Sightlines<'m> {
+        self.sightlines.get_or_init(|| Sightlines::new(self.map))
+    }
+
+    /// Every pair of different valid embeddings of one skeleton whose
+    /// skeleton polygons overlap, with whether their kernels overlap and
+    /// whether their witnesses see each other.
+    pub fn overlapping_pairs(&self) -> &[OverlappingPair] {
+        self.overlapping.get_or_init(|| {
+            let mut out = Vec::new();
+            let witnesses = self.witnesses();
+            for (class, all) in self.embeddings().iter().enumerate() {
+                let ws = &witnesses[class];
+                let hs: Vec<Embedding> = all.iter().map(|h| h.embedding.clone()).collect();
+                for (a, b) in overlapping_valid_pairs(self.map, &hs, ws) {
+                    let kernel = |i: usize| -> Vec<Pt> {
+                        all[i].kernel.vertices().iter().map(Pt::from).collect()
+                    };
+                    let kernels_overlap = all[a].kernel.has_interior()
+                        && all[b].kernel.has_interior()
+                        && interiors_overlap(&kernel(a), &kernel(b));
+                    let sight = self
+                        .sightlines()
+                        .regions_by_lines(&ws[a].pieces(), &ws[b].pieces());
+                    out.push(OverlappingPair {
+                        class,
+                        a,
+                        b,
+                        kernels_overlap,
+                        sight,
+                    });
+                }
+            }
+            out
         })
     }
 

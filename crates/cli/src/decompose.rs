@@ -53,6 +53,20 @@ fn gib(bytes: u64) -> f64 {
     bytes as f64 / f64::from(1u32 << 30)
 }
 
+/// A progress bar on standard error: `what` before it, `unit` after the
+/// counts.
+pub(crate) fn progress_bar(what: &'static str, unit: &str) -> indicatif::ProgressBar {
+    let bar = indicatif::ProgressBar::new(0);
+    bar.set_style(
+        indicatif::ProgressStyle::with_template(&format!(
+            "{{msg}} {{bar:40}} {{pos}}/{{len}} {unit} ({{eta}})"
+        ))
+        .unwrap_or_else(|_| indicatif::ProgressStyle::default_bar()),
+    );
+    bar.set_message(what);
+    bar
+}
+
 pub struct Options<'a> {
     pub json: bool,
     pub svg: Option<&'a Path>,
@@ -67,14 +81,7 @@ pub fn decompose(path: &Path, opts: &Options<'_>, format: Format) -> Result<(), 
     let start = std::time::Instant::now();
     let rays = visibility_rays(map);
     check_memory(map, &rays, opts.force)?;
-    let bar = indicatif::ProgressBar::new(0);
-    bar.set_style(
-        indicatif::ProgressStyle::with_template(
-            "{msg} {bar:40} {pos}/{len} cells of every dimension ({eta})",
-        )
-        .unwrap_or_else(|_| indicatif::ProgressStyle::default_bar()),
-    );
-    bar.set_message("skeletons of cells");
+    let bar = progress_bar("skeletons of cells", "cells of every dimension");
     let d = Decomposition::from_rays(map, rays, &mut |done, total| {
         bar.set_length(total as u64);
         bar.set_position(done as u64);

@@ -2,14 +2,17 @@
 //!
 //! Subcommands: `demo` (the main job on the built-in default map), `gen`
 //! (generate a map of a thesis family or a random kind), `info` (validate a
-//! map and print its numbers), `vis` (V_p and V*_p of a viewpoint), `render`
-//! (draw a map as SVG).
+//! map and print its numbers), `vis` (V_p and V*_p of a viewpoint),
+//! `decompose` (the visibility cell decomposition), `embeddings` (the
+//! embeddings of each skeleton, witnesses, overlaps), `render` (draw a map
+//! as SVG).
 //!
 //! Exit codes: 0 success; 1 the map is invalid; 2 bad usage; 3 the file
 //! could not be read or written. Errors say what and where, never panic.
 
 mod commands;
 mod decompose;
+mod embeddings;
 mod input;
 mod vis;
 
@@ -90,6 +93,27 @@ enum Command {
         #[command(flatten)]
         format: input::FormatArg,
     },
+    /// The embeddings of each skeleton (Def 3.11): origin, witnesses and
+    /// validity (Def 4.1), candidate and valid candidate edges; the
+    /// overlapping valid pairs of one skeleton and whether their witnesses
+    /// see each other, decided exactly (Theorem 4.2).
+    Embeddings {
+        /// Map file (JSON map format or GeoJSON); `-` reads standard input.
+        map: PathBuf,
+        /// Only this class (an index printed by `wai decompose --json`).
+        #[arg(long)]
+        class: Option<usize>,
+        /// Print JSON instead of text.
+        #[arg(long)]
+        json: bool,
+        /// Draw the embedded skeletons, kernels, witnesses and candidate
+        /// edges of one class (--class, else the one with the most valid
+        /// embeddings) into this SVG file.
+        #[arg(long)]
+        svg: Option<PathBuf>,
+        #[command(flatten)]
+        format: input::FormatArg,
+    },
     /// Draw a map as SVG, reflex vertices marked.
     Render {
         /// Map file (JSON map format or GeoJSON); `-` reads standard input.
@@ -163,6 +187,21 @@ fn main() -> ExitCode {
                 svg: svg.as_deref(),
                 class,
                 force,
+            },
+            format.format,
+        ),
+        Command::Embeddings {
+            map,
+            class,
+            json,
+            svg,
+            format,
+        } => embeddings::embeddings(
+            &map,
+            &embeddings::Options {
+                class,
+                json,
+                svg: svg.as_deref(),
             },
             format.format,
         ),

@@ -32,7 +32,7 @@ pub fn parse_viewpoint(text: &str, map: &Map) -> Result<RatPoint, Failure> {
 }
 
 /// A point in the map's input units, as text.
-fn show(map: &Map, p: &RatPoint) -> String {
+pub(crate) fn show(map: &Map, p: &RatPoint) -> String {
     let den = Integer::from(p.hw() * map.scale());
     let c = |n: &Integer| format_exact(&Rational::from((n.clone(), den.clone())));
     format!("({}, {})", c(p.hx()), c(p.hy()))

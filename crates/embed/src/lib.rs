@@ -18,7 +18,18 @@
 //! an exact integer predicate.
 
 mod embedding;
+mod mutual;
+mod overlay;
+pub mod piece;
 mod sight;
+mod witness;
 
 pub use embedding::{embeddings, Embedder, Embedding};
+pub use mutual::{Mutual, Sightlines};
+pub use overlay::common_interior_point;
+pub use piece::{Piece, Pt};
 pub use sight::EdgeSight;
+pub use witness::{
+    interiors_overlap, overlapping_valid_pairs, piece_of, valid_candidate_edges, witness_regions,
+    CellRef, WitnessCell, Witnesses,
+};

@@ -20,6 +20,7 @@
 
 mod families;
 mod polyomino;
+mod repeated;
 mod ring;
 mod simple;
 mod special;
@@ -33,6 +34,7 @@ pub use families::{
 pub use polyomino::{
     exhaustive_polyomino_maps, has_simple_boundary, polyominoes, Cell, Polyomino, Symmetry,
 };
+pub use repeated::{repeated_niches, RepeatedLayout};
 pub use ring::{reflex_count, ring_problem};
 pub use strategies::{
     arb_map, arb_orthogonal_map, arb_polyomino, arb_simple_map, shrink_map, ArbMap,

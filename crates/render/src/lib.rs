@@ -423,3 +423,91 @@ fn class_colour(class: usize) -> String {
     let hue = (class as f64 * 137.508) % 360.0;
     format!("hsl({hue:.1}, 65%, 72%)")
 }
+
+/// One embedding of a skeleton to draw (sec. 3.7, Def 4.1): its embedded
+/// skeleton polygon, kernel, witness cells and candidate edges.
+#[derive(Clone, Debug)]
+pub struct EmbeddingDrawn {
+    /// The map vertex h(v0).
+    pub origin: usize,
+    /// h(V◇), counter-clockwise.
+    pub polygon: Vec<Point>,
+    /// h(ker V*): empty, a point, a segment or a polygon.
+    pub kernel: Vec<RatPoint>,
+    /// The witness cells: rings (2-cells), segments (1-cells), points.
+    pub witnesses: Vec<Vec<RatPoint>>,
+    /// The map edges that are candidate edges of its artificial edges,
+    /// with whether each is valid (seen by a witness).
+    pub candidate_edges: Vec<(usize, bool)>,
+}
+
+/// Draw the embeddings of one skeleton over its map, one hue each: the
+/// skeleton polygons outlined, kernels shaded, witness cells filled
+/// darker, candidate edges thick (solid if valid, dashed if not), each
+/// origin h(v0) marked.
+pub fn embeddings_svg(
+    map: &Map,
+    drawn: &[EmbeddingDrawn],
+    style: &MapStyle,
+    caption: &str,
+) -> String {
+    let mut c = Canvas::for_map(map, style.size);
+    c.polygon(map.vertices(), "#ffffff", "#1f3b73", 1.5);
+    let v = map.vertices();
+    let hue = |i: usize| (i as f64 * 137.508 + 200.0) % 360.0;
+    for (i, h) in drawn.iter().enumerate() {
+        let ring: Vec<RatPoint> = h.polygon.iter().map(|&p| RatPoint::from(p)).collect();
+        c.polygon_rat(
+            &ring,
+            &format!("hsla({:.1}, 60%, 70%, 0.15)", hue(i)),
+            &format!("hsl({:.1}, 60%, 40%)", hue(i)),
+            1.2,
+        );
+        if h.kernel.len() >= 3 {
+            c.polygon_rat(
+                &h.kernel,
+                &format!("hsla({:.1}, 60%, 60%, 0.35)", hue(i)),
+                "none",
+                0.0,
+            );
+        }
+    }
+    for (i, h) in drawn.iter().enumerate() {
+        let colour = format!("hsl({:.1}, 70%, 35%)", hue(i));
+        let title = format!("witness of the embedding at map vertex {}", h.origin);
+        for w in &h.witnesses {
+            match w.as_slice() {
+                [p] => c.dot_rat(p, 3.0, &colour, &title),
+                [a, b] => c.segment_rat(a, b, &colour, 3.0, "", &title),
+                ring => c.polygon_rat(ring, &colour, "none", 0.0),
+            }
+        }
+        for &(e, valid) in &h.candidate_edges {
+            let (a, b) = (RatPoint::from(v[e]), RatPoint::from(v[(e + 1) % v.len()]));
+            let what = if valid {
+                "valid candidate"
+            } else {
+                "candidate"
+            };
+            c.segment_rat(
+                &a,
+                &b,
+                &colour,
+                4.0,
+                if valid { "" } else { "6 4" },
+                &format!(
+                    "{what} edge {e} of the embedding at map vertex {}",
+                    h.origin
+                ),
+            );
+        }
+        c.dot(
+            v[h.origin],
+            4.0,
+            &colour,
+            &format!("h(v0) = map vertex {}", h.origin),
+        );
+    }
+    c.polygon(map.vertices(), "none", "#1f3b73", 1.5);
+    c.finish(map.name().unwrap_or("map"), caption)
+}

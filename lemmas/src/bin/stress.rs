@@ -5,11 +5,14 @@
 //! The stress run: every claim that has a checker, over many seeded random
 //! and orthogonal maps (n ≤ 30).
 //!
-//! `cargo run --release -p wai-lemmas --bin stress -- [--maps N] [--start S]`
-//! or `-- --corpus`
+//! `cargo run --release -p wai-lemmas --bin stress -- [--maps N] [--start S]
+//! [--repeated]` or `-- --corpus`
 //!
 //! Map i is `wai_gen::random(kind, n, seed = S + i)` with the kind cycling
-//! through every random kind and n cycling through 8..=30. With `--corpus`
+//! through every random kind and n cycling through 8..=30; with
+//! `--repeated` it is `wai_gen::repeated_niches(S + i)` instead, maps whose
+//! repeated funnels and niches give overlapping embeddings of one skeleton
+//! (the chapter 4 claims examine nothing on most random maps). With `--corpus`
 //! the maps are instead the fixed corpus of issue 7's acceptance: every free
 //! polyomino of up to 8 cells, every thesis family at parameters 1 to 6,
 //! and every map of `shared/datasets` that the cells tests decompose (R2V,
@@ -24,6 +27,7 @@
 #[global_allocator]
 static ALLOCATOR: mimalloc::MiMalloc = mimalloc::MiMalloc;
 
+use rayon::prelude::*;
 use std::collections::BTreeMap;
 use wai_lemmas::{run, Checker, Status, CLAIMS};
 
@@ -40,9 +44,12 @@ fn arg(args: &[String], name: &str, default: u64) -> u64 {
 const USAGE: &str = "\
 stress: every claim checker over seeded random maps (n from 8 to 30, every random kind)
 
-usage: stress [--maps N] [--start S] | stress --corpus
+usage: stress [--maps N] [--start S] [--repeated] [--claims L] | stress --corpus [--claims L]
   --maps N    how many maps (default 10000)
   --start S   the first seed (default 0)
+  --repeated  the maps are wai_gen::repeated_niches(S + i): repeated funnels
+              and niches, with overlapping embeddings (chapter 4)
+  --claims L  only the checkers of the comma-separated claim ids L
   --corpus    instead: all free polyominoes up to 8 cells, the families at
               parameters 1..=6 and the dataset maps (needs ../shared/datasets)
   -h, --help  this text
@@ -57,12 +64,17 @@ fn main() {
         return;
     }
     let corpus = args.iter().any(|a| a == "--corpus");
+    let repeated = args.iter().any(|a| a == "--repeated");
     let start = arg(&args, "--start", 0);
     let all: Vec<wai_map::Map> = if corpus {
         corpus_maps().unwrap_or_else(|e| {
             eprintln!("stress: {e}");
             std::process::exit(2);
         })
+    } else if repeated {
+        (0..arg(&args, "--maps", 10_000))
+            .map(|j| wai_gen::repeated_niches(start + j))
+            .collect()
     } else {
         let kinds = wai_gen::RANDOM_KINDS;
         (0..arg(&args, "--maps", 10_000))
@@ -78,15 +90,44 @@ fn main() {
             .collect()
     };
     let total = all.len() as u64;
-    let checkers: Vec<Box<dyn Checker>> = CLAIMS
+    // --claims ID,ID,…: only those claims' checkers.
+    let only: Option<Vec<String>> = args
         .iter()
-        .filter_map(|c| match c.status {
-            Status::Checker(make) => Some(make()),
-            Status::NoCheckerYet => None,
-        })
-        .collect();
-    let refs: Vec<&dyn Checker> = checkers.iter().map(AsRef::as_ref).collect();
+        .position(|a| a == "--claims")
+        .and_then(|i| args.get(i + 1))
+        .map(|v| v.split(',').map(str::to_owned).collect());
+    if let Some(ids) = &only {
+        for id in ids {
+            match wai_lemmas::claim(id) {
+                Some(c) if matches!(c.status, Status::Checker(_)) => {}
+                Some(_) => {
+                    eprintln!("stress: claim {id} has no checker yet");
+                    std::process::exit(2);
+                }
+                None => {
+                    eprintln!("stress: no claim {id} in the registry");
+                    std::process::exit(2);
+                }
+            }
+        }
+    }
+    let make_checkers = || -> Vec<Box<dyn Checker>> {
+        CLAIMS
+            .iter()
+            .filter(|c| {
+                only.as_ref()
+                    .is_none_or(|ids| ids.iter().any(|i| i == c.id))
+            })
+            .filter_map(|c| match c.status {
+                Status::Checker(make) => Some(make()),
+                Status::NoCheckerYet => None,
+            })
+            .collect()
+    };
     let mut examined: BTreeMap<&'static str, u64> = BTreeMap::new();
+    let mut counts: BTreeMap<(&'static str, &'static str), u64> = BTreeMap::new();
+    // Maps on which each claim examined something.
+    let mut maps_with: BTreeMap<&'static str, u64> = BTreeMap::new();
     let mut conflicts: BTreeMap<String, u64> = BTreeMap::new();
     let mut others = 0u64;
     let batch = 100u64;
@@ -94,19 +135,40 @@ fn main() {
     let mut i = 0u64;
     while i < total {
         let maps = &all[i as usize..(i + batch).min(total) as usize];
-        let summary = run(&refs, maps);
-        for tally in &summary.tallies {
-            *examined.entry(tally.claim).or_default() += tally.examined;
-        }
-        for v in summary.violations() {
-            let kind = v.violation.data["kind"].as_str().unwrap_or("");
-            if v.claim == "A3.6" && wai_lemmas::a3_6::is_known_failure(&v.violation.data) {
-                *conflicts.entry(kind.to_owned()).or_default() += 1;
-            } else {
-                others += 1;
-                if others <= 5 {
-                    println!("VIOLATION {}: {}", v.claim, v.violation.what);
-                    println!("{}", v.map_json);
+        // One map per task: the checkers are cheap to make and a study is
+        // per map.
+        let summaries: Vec<wai_lemmas::Summary> = maps
+            .par_iter()
+            .map(|m| {
+                let checkers = make_checkers();
+                let refs: Vec<&dyn Checker> = checkers.iter().map(AsRef::as_ref).collect();
+                run(&refs, [m])
+            })
+            .collect();
+        for summary in &summaries {
+            for tally in &summary.tallies {
+                *examined.entry(tally.claim).or_default() += tally.examined;
+                *maps_with.entry(tally.claim).or_default() += u64::from(tally.examined > 0);
+                for (name, by) in &tally.counts {
+                    *counts.entry((tally.claim, name)).or_default() += by;
+                }
+            }
+            for v in summary.violations() {
+                let kind = v.violation.data["kind"].as_str().unwrap_or("");
+                if v.claim == "A3.6" && wai_lemmas::a3_6::is_known_failure(&v.violation.data) {
+                    *conflicts.entry(kind.to_owned()).or_default() += 1;
+                } else {
+                    others += 1;
+                    if others <= 5 {
+                        println!(
+                            "VIOLATION {} on {}: {}",
+                            v.claim,
+                            v.map_name.as_deref().unwrap_or("unnamed"),
+                            v.violation.what
+                        );
+                        println!("{}", v.violation.data);
+                        println!("{}", v.map_json);
+                    }
                 }
             }
         }
@@ -124,13 +186,26 @@ fn main() {
         );
     } else {
         println!(
-            "stress: {total} maps (seeds {start}..{}), {:.1} s",
+            "stress: {total} {}maps (seeds {start}..{}), {:.1} s",
+            if repeated { "repeated-niches " } else { "" },
             start + total,
             t.elapsed().as_secs_f64()
         );
     }
     for (claim, count) in &examined {
-        println!("  {claim:<6} examined {count}");
+        print!(
+            "  {claim:<6} examined {count} (on {} maps)",
+            maps_with.get(claim).copied().unwrap_or(0)
+        );
+        let extra: Vec<String> = counts
+            .iter()
+            .filter(|((c, _), _)| c == claim)
+            .map(|((_, name), by)| format!("{name} {by}"))
+            .collect();
+        if !extra.is_empty() {
+            print!("; {}", extra.join(", "));
+        }
+        println!();
     }
     for id in examined.iter().filter(|(_, &c)| c == 0).map(|(id, _)| id) {
         println!("  {id}: examined nothing in this run — NOT TESTED");

@@ -11,7 +11,7 @@ use wai_exact::{locate_rat, Containment, RatPoint};
 use wai_lemmas::claim;
 use wai_map::{json::from_json, parse_exact, Map};
 
-const DIR: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/../counterexamples");
+pub(crate) const DIR: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/../counterexamples");
 
 fn json_files() -> Vec<PathBuf> {
     let mut files: Vec<PathBuf> = std::fs::read_dir(DIR)
@@ -24,7 +24,7 @@ fn json_files() -> Vec<PathBuf> {
 }
 
 /// A viewpoint `[x, y]` of exact strings, scaled like the map's vertices.
-fn viewpoint(map: &Map, v: &Value, file: &Path) -> RatPoint {
+pub(crate) fn viewpoint(map: &Map, v: &Value, file: &Path) -> RatPoint {
     let coords: Vec<&str> = v
         .as_array()
         .filter(|a| a.len() == 2)

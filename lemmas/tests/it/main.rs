@@ -4,6 +4,7 @@
 
 mod cell_claims;
 mod counterexamples;
+mod figures;
 mod registry;
 mod visibility_claims;
 

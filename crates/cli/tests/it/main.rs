@@ -381,3 +381,58 @@ fn decompose_counts_and_draws_cells_of_every_dimension() {
     std::fs::remove_file(&dir).ok();
     assert!(svg.contains("kept 1-cell"), "the kept 1-cell is not drawn");
 }
+
+/// `wai embeddings` on the stored figure of Examples 4.1/4.2: the JSON keys
+/// of the issue, the overlapping pair with its verdict, and the SVG.
+#[test]
+fn embeddings_reports_the_overlapping_pair_of_the_funnel_figure() {
+    let figure = concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/../../counterexamples/E4.1-funnels-kernels-overlap.json"
+    );
+    let out = wai(&["embeddings", figure, "--json"], b"");
+    assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
+    let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    let classes = v["classes"].as_array().unwrap();
+    let with_pairs: Vec<&serde_json::Value> = classes
+        .iter()
+        .filter(|c| !c["overlapping_pairs"].as_array().unwrap().is_empty())
+        .collect();
+    assert_eq!(with_pairs.len(), 1);
+    let class = with_pairs[0];
+    let pair = &class["overlapping_pairs"][0];
+    assert_eq!(pair["witnesses_see_each_other"], false);
+    assert_eq!(pair["kernels_overlap"], true);
+    for e in class["embeddings"].as_array().unwrap() {
+        for key in ["origin", "valid", "witness_cells", "candidate_edges"] {
+            assert!(!e[key].is_null(), "missing {key}");
+        }
+        assert_eq!(e["valid"], true);
+    }
+    let dir = std::env::temp_dir().join(format!("wai-embeddings-{}.svg", std::process::id()));
+    let k = class["class"].to_string();
+    let out = wai(
+        &[
+            "embeddings",
+            figure,
+            "--class",
+            &k,
+            "--svg",
+            dir.to_str().unwrap(),
+        ],
+        b"",
+    );
+    assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
+    assert!(text(&out.stdout).contains("kernels overlap too; witnesses do not see each other"));
+    let svg = std::fs::read_to_string(&dir).unwrap();
+    assert!(svg.starts_with("<svg") && svg.contains("valid candidate edge"));
+    std::fs::remove_file(dir).ok();
+}
+
+#[test]
+fn embeddings_refuses_a_class_out_of_range() {
+    let out = wai(&["embeddings", "-", "--class", "999"], L_ROOM.as_bytes());
+    assert_eq!(out.status.code(), Some(2));
+    let err = text(&out.stderr);
+    assert!(err.starts_with("error: --class 999: the map has"), "{err}");
+}

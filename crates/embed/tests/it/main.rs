@@ -1,3 +1,6 @@
 mod common;
 mod embeddings;
+mod fan;
+mod mutual;
 mod sight;
+mod witness;

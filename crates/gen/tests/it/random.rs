@@ -164,3 +164,27 @@ fn ring_problem_catches_planted_faults() {
         None
     );
 }
+
+/// `repeated_niches`: valid for many seeds (the ring is checked by
+/// `Map::from_ring` on construction), deterministic, and its viewpoints
+/// lie inside, one per funnel at the same place in each.
+#[test]
+fn repeated_niches_are_valid_and_their_viewpoints_repeat() {
+    for seed in 0..500 {
+        let m = wai_gen::repeated_niches(seed);
+        assert_eq!(m, wai_gen::repeated_niches(seed));
+        let l = wai_gen::RepeatedLayout::of_seed(seed);
+        let vs = l.viewpoints();
+        assert_eq!(vs.len() as i128, l.funnels);
+        for w in vs.windows(2) {
+            assert_eq!((w[1].x - w[0].x, w[1].y - w[0].y), (l.k * l.north_pitch, 0));
+        }
+        for v in vs {
+            assert_eq!(
+                wai_exact::locate(m.vertices(), v),
+                wai_exact::Containment::Inside,
+                "seed {seed}"
+            );
+        }
+    }
+}

@@ -1,0 +1,312 @@
+//! Def 4.1: witnesses, valid embeddings and valid candidate edges.
+//!
+//! A witness of an embedding h of V* is a point w ∈ h(ker V*) with
+//! V*_w = V*. The points with skeleton V* are the cells of EC_{V*} of every
+//! dimension (claim T3.3b), and by Lemma 3.5 (claim L3.5) each lies in the
+//! kernel of exactly one embedding: the one whose h(v0) is the cell's own
+//! v0. So the **witness region** of h is the union of the cells of the
+//! class whose origin is h(v0), and h is **valid** iff it has one.
+//!
+//! A 1- or 0-cell that an adjacent 2-cell absorbs (same skeleton, same
+//! embedding) belongs to that 2-cell's witness region; it is not listed
+//! as a piece of its own. Questions of visibility are unaffected: a point
+//! that sees something is surrounded by points that see it too, among them
+//! points of the absorbing 2-cell.
+
+use crate::embedding::Embedding;
+use crate::piece::{turn, Piece, Pt};
+use std::cmp::Ordering;
+use std::collections::BTreeSet;
+use wai_cells::{Decomposition, FaceId, LowerSite};
+use wai_exact::RatPoint;
+use wai_visibility::{Skeleton, SkeletonEdge, VisibilityIndex};
+
+/// A cell of the decomposition, of any dimension.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub enum CellRef {
+    /// A 2-cell: a face of the arrangement.
+    Face(FaceId),
+    /// A kept 1- or 0-cell: its index in [`Decomposition::lower_cells`].
+    Lower(usize),
+}
+
+/// A cell of a witness region: which cell, its points, and one exact point
+/// of it (the decomposition's representative).
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct WitnessCell {
+    pub cell: CellRef,
+    pub piece: Piece,
+    pub point: RatPoint,
+}
+
+/// The witness region of one embedding (Def 4.1).
+#[derive(Clone, Debug, PartialEq, Eq, Default)]
+pub struct Witnesses {
+    pub cells: Vec<WitnessCell>,
+}
+
+impl Witnesses {
+    /// Def 4.1: h is valid iff it has a witness.
+    pub fn is_valid(&self) -> bool {
+        !self.cells.is_empty()
+    }
+
+    /// The pieces, for [`crate::Sightlines`].
+    pub fn pieces(&self) -> Vec<Piece> {
+        self.cells.iter().map(|c| c.piece.clone()).collect()
+    }
+}
+
+/// The points of a cell as a [`Piece`].
+pub fn piece_of(d: &Decomposition<'_>, cell: CellRef) -> Piece {
+    let arr = d.arrangement();
+    let at = |v| Pt::from(arr.point(v));
+    match cell {
+        CellRef::Face(f) => {
+            let mut v: Vec<Pt> = arr.face_points(f).iter().map(Pt::from).collect();
+            // Counter-clockwise, as Piece wants (the arrangement's cells are,
+            // but the piece's span test depends on it, so make sure).
+            let area = (0..v.len()).fold(rug::Rational::new(), |s, i| {
+                let (a, b) = (&v[i], &v[(i + 1) % v.len()]);
+                s + rug::Rational::from(&a.x * &b.y) - rug::Rational::from(&a.y * &b.x)
+            });
+            if area < 0 {
+                v.reverse();
+            }
+            Piece::Polygon(v)
+        }
+        CellRef::Lower(i) => match d.lower_cells()[i].site {
+            LowerSite::Edge(e) => {
+                let h = arr.half_edge(2 * e);
+                Piece::Segment(at(h.origin), at(arr.dest(2 * e)))
+            }
+            LowerSite::Vertex(v) => Piece::Point(at(v)),
+        },
+    }
+}
+
+/// The witness regions of `embeddings`, all embeddings of class `class`'s
+/// skeleton, in their order: the class's 2-cells and kept lower cells,
+/// each given to the embedding at its own v0.
+///
+/// A cell whose v0 is the origin of none of them is left out (that would
+/// break Lemma 3.4, which claim L3.5 checks).
+pub fn witness_regions(
+    d: &Decomposition<'_>,
+    class: usize,
+    embeddings: &[Embedding],
+) -> Vec<Witnesses> {
+    let mut out = vec![Witnesses::default(); embeddings.len()];
+    let slot = |origin: usize| embeddings.iter().position(|h| h.origin == origin);
+    for &f in &d.classes()[class] {
+        if let Some(i) = slot(d.origin_of(f)) {
+            let cell = CellRef::Face(f);
+            out[i].cells.push(WitnessCell {
+                piece: piece_of(d, cell),
+                point: d.representative(f).clone(),
+                cell,
+            });
+        }
+    }
+    for &l in d.class_lower_cells(class) {
+        let lower = &d.lower_cells()[l];
+        if let Some(i) = slot(lower.origin) {
+            let cell = CellRef::Lower(l);
+            out[i].cells.push(WitnessCell {
+                piece: piece_of(d, cell),
+                point: d.lower_representative(lower),
+                cell,
+            });
+        }
+    }
+    out
+}
+
+/// Def 4.1: the valid candidate edges of each artificial edge of `h`
+/// (by skeleton edge, as [`Embedding::candidates`]; empty for full edges
+/// and for an embedding with no witness): the map edges that carry the
+/// edge's half or partial edge in V_w for some witness w.
+///
+/// One point per witness cell suffices: along a connected set of points
+/// with one skeleton the map edge under a partial edge cannot change,
+/// since passing from one edge of the label line to another would uncover
+/// the vertex between them (Lemma 3.1 (3)).
+///
+/// # Panics
+/// If V_w of a witness cell's point cannot be computed or has another
+/// skeleton than h's class (a bug the claims T3.3b and L3.5 catch).
+pub fn valid_candidate_edges(
+    index: &VisibilityIndex<'_>,
+    h: &Embedding,
+    witnesses: &Witnesses,
+) -> Vec<Vec<usize>> {
+    let k = h.vertices.len();
+    let mut valid: Vec<BTreeSet<usize>> = vec![BTreeSet::new(); k];
+    for w in &witnesses.cells {
+        let vp = index
+            .visibility_polygon(&w.point)
+            .expect("a witness lies inside the map");
+        let s = Skeleton::of(index.map(), &vp).expect("a witness's V_w has a skeleton");
+        assert_eq!(
+            s.map_vertices(),
+            h.vertices.as_slice(),
+            "witness {} does not have the skeleton of its embedding",
+            w.point
+        );
+        for (i, e) in s.edges().iter().enumerate() {
+            if let SkeletonEdge::Artificial { map_edge, .. } = e {
+                valid[i].insert(*map_edge);
+            }
+        }
+    }
+    valid.into_iter().map(|s| s.into_iter().collect()).collect()
+}
+
+/// The pairs `(a, b)`, `a < b`, of embeddings of one skeleton that are
+/// both valid (`witnesses`, in the same order) and whose embedded skeleton
+/// polygons overlap: the premise of Theorem 4.2.
+pub fn overlapping_valid_pairs(
+    map: &wai_map::Map,
+    embeddings: &[Embedding],
+    witnesses: &[Witnesses],
+) -> Vec<(usize, usize)> {
+    let rings: Vec<Vec<Pt>> = embeddings
+        .iter()
+        .map(|h| h.polygon(map).into_iter().map(Pt::from).collect())
+        .collect();
+    let mut out = Vec::new();
+    for a in 0..embeddings.len() {
+        for b in a + 1..embeddings.len() {
+            if witnesses[a].is_valid()
+                && witnesses[b].is_valid()
+                && interiors_overlap(&rings[a], &rings[b])
+            {
+                out.push((a, b));
+            }
+        }
+    }
+    out
+}
+
+/// Whether the interiors of two simple polygons, each counter-clockwise,
+/// share a point (sec. 4.2: the embeddings *overlap*; sharing only
+/// boundary points, they merely intersect, sec. 4.6).
+///
+/// Exact and complete: a face of the overlay of both boundaries that lies
+/// in both interiors is bounded by a piece of an edge of one of them, on
+/// that polygon's inner (left) side. So each edge of either polygon is cut
+/// where the other's boundary meets it, and the left side of each piece's
+/// midpoint is tested against the other polygon: inside it, or on an edge
+/// of it running the same way.
+pub fn interiors_overlap(p: &[Pt], q: &[Pt]) -> bool {
+    let (bp, bq) = (Bounds::of(p), Bounds::of(q));
+    // Boxes that share no interior point: neither do the polygons.
+    if bp.hi.0 <= bq.lo.0 || bq.hi.0 <= bp.lo.0 || bp.hi.1 <= bq.lo.1 || bq.hi.1 <= bp.lo.1 {
+        return false;
+    }
+    one_side_overlaps(p, q, &bq) || one_side_overlaps(q, p, &bp)
+}
+
+/// The closed axis-parallel box of some points.
+struct Bounds {
+    lo: (rug::Rational, rug::Rational),
+    hi: (rug::Rational, rug::Rational),
+}
+
+impl Bounds {
+    fn of(pts: &[Pt]) -> Bounds {
+        let min =
+            |f: fn(&Pt) -> &rug::Rational| pts.iter().map(f).min().cloned().unwrap_or_default();
+        let max =
+            |f: fn(&Pt) -> &rug::Rational| pts.iter().map(f).max().cloned().unwrap_or_default();
+        Bounds {
+            lo: (min(|p| &p.x), min(|p| &p.y)),
+            hi: (max(|p| &p.x), max(|p| &p.y)),
+        }
+    }
+
+    /// False only if the closed segment `ab` surely misses the box.
+    fn meets(&self, a: &Pt, b: &Pt) -> bool {
+        let (xl, xh) = if a.x <= b.x {
+            (&a.x, &b.x)
+        } else {
+            (&b.x, &a.x)
+        };
+        let (yl, yh) = if a.y <= b.y {
+            (&a.y, &b.y)
+        } else {
+            (&b.y, &a.y)
+        };
+        !(*xh < self.lo.0 || *xl > self.hi.0 || *yh < self.lo.1 || *yl > self.hi.1)
+    }
+}
+
+fn one_side_overlaps(p: &[Pt], q: &[Pt], bq: &Bounds) -> bool {
+    let (np, nq) = (p.len(), q.len());
+    for i in 0..np {
+        let (a, b) = (&p[i], &p[(i + 1) % np]);
+        // An edge outside q's box has no piece inside q or along its edges.
+        if !bq.meets(a, b) {
+            continue;
+        }
+        let dir = b.sub(a);
+        // Cut points along a→b, as parameters in [0, 1].
+        let mut cuts = vec![rug::Rational::new(), rug::Rational::from(1)];
+        for j in 0..nq {
+            let (c, e) = (&q[j], &q[(j + 1) % nq]);
+            for t in crate::piece::segment_cuts(a, b, c, e) {
+                cuts.push(t);
+            }
+        }
+        cuts.sort();
+        cuts.dedup();
+        for w in cuts.windows(2) {
+            let mid = a.along(&dir, &(rug::Rational::from(&w[0] + &w[1]) / 2u32));
+            match locate(q, &mid) {
+                Locus::Inside => return true,
+                Locus::Outside => {}
+                Locus::OnEdge(j) => {
+                    let (c, e) = (&q[j], &q[(j + 1) % nq]);
+                    // Same direction: both interiors on the left.
+                    if crate::piece::dot(&dir, &e.sub(c)) > 0 {
+                        return true;
+                    }
+                }
+            }
+        }
+    }
+    false
+}
+
+pub(crate) enum Locus {
+    Inside,
+    Outside,
+    OnEdge(usize),
+}
+
+/// Where `x` lies relative to the simple polygon `q` (crossing number,
+/// exact).
+pub(crate) fn locate(q: &[Pt], x: &Pt) -> Locus {
+    let n = q.len();
+    let mut inside = false;
+    for j in 0..n {
+        let (a, b) = (&q[j], &q[(j + 1) % n]);
+        if crate::piece::segments_meet(a, b, x, x) {
+            return Locus::OnEdge(j);
+        }
+        // Half-open rule on y.
+        if (a.y > x.y) != (b.y > x.y) {
+            // x is left of the upward crossing iff the turn agrees.
+            let t = turn(a, b, x);
+            let up = b.y > a.y;
+            if (up && t == Ordering::Greater) || (!up && t == Ordering::Less) {
+                inside = !inside;
+            }
+        }
+    }
+    if inside {
+        Locus::Inside
+    } else {
+        Locus::Outside
+    }
+}

@@ -1,0 +1,157 @@
+//! Seeded maps with **repeated** rooms: a corridor with identical funnels
+//! in its south wall and identical flared niches in its north wall, at
+//! pitches that fit each other, so that a point deep in one funnel and the
+//! same point in the next have one skeleton — the configuration of
+//! chapter 4 (Figs 4.1, 4.2, Lemma 4.1), which random maps almost never
+//! have. The parameters (pitches, widths, depths, flare, corridor height,
+//! how many of each) are jittered per seed; within one map the pattern is
+//! exactly periodic, as equal skeletons need.
+//!
+//! Funnels that widen upwards have kernels shaped like upward wedges, so
+//! neighbouring embeddings overlap not only in their skeleton polygons
+//! (Theorem 4.2's premise) but often in their kernels too (Theorem 4.3's).
+
+use crate::ring::into_map;
+use rand::{Rng, SeedableRng};
+use rand_chacha::ChaCha8Rng;
+use wai_exact::Point;
+use wai_map::Map;
+
+/// The parameters of one [`repeated_niches`] map.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct RepeatedLayout {
+    /// North niche pitch `q`; the funnel pitch is `k·q`.
+    pub north_pitch: i128,
+    pub k: i128,
+    /// Funnels: count, width at the bottom and at the top (`≥` bottom),
+    /// depth.
+    pub funnels: i128,
+    pub funnel_bottom: i128,
+    pub funnel_top: i128,
+    pub funnel_depth: i128,
+    /// North niches: count, opening width, back width (`>` opening), depth.
+    pub niches: i128,
+    pub niche_mouth: i128,
+    pub niche_back: i128,
+    pub niche_depth: i128,
+    /// Corridor height and the x of the first funnel's centre (the first
+    /// niche's centre is on `x = margin` too).
+    pub height: i128,
+    pub margin: i128,
+}
+
+impl RepeatedLayout {
+    /// The jittered layout of `seed`.
+    pub fn of_seed(seed: u64) -> RepeatedLayout {
+        let mut rng = ChaCha8Rng::seed_from_u64(seed);
+        let q = 2 * rng.random_range(3..=8i128);
+        let k = rng.random_range(1..=2i128);
+        let funnels = rng.random_range(2..=4i128);
+        // Half the seeds: shallow funnels flared to half the pitch under a
+        // tall corridor, whose kernels are wide enough to overlap.
+        let wide = rng.random_bool(0.5);
+        let funnel_bottom = if wide {
+            2
+        } else {
+            2 * rng.random_range(1..=(q * k / 4).max(1))
+        };
+        let funnel_top = if wide {
+            2 * (q * k / 4)
+        } else {
+            funnel_bottom + 2 * rng.random_range(0..=(q * k / 2 - funnel_bottom) / 2)
+        };
+        let funnel_depth = if wide {
+            rng.random_range(2..=q / 2)
+        } else {
+            rng.random_range(2..=3 * q)
+        };
+        let height = if wide {
+            rng.random_range(2 * q..=4 * q)
+        } else {
+            rng.random_range(q / 2..=3 * q)
+        };
+        let niche_back = 2 * rng.random_range(2..=(q / 2 - 1).max(2));
+        let niche_mouth = 2 * rng.random_range(1..=niche_back / 2 - 1);
+        let extra = rng.random_range(1..=3i128);
+        RepeatedLayout {
+            north_pitch: q,
+            k,
+            funnels,
+            funnel_bottom,
+            funnel_top,
+            funnel_depth,
+            niches: (funnels - 1) * k + 1 + 2 * extra,
+            niche_mouth,
+            niche_back,
+            niche_depth: rng.random_range(1..=q),
+            height,
+            margin: q * (extra + 1),
+        }
+    }
+
+    /// The centre of funnel `i`.
+    pub fn funnel_x(&self, i: i128) -> i128 {
+        self.margin + (self.extra() + i * self.k) * self.north_pitch
+    }
+
+    fn extra(&self) -> i128 {
+        (self.niches - (self.funnels - 1) * self.k - 1) / 2
+    }
+
+    /// The centre of north niche `j`.
+    fn niche_x(&self, j: i128) -> i128 {
+        self.margin + j * self.north_pitch
+    }
+
+    /// The corridor's east end.
+    fn length(&self) -> i128 {
+        self.niche_x(self.niches - 1) + self.margin
+    }
+
+    /// A point deep in each funnel, at the same place in each: the
+    /// candidates for witnesses of the repeated skeleton.
+    pub fn viewpoints(&self) -> Vec<Point> {
+        (0..self.funnels)
+            .map(|i| Point::new(self.funnel_x(i), 1 - self.funnel_depth))
+            .collect()
+    }
+}
+
+/// The map of a jittered [`RepeatedLayout`]: counter-clockwise from the
+/// south-west corner, the south wall eastwards with its funnels, then the
+/// north wall westwards with its niches.
+///
+/// ```
+/// let m = wai_gen::repeated_niches(7);
+/// assert!(m.n() >= 20 && m.r() >= 4);
+/// ```
+pub fn repeated_niches(seed: u64) -> Map {
+    let l = RepeatedLayout::of_seed(seed);
+    let p = Point::new;
+    let mut ring = vec![p(0, 0)];
+    let (hb, ht) = (l.funnel_bottom / 2, l.funnel_top / 2);
+    for i in 0..l.funnels {
+        let x = l.funnel_x(i);
+        ring.extend([
+            p(x - ht, 0),
+            p(x - hb, -l.funnel_depth),
+            p(x + hb, -l.funnel_depth),
+            p(x + ht, 0),
+        ]);
+    }
+    let len = l.length();
+    ring.extend([p(len, 0), p(len, l.height)]);
+    let (hm, hk) = (l.niche_mouth / 2, l.niche_back / 2);
+    let top = l.height + l.niche_depth;
+    for j in (0..l.niches).rev() {
+        let x = l.niche_x(j);
+        ring.extend([
+            p(x + hm, l.height),
+            p(x + hk, top),
+            p(x - hk, top),
+            p(x - hm, l.height),
+        ]);
+    }
+    ring.push(p(0, l.height));
+    into_map(ring, format!("repeated-niches seed={seed}"))
+}
