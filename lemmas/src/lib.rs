@@ -21,7 +21,9 @@
 //!   replaced by `_` ([`Claim::module_name`]): [`l3_1a`], [`l3_1b`],
 //!   [`l3_1c`], [`d3_5`], [`t3_2`], [`t3_3a`], [`t3_3b`], [`a3_6`], [`l3_5`],
 //!   [`l3_7`], [`l3_7t`], [`t3_9a`], [`t3_9b`], [`t3_10`], [`l4_1`],
-//!   [`t4_2`], [`t4_3`], [`t5_17`] so far; `l4_5.rs`, … to come. Each module
+//!   [`l4_5`], [`l4_6`], [`l4_7`], [`l4_8`], [`l4_9`], [`c4_10`], [`c4_15`],
+//!   [`c4_16`], [`t4_2`], [`t4_3`], [`t5_17`] so far; `l4_17.rs`, … to come.
+//!   Each module
 //!   - opens with a doc comment that states the claim in our own words and
 //!     cites the thesis (`/// Claim T4.2 (Theorem 4.2).`),
 //!   - has a `## Trust` paragraph: exhaustive or sampled, and what the verdict
@@ -44,6 +46,9 @@
 //! `shared/CLAIMS.md` disagree, in either direction.
 
 pub mod a3_6;
+pub mod c4_10;
+pub mod c4_15;
+pub mod c4_16;
 pub mod d3_5;
 pub mod driver;
 pub mod family;
@@ -54,6 +59,11 @@ pub mod l3_5;
 pub mod l3_7;
 pub mod l3_7t;
 pub mod l4_1;
+pub mod l4_5;
+pub mod l4_6;
+pub mod l4_7;
+pub mod l4_8;
+pub mod l4_9;
 pub mod ratio;
 pub mod sample;
 pub mod study;
@@ -355,37 +365,43 @@ pub static CLAIMS: &[Claim] = &[
         Exact,
         "Lemma 4.5",
         "An embedded artificial edge meets at most two artificial edges of another valid embedding, and its part on the intersection boundary is one segment.",
-    ),
+    )
+    .checked(l4_5::checker),
     c(
         "L4.6",
         Exact,
         "Lemma 4.6",
         "Two overlapping valid embeddings intersect in one connected polygon.",
-    ),
+    )
+    .checked(l4_6::checker),
     c(
         "L4.7",
         Exact,
         "Lemma 4.7",
         "Every edge of the intersection polygon of two overlapping valid embeddings is of type 1 to 5.",
-    ),
+    )
+    .checked(l4_7::checker),
     c(
         "L4.8",
         Exact,
         "Lemma 4.8",
         "An artificial edge crossing two artificial edges of the other embedding is LR to both or RL to both.",
-    ),
+    )
+    .checked(l4_8::checker),
     c(
         "L4.9",
         Exact,
         "Lemma 4.9",
         "At most one LR/LR and one RL/RL intersection, and min{x, y} <= 1 for the mixed counts.",
-    ),
+    )
+    .checked(l4_9::checker),
     c(
         "C4.10",
         Exact,
         "Corollary 4.10",
         "An intersection polygon has at most four type-5 edges.",
-    ),
+    )
+    .checked(c4_10::checker),
     c(
         "E4.10",
         Example,
@@ -397,13 +413,15 @@ pub static CLAIMS: &[Claim] = &[
         Exact,
         "Corollary 4.15",
         "The intersection of two overlapping valid embeddings of one skeleton lies on one side of the line through any witness pair.",
-    ),
+    )
+    .checked(c4_15::checker),
     c(
         "C4.16",
         Exact,
         "Corollary 4.16",
         "Every line parallel to the translation between the embeddings that crosses their intersection has both witnesses on one side.",
-    ),
+    )
+    .checked(c4_16::checker),
     c(
         "E4.28",
         Example,

@@ -14,8 +14,8 @@ use std::rc::Rc;
 
 use wai_cells::{Arrangement, Decomposition, VisibilityRay};
 use wai_embed::{
-    interiors_overlap, overlapping_valid_pairs, witness_regions, Embedder, Embedding, Mutual, Pt,
-    Sightlines, Witnesses,
+    interiors_overlap, overlapping_valid_pairs, witness_regions, Embedder, Embedding, Intersection,
+    Mutual, Pt, Sightlines, SkeletonRing, Witnesses,
 };
 use wai_map::Map;
 use wai_visibility::{ConvexRegion, VisibilityIndex, VisibilityPolygon};
@@ -37,6 +37,37 @@ pub struct Study<'m> {
     /// Every pair of valid embeddings of one skeleton whose skeleton
     /// polygons overlap, with the verdict on their witnesses.
     overlapping: OnceCell<Vec<OverlappingPair>>,
+    /// By class and embedding: h(V◇) with its artificial edges marked.
+    rings: OnceCell<Vec<Vec<SkeletonRing>>>,
+    /// The pairs of valid embeddings the sec. 4.4 checkers examine.
+    pairs: OnceCell<Vec<EmbeddingPair>>,
+}
+
+/// Maps of at most this many vertices have the sec. 4.4 claims (L4.5 to
+/// C4.10, which allow different skeletons) checked on pairs of valid
+/// embeddings of different skeletons too; larger maps on pairs of one
+/// skeleton only (a map of 52 vertices has about 190,000 overlapping pairs
+/// of different skeletons).
+pub const CROSS_SKELETON_MAX_N: usize = 14;
+
+/// Two valid embeddings, (class, index in [`Study::embeddings`]) each, whose
+/// skeleton polygons' bounding boxes meet, and their intersection if their
+/// interiors overlap.
+#[derive(Debug, Clone)]
+pub struct EmbeddingPair {
+    pub first: (usize, usize),
+    pub second: (usize, usize),
+    pub intersection: Option<Intersection>,
+}
+
+impl EmbeddingPair {
+    pub fn same_skeleton(&self) -> bool {
+        self.first.0 == self.second.0
+    }
+
+    pub fn overlap(&self) -> bool {
+        self.intersection.is_some()
+    }
 }
 
 /// Two different valid embeddings of one skeleton whose embedded skeleton
@@ -74,6 +105,8 @@ impl<'m> Study<'m> {
             witnesses: OnceCell::new(),
             sightlines: OnceCell::new(),
             overlapping: OnceCell::new(),
+            rings: OnceCell::new(),
+            pairs: OnceCell::new(),
         }
     }
 
@@ -173,6 +206,91 @@ impl<'m> Study<'m> {
                         b,
                         kernels_overlap,
                         sight,
+                    });
+                }
+            }
+            out
+        })
+    }
+
+    /// By class and embedding: the embedded skeleton polygon h(V◇) with its
+    /// artificial edges marked.
+    pub fn skeleton_rings(&self) -> &[Vec<SkeletonRing>] {
+        self.rings.get_or_init(|| {
+            let keys = self.decomposition().skeletons();
+            self.embeddings()
+                .iter()
+                .enumerate()
+                .map(|(class, all)| {
+                    let artificial: Vec<bool> =
+                        keys[class].labels.iter().map(Option::is_some).collect();
+                    all.iter()
+                        .map(|h| {
+                            SkeletonRing::new(&h.embedding.polygon(self.map), artificial.clone())
+                        })
+                        .collect()
+                })
+                .collect()
+        })
+    }
+
+    /// The witness cells' points of embedding `i` of class `class`.
+    pub fn witness_points(&self, class: usize, i: usize) -> Vec<Pt> {
+        self.witnesses()[class][i]
+            .cells
+            .iter()
+            .map(|c| Pt::from(&c.point))
+            .collect()
+    }
+
+    /// The pairs of valid embeddings the sec. 4.4 claims examine: of one
+    /// skeleton always, of different skeletons on maps of at most
+    /// [`CROSS_SKELETON_MAX_N`] vertices; those whose polygons' bounding
+    /// boxes meet, with the intersection where the interiors overlap.
+    pub fn embedding_pairs(&self) -> &[EmbeddingPair] {
+        self.pairs.get_or_init(|| {
+            let rings = self.skeleton_rings();
+            let valid: Vec<(usize, usize)> = self
+                .witnesses()
+                .iter()
+                .enumerate()
+                .flat_map(|(c, ws)| {
+                    ws.iter()
+                        .enumerate()
+                        .filter(|(_, w)| w.is_valid())
+                        .map(move |(i, _)| (c, i))
+                })
+                .collect();
+            let cross = self.map.n() <= CROSS_SKELETON_MAX_N;
+            let bounds: Vec<_> = valid
+                .iter()
+                .map(|&(c, i)| {
+                    let r = &rings[c][i].ring;
+                    let lo = |f: fn(&Pt) -> &rug::Rational| r.iter().map(f).min().cloned();
+                    let hi = |f: fn(&Pt) -> &rug::Rational| r.iter().map(f).max().cloned();
+                    (lo(|p| &p.x), lo(|p| &p.y), hi(|p| &p.x), hi(|p| &p.y))
+                })
+                .collect();
+            let mut out = Vec::new();
+            for a in 0..valid.len() {
+                for b in a + 1..valid.len() {
+                    if valid[a].0 != valid[b].0 && !cross {
+                        continue;
+                    }
+                    let (ba, bb) = (&bounds[a], &bounds[b]);
+                    if ba.2 < bb.0 || bb.2 < ba.0 || ba.3 < bb.1 || bb.3 < ba.1 {
+                        continue;
+                    }
+                    let (p, q) = (
+                        &rings[valid[a].0][valid[a].1],
+                        &rings[valid[b].0][valid[b].1],
+                    );
+                    let intersection = interiors_overlap(&p.ring, &q.ring)
+                        .then(|| Intersection::of(&p.ring, &q.ring));
+                    out.push(EmbeddingPair {
+                        first: valid[a],
+                        second: valid[b],
+                        intersection,
                     });
                 }
             }

@@ -18,17 +18,21 @@
 //! an exact integer predicate.
 
 mod embedding;
+pub mod intersection;
 mod mutual;
 mod overlay;
 pub mod piece;
 mod sight;
+mod transversal;
 mod witness;
 
 pub use embedding::{embeddings, Embedder, Embedding};
+pub use intersection::{EdgeType, Intersection, SkeletonRing};
 pub use mutual::{Mutual, Sightlines};
 pub use overlay::common_interior_point;
 pub use piece::{Piece, Pt};
 pub use sight::EdgeSight;
+pub use transversal::transversal;
 pub use witness::{
     interiors_overlap, overlapping_valid_pairs, piece_of, valid_candidate_edges, witness_regions,
     CellRef, WitnessCell, Witnesses,

@@ -86,7 +86,7 @@ fn side_of(l: &[Integer; 3], r: &[Integer; 3]) -> Ordering {
 }
 
 /// Directions `d` with `d.y > 0` or `d.y = 0, d.x > 0`: each line once.
-fn upper(d: Pt) -> Pt {
+pub(crate) fn upper(d: Pt) -> Pt {
     if d.y < 0 || (d.y == 0 && d.x < 0) {
         Pt::new(-d.x, -d.y)
     } else {
@@ -95,7 +95,7 @@ fn upper(d: Pt) -> Pt {
 }
 
 /// Half-plane index for a full-circle angular order from direction (1, 0).
-fn half(d: &Pt) -> u8 {
+pub(crate) fn half(d: &Pt) -> u8 {
     u8::from(!(d.y > 0 || (d.y == 0 && d.x > 0)))
 }
 
@@ -107,14 +107,14 @@ fn by_angle(a: &Pt, b: &Pt) -> Ordering {
 /// The axis directions, added to every set of critical directions so that
 /// consecutive ones are less than a quarter turn apart and their sum lies
 /// strictly between them.
-fn axes() -> [Pt; 4] {
+pub(crate) fn axes() -> [Pt; 4] {
     let v = |x: i32, y: i32| Pt::new(Rational::from(x), Rational::from(y));
     [v(1, 0), v(0, 1), v(-1, 0), v(0, -1)]
 }
 
 /// Sorted, deduplicated by angle; consecutive pairs (cyclically) give
 /// the directions strictly between them as sums.
-fn between(mut dirs: Vec<Pt>) -> Vec<Pt> {
+pub(crate) fn between(mut dirs: Vec<Pt>) -> Vec<Pt> {
     dirs.sort_by(by_angle);
     dirs.dedup_by(|a, b| by_angle(a, b) == Ordering::Equal);
     (0..dirs.len())
@@ -124,7 +124,7 @@ fn between(mut dirs: Vec<Pt>) -> Vec<Pt> {
 
 /// The convex hull of `pts` (closed), counter-clockwise, collinear points
 /// dropped; fewer than three points for a degenerate hull.
-fn hull(mut pts: Vec<Pt>) -> Vec<Pt> {
+pub(crate) fn hull(mut pts: Vec<Pt>) -> Vec<Pt> {
     pts.sort();
     pts.dedup();
     if pts.len() < 3 {

@@ -118,6 +118,23 @@ pub fn turn(a: &Pt, b: &Pt, c: &Pt) -> Ordering {
 
 /// Whether the closed segments `ab` and `cd` share a point.
 pub fn segments_meet(a: &Pt, b: &Pt, c: &Pt, d: &Pt) -> bool {
+    // Boxes first: comparisons only, no arithmetic.
+    let apart = |f: fn(&Pt) -> &Rational| {
+        let (lo1, hi1) = if f(a) <= f(b) {
+            (f(a), f(b))
+        } else {
+            (f(b), f(a))
+        };
+        let (lo2, hi2) = if f(c) <= f(d) {
+            (f(c), f(d))
+        } else {
+            (f(d), f(c))
+        };
+        hi1 < lo2 || hi2 < lo1
+    };
+    if apart(|p| &p.x) || apart(|p| &p.y) {
+        return false;
+    }
     let (o1, o2) = (turn(a, b, c), turn(a, b, d));
     let (o3, o4) = (turn(c, d, a), turn(c, d, b));
     let within = |p: &Pt, q: &Pt, x: &Pt| {
@@ -156,6 +173,11 @@ pub fn segment_cuts(a: &Pt, b: &Pt, c: &Pt, e: &Pt) -> Vec<Rational> {
     }
     // a + t·d = c + s·f: t = ((c − a) × f)/(d × f).
     vec![cross(&c.sub(a), &f) / den]
+}
+
+/// The convex hull of `pts`, counter-clockwise, collinear points dropped.
+pub fn convex_hull(pts: Vec<Pt>) -> Vec<Pt> {
+    crate::mutual::hull(pts)
 }
 
 /// A relatively open convex piece of the plane: a cell of dimension 0, 1

@@ -291,6 +291,11 @@ pub(crate) fn locate(q: &[Pt], x: &Pt) -> Locus {
     let mut inside = false;
     for j in 0..n {
         let (a, b) = (&q[j], &q[(j + 1) % n]);
+        // An edge wholly above or below x neither holds it nor crosses
+        // its horizontal.
+        if (a.y < x.y && b.y < x.y) || (a.y > x.y && b.y > x.y) {
+            continue;
+        }
         if crate::piece::segments_meet(a, b, x, x) {
             return Locus::OnEdge(j);
         }

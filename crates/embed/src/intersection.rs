@@ -1,0 +1,459 @@
+//! The intersection of two embedded skeleton polygons (sec. 4.4): its
+//! boundary as cycles of maximal edges, each edge's supporting edges in the
+//! two polygons, its type (Lemma 4.7), and the crossings of artificial
+//! edges behind Lemmas 4.5, 4.8 and 4.9 — exactly, with rationals.
+
+use crate::piece::{cross, dot, segment_cuts, segments_meet, Pt};
+use crate::witness::{locate, Locus};
+use rug::Rational;
+use std::cmp::Ordering;
+use std::collections::HashSet;
+use wai_exact::Point;
+
+/// An embedded skeleton polygon h(V◇): its vertices counter-clockwise and,
+/// by edge (from vertex i to i + 1), whether the edge is artificial.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct SkeletonRing {
+    pub ring: Vec<Pt>,
+    pub artificial: Vec<bool>,
+}
+
+impl SkeletonRing {
+    /// From map points and the skeleton key's labels (`Some` = artificial).
+    pub fn new(points: &[Point], artificial: Vec<bool>) -> SkeletonRing {
+        SkeletonRing {
+            ring: points.iter().map(|&p| Pt::from(p)).collect(),
+            artificial,
+        }
+    }
+
+    pub fn edge(&self, i: usize) -> (&Pt, &Pt) {
+        (&self.ring[i], &self.ring[(i + 1) % self.ring.len()])
+    }
+
+    /// The artificial edges.
+    pub fn artificial_edges(&self) -> impl Iterator<Item = usize> + '_ {
+        (0..self.ring.len()).filter(|&i| self.artificial[i])
+    }
+}
+
+/// Whether two closed segments meet other than in an end common to both.
+pub fn edges_meet(a: (&Pt, &Pt), b: (&Pt, &Pt)) -> bool {
+    if !segments_meet(a.0, a.1, b.0, b.1) {
+        return false;
+    }
+    let shared: Vec<&Pt> = [a.0, a.1]
+        .into_iter()
+        .filter(|p| *p == b.0 || *p == b.1)
+        .collect();
+    if shared.is_empty() {
+        return true;
+    }
+    // They share an end: do they meet anywhere else? Only if collinear and
+    // overlapping beyond it.
+    let da = a.1.sub(a.0);
+    let db = b.1.sub(b.0);
+    if cross(&da, &db) != 0 {
+        return false;
+    }
+    // Collinear with a common end: overlap beyond it iff they point the
+    // same way from it.
+    let x = shared[0];
+    let away = |s: (&Pt, &Pt)| if s.0 == x { s.1.sub(x) } else { s.0.sub(x) };
+    dot(&away(a), &away(b)) > 0
+}
+
+/// The artificial edges of `other` that `ring`'s edge `i` meets (other
+/// than in a common end).
+pub fn artificial_crossings(ring: &SkeletonRing, i: usize, other: &SkeletonRing) -> Vec<usize> {
+    other
+        .artificial_edges()
+        .filter(|&j| edges_meet(ring.edge(i), other.edge(j)))
+        .collect()
+}
+
+/// How many connected pieces (intervals, possibly single points) the
+/// closed segment `ab` has inside the closed polygon `q`.
+pub fn pieces_inside(a: &Pt, b: &Pt, q: &[Pt]) -> usize {
+    let mut cuts = vec![Rational::new(), Rational::from(1)];
+    for j in 0..q.len() {
+        cuts.extend(segment_cuts(a, b, &q[j], &q[(j + 1) % q.len()]));
+    }
+    cuts.sort();
+    cuts.dedup();
+    let d = b.sub(a);
+    let inside = |t: &Rational| !matches!(locate(q, &a.along(&d, t)), Locus::Outside);
+    // Alternate cut points and open stretches between them; count runs.
+    let mut runs = 0;
+    let mut previous = false;
+    for (k, t) in cuts.iter().enumerate() {
+        let at = inside(t);
+        if at && !previous {
+            runs += 1;
+        }
+        previous = at;
+        if let Some(next) = cuts.get(k + 1) {
+            let mid = Rational::from(t + next) / 2u32;
+            let between = inside(&mid);
+            if between && !previous {
+                runs += 1;
+            }
+            previous = between;
+        }
+    }
+    runs
+}
+
+/// An edge of the boundary of P ∩ Q — between two consecutive points that
+/// are vertices of P or Q or crossings of their boundaries — directed with
+/// the intersection on its left, and the edges of P and Q it lies on.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct BoundaryEdge {
+    pub from: Pt,
+    pub to: Pt,
+    pub on_p: Option<usize>,
+    pub on_q: Option<usize>,
+}
+
+/// The type of an edge of the intersection polygon (Lemma 4.7).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub enum EdgeType {
+    /// A full edge in both embeddings.
+    Full,
+    /// An artificial edge in both, between the same two points.
+    CommonArtificial,
+    /// An artificial edge of one lying inside the other.
+    ArtificialInside,
+    /// Part of an artificial edge meeting exactly one artificial edge of
+    /// the other, one end a map vertex.
+    OneCrossing,
+    /// Part of an artificial edge meeting exactly two artificial edges of
+    /// the other, no end a map vertex.
+    TwoCrossings,
+}
+
+impl EdgeType {
+    /// The thesis's number, 1 to 5.
+    pub fn number(self) -> u8 {
+        match self {
+            EdgeType::Full => 1,
+            EdgeType::CommonArtificial => 2,
+            EdgeType::ArtificialInside => 3,
+            EdgeType::OneCrossing => 4,
+            EdgeType::TwoCrossings => 5,
+        }
+    }
+}
+
+/// P ∩ Q for two embedded skeleton polygons.
+#[derive(Clone, Debug)]
+pub struct Intersection {
+    /// The boundary's cycles of edges; a counter-clockwise
+    /// cycle bounds a component of the intersection from outside, a
+    /// clockwise one a hole.
+    pub cycles: Vec<Vec<BoundaryEdge>>,
+}
+
+/// A directed boundary piece before merging.
+#[derive(Clone, Debug)]
+struct Stretch {
+    from: Pt,
+    to: Pt,
+    on_p: Option<usize>,
+    on_q: Option<usize>,
+}
+
+/// The pieces of `p`'s edges on the boundary of the intersection with `q`:
+/// cut where `q`'s boundary meets them, kept if the side on their left is
+/// inside `q` (midpoint strictly inside, or on an edge of `q` running the
+/// same way — then recorded on both). `shared`: keep the pieces along
+/// `q`'s edges (only for one of the two polygons, so they count once).
+fn boundary_pieces(p: &[Pt], q: &[Pt], p_is_first: bool, shared: bool) -> Vec<Stretch> {
+    let mut out = Vec::new();
+    for i in 0..p.len() {
+        let (a, b) = (&p[i], &p[(i + 1) % p.len()]);
+        let d = b.sub(a);
+        let mut cuts = vec![Rational::new(), Rational::from(1)];
+        for j in 0..q.len() {
+            cuts.extend(segment_cuts(a, b, &q[j], &q[(j + 1) % q.len()]));
+        }
+        cuts.sort();
+        cuts.dedup();
+        for w in cuts.windows(2) {
+            let mid = a.along(&d, &(Rational::from(&w[0] + &w[1]) / 2u32));
+            let other = match locate(q, &mid) {
+                Locus::Inside => None,
+                Locus::Outside => continue,
+                Locus::OnEdge(j) => {
+                    let (c, e) = (&q[j], &q[(j + 1) % q.len()]);
+                    if !shared || dot(&d, &e.sub(c)) <= 0 {
+                        continue;
+                    }
+                    Some(j)
+                }
+            };
+            let (on_p, on_q) = if p_is_first {
+                (Some(i), other)
+            } else {
+                (other, Some(i))
+            };
+            out.push(Stretch {
+                from: a.along(&d, &w[0]),
+                to: a.along(&d, &w[1]),
+                on_p,
+                on_q,
+            });
+        }
+    }
+    out
+}
+
+/// Clockwise angle order from direction `r`: directions just clockwise of
+/// `r` first, `r` itself last.
+fn clockwise_from(r: &Pt, u: &Pt, v: &Pt) -> Ordering {
+    let half = |w: &Pt| {
+        let c = cross(r, w);
+        // 0: strictly clockwise of r within a half turn (or opposite r);
+        // 1: counter-clockwise of r, or r itself.
+        u8::from(!(c < 0 || (c == 0 && dot(r, w) < 0)))
+    };
+    half(u).cmp(&half(v)).then_with(|| cross(v, u).cmp0())
+}
+
+impl Intersection {
+    /// The boundary of P ∩ Q (closed polygons, counter-clockwise, simple).
+    /// Empty if the interiors do not meet.
+    pub fn of(p: &[Pt], q: &[Pt]) -> Intersection {
+        let mut pieces = boundary_pieces(p, q, true, true);
+        pieces.extend(boundary_pieces(q, p, false, false));
+        // Chain: at each end, of the pieces leaving it, take the first
+        // clockwise from the way back, so that touching components stay
+        // apart.
+        let mut used = vec![false; pieces.len()];
+        let mut cycles = Vec::new();
+        for start in 0..pieces.len() {
+            if used[start] {
+                continue;
+            }
+            let mut cycle: Vec<Stretch> = Vec::new();
+            let mut k = start;
+            loop {
+                used[k] = true;
+                cycle.push(pieces[k].clone());
+                let here = &pieces[k].to;
+                let back = pieces[k].from.sub(here);
+                let next = (0..pieces.len())
+                    .filter(|&m| !used[m] || m == start)
+                    .filter(|&m| pieces[m].from == *here)
+                    .min_by(|&x, &y| {
+                        clockwise_from(&back, &pieces[x].to.sub(here), &pieces[y].to.sub(here))
+                    });
+                match next {
+                    Some(m) if m == start => break,
+                    Some(m) => k = m,
+                    None => break,
+                }
+            }
+            cycles.push(edges_of(cycle));
+        }
+        Intersection { cycles }
+    }
+
+    /// Connected components of the intersection: its counter-clockwise
+    /// boundary cycles.
+    pub fn components(&self) -> usize {
+        self.cycles
+            .iter()
+            .filter(|c| {
+                let area = c
+                    .iter()
+                    .fold(Rational::new(), |s, e| s + cross(&e.from, &e.to));
+                area > 0
+            })
+            .count()
+    }
+}
+
+/// A cycle's pieces as edges. They are not merged where they continue
+/// each other in a straight line: every such junction is a vertex of P or
+/// Q (a map vertex), and the thesis's intersection polygon keeps those
+/// (Fig 4.1 (a) has five collinear edges in a row; Lemma 4.7's proof).
+fn edges_of(cycle: Vec<Stretch>) -> Vec<BoundaryEdge> {
+    cycle
+        .into_iter()
+        .map(|s| BoundaryEdge {
+            from: s.from,
+            to: s.to,
+            on_p: s.on_p,
+            on_q: s.on_q,
+        })
+        .collect()
+}
+
+/// Lemma 4.7's type of boundary edge `e` of P ∩ Q, or `None` if it is of
+/// none of the five. `map_vertices`: the map's vertices.
+pub fn edge_type(
+    e: &BoundaryEdge,
+    p: &SkeletonRing,
+    q: &SkeletonRing,
+    map_vertices: &HashSet<Pt>,
+) -> Option<EdgeType> {
+    let same = |x: (&Pt, &Pt)| (x.0 == &e.from && x.1 == &e.to) || (x.0 == &e.to && x.1 == &e.from);
+    let full_p = e.on_p.filter(|&i| !p.artificial[i]);
+    let full_q = e.on_q.filter(|&j| !q.artificial[j]);
+    if full_p.is_some() || full_q.is_some() {
+        return match (full_p, full_q) {
+            (Some(i), Some(j)) if same(p.edge(i)) && same(q.edge(j)) => Some(EdgeType::Full),
+            _ => None,
+        };
+    }
+    if let (Some(i), Some(j)) = (e.on_p, e.on_q) {
+        if same(p.edge(i)) && same(q.edge(j)) {
+            return Some(EdgeType::CommonArtificial);
+        }
+    }
+    // On an artificial edge of one, X, against the other, Y.
+    let (x, i, y) = match (e.on_p, e.on_q) {
+        (Some(i), None) => (p, i, q),
+        (None, Some(j)) => (q, j, p),
+        (Some(i), Some(_)) => (p, i, q),
+        (None, None) => return None,
+    };
+    let alone = e.on_p.is_none() || e.on_q.is_none();
+    if alone && same(x.edge(i)) {
+        return Some(EdgeType::ArtificialInside);
+    }
+    let ends = [&e.from, &e.to]
+        .into_iter()
+        .filter(|v| map_vertices.contains(v))
+        .count();
+    let crossings = artificial_crossings(x, i, y).len();
+    match (ends, crossings) {
+        (1, 1) => Some(EdgeType::OneCrossing),
+        (0, 2) => Some(EdgeType::TwoCrossings),
+        _ => None,
+    }
+}
+
+/// Left-right classification of Def 4.2: artificial edge `a` of one
+/// embedding, seen from its witness `w`, against the line of an artificial
+/// edge `b` of the other. `Some(true)` for LR (w and a's left end on the
+/// same side of b), `Some(false)` for RL, `None` if a point lies on the
+/// line or the ends are not told apart.
+pub fn left_right(w: &Pt, a: (&Pt, &Pt), b: (&Pt, &Pt)) -> Option<bool> {
+    use crate::piece::turn;
+    // The left end, viewed from w: the one counter-clockwise of the other.
+    let (left, right) = match turn(w, a.0, a.1) {
+        Ordering::Greater => (a.1, a.0),
+        Ordering::Less => (a.0, a.1),
+        Ordering::Equal => return None,
+    };
+    let side = |x: &Pt| turn(b.0, b.1, x);
+    let sw = side(w);
+    if sw == Ordering::Equal {
+        return None;
+    }
+    match (side(left) == sw, side(right) == sw) {
+        (true, false) => Some(true),
+        (false, true) => Some(false),
+        _ => None,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn ring(pts: &[(i64, i64)]) -> Vec<Pt> {
+        pts.iter()
+            .map(|&(x, y)| Pt::new(Rational::from(x), Rational::from(y)))
+            .collect()
+    }
+
+    #[test]
+    fn two_squares_one_square_of_intersection() {
+        let p = ring(&[(0, 0), (4, 0), (4, 4), (0, 4)]);
+        let q = ring(&[(2, 2), (6, 2), (6, 6), (2, 6)]);
+        let x = Intersection::of(&p, &q);
+        assert_eq!(x.components(), 1);
+        assert_eq!(x.cycles[0].len(), 4);
+        // A vertex of one on an edge of the other splits the edge there.
+        let r = ring(&[(0, 2), (2, 2), (2, 6), (0, 6)]);
+        assert_eq!(Intersection::of(&p, &r).cycles[0].len(), 4);
+        let s = ring(&[(-2, 2), (4, 2), (4, 6), (-2, 6)]);
+        let x = Intersection::of(&p, &s);
+        assert_eq!(x.components(), 1);
+        assert_eq!(x.cycles[0].len(), 4);
+    }
+
+    #[test]
+    fn a_comb_and_a_bar_meet_in_two_components() {
+        // A U shape and a bar across both of its arms.
+        let u = ring(&[
+            (0, 0),
+            (6, 0),
+            (6, 6),
+            (4, 6),
+            (4, 2),
+            (2, 2),
+            (2, 6),
+            (0, 6),
+        ]);
+        let bar = ring(&[(-1, 3), (7, 3), (7, 5), (-1, 5)]);
+        let x = Intersection::of(&u, &bar);
+        assert_eq!(x.components(), 2);
+        // Touching along an edge only: nothing.
+        let beside = ring(&[(6, 0), (8, 0), (8, 2), (6, 2)]);
+        assert_eq!(Intersection::of(&u, &beside).components(), 0);
+    }
+
+    #[test]
+    fn pieces_of_a_segment_inside_a_polygon() {
+        let u = ring(&[
+            (0, 0),
+            (6, 0),
+            (6, 6),
+            (4, 6),
+            (4, 2),
+            (2, 2),
+            (2, 6),
+            (0, 6),
+        ]);
+        let pt = |x: i64, y: i64| Pt::new(Rational::from(x), Rational::from(y));
+        assert_eq!(pieces_inside(&pt(-1, 4), &pt(7, 4), &u), 2);
+        assert_eq!(pieces_inside(&pt(-1, 1), &pt(7, 1), &u), 1);
+        assert_eq!(pieces_inside(&pt(-1, 8), &pt(7, 8), &u), 0);
+        // Touching the inner corner (2, 2) from above: one point.
+        assert_eq!(pieces_inside(&pt(1, 3), &pt(3, 1), &u), 1);
+    }
+
+    #[test]
+    fn meeting_edges_exclude_a_shared_end() {
+        let pt = |x: i64, y: i64| Pt::new(Rational::from(x), Rational::from(y));
+        let (a, b, c) = (pt(0, 0), pt(2, 0), pt(2, 2));
+        assert!(!edges_meet((&a, &b), (&b, &c)));
+        assert!(edges_meet((&a, &b), (&pt(1, -1), &pt(1, 1))));
+        // Collinear, sharing an end and overlapping beyond it.
+        assert!(edges_meet((&a, &b), (&a, &pt(1, 0))));
+        assert!(!edges_meet((&a, &b), (&b, &pt(3, 0))));
+    }
+
+    #[test]
+    fn left_right_follows_def_4_2() {
+        let pt = |x: i64, y: i64| Pt::new(Rational::from(x), Rational::from(y));
+        // w below, a horizontal above it from (-2, 2) to (2, 2): its left
+        // end seen from w is (-2, 2).
+        let w = pt(0, 0);
+        let (a0, a1) = (pt(-2, 2), pt(2, 2));
+        // b crosses a near its right end, running up and to the right: w
+        // and the left end are on the same side → LR.
+        assert_eq!(
+            left_right(&w, (&a0, &a1), (&pt(1, 0), &pt(2, 4))),
+            Some(true)
+        );
+        assert_eq!(
+            left_right(&w, (&a0, &a1), (&pt(-1, 0), &pt(-2, 4))),
+            Some(false)
+        );
+    }
+}

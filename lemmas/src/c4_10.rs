@@ -1,0 +1,97 @@
+//! Claim C4.10 (Corollary 4.10): the intersection polygon of two
+//! overlapping valid embeddings has at most four type-5 edges (parts of an
+//! artificial edge meeting two artificial edges of the other embedding).
+//!
+//! ## Trust
+//! Exact, on the same intersections and the same classification as
+//! [`crate::l4_7`]. Count `with type 5`: intersections that have one.
+
+use serde_json::json;
+use std::collections::HashSet;
+use wai_embed::intersection::EdgeType;
+use wai_embed::Pt;
+
+use crate::driver::{Checker, Report, Violation};
+use crate::l4_7::types;
+use crate::Study;
+
+const ID: &str = "C4.10";
+
+/// Checks C4.10 on every intersection polygon in scope.
+#[derive(Debug, Clone, Copy, Default)]
+pub struct FourTypeFive;
+
+/// The registry's constructor.
+pub fn checker() -> Box<dyn Checker> {
+    Box::new(FourTypeFive)
+}
+
+impl Checker for FourTypeFive {
+    fn id(&self) -> &'static str {
+        ID
+    }
+
+    fn check_study(&self, study: &Study<'_>) -> Report {
+        let rings = study.skeleton_rings();
+        let vertices: HashSet<Pt> = study
+            .map()
+            .vertices()
+            .iter()
+            .map(|&p| Pt::from(p))
+            .collect();
+        let mut report = Report::new(ID);
+        for pair in study.embedding_pairs() {
+            let Some(x) = &pair.intersection else {
+                continue;
+            };
+            if x.components() != 1 {
+                continue;
+            }
+            let (p, q) = (
+                &rings[pair.first.0][pair.first.1],
+                &rings[pair.second.0][pair.second.1],
+            );
+            let fives = types(x, p, q, &vertices)
+                .into_iter()
+                .filter(|t| *t == Some(EdgeType::TwoCrossings))
+                .count();
+            report.record(check(fives).map(|mut v| {
+                v.data["pair"] = json!([pair.first, pair.second]);
+                v
+            }));
+            if fives > 0 {
+                report.count("with type 5", 1);
+            }
+        }
+        report
+    }
+}
+
+/// At most four type-5 edges.
+pub fn check(fives: usize) -> Option<Violation> {
+    (fives > 4).then(|| {
+        Violation::with_data(
+            format!("an intersection polygon has {fives} type-5 edges"),
+            json!({ "type_5_edges": fives }),
+        )
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn holds_on_the_funnel_figure() {
+        let map = wai_gen::repeated_niches(195);
+        let report = FourTypeFive.check_study(&Study::new(&map));
+        assert!(report.examined > 0);
+        assert!(report.violations.is_empty());
+    }
+
+    #[test]
+    fn planted_five_is_reported() {
+        assert!(check(4).is_none());
+        assert!(check(5).unwrap().what.contains("5 type-5"));
+    }
+}
