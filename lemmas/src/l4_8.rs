@@ -4,16 +4,20 @@
 //! to both.
 //!
 //! ## Trust
-//! Exact, on the overlapping pairs of [`crate::Study::embedding_pairs`],
-//! both ways round, for every witness of h — one point per witness cell
-//! (the decomposition's representative): Def 4.2 is stated for a witness,
-//! and the lemma for any. A classification that a point on a line leaves
-//! undecided ([`wai_embed::intersection::left_right`] gives `None`) is not
-//! examined; count `undecided`.
+//! Exact over whole witness regions, on the overlapping pairs of
+//! [`crate::Study::embedding_pairs`], both ways round: Def 4.2 is stated
+//! for a witness, and the lemma for any. The classification of h(a) from w
+//! changes only where w crosses the line of h(a), h'(b) or h'(c); so each
+//! witness cell is cut by those lines
+//! ([`wai_embed::piece::part_points`]) and one point of each part tested.
+//! Witnesses on such a line leave the classification undecided
+//! ([`wai_embed::intersection::left_right`] gives `None`); count
+//! `undecided`.
 
 use serde_json::json;
 use wai_embed::intersection::{artificial_crossings, left_right};
-use wai_embed::{Pt, SkeletonRing};
+use wai_embed::piece::part_points;
+use wai_embed::{Piece, SkeletonRing};
 
 use crate::driver::{Checker, Report, Violation};
 use crate::Study;
@@ -44,7 +48,7 @@ impl Checker for SameSense {
             }
             for (one, other) in [(pair.first, pair.second), (pair.second, pair.first)] {
                 let (p, q) = (&rings[one.0][one.1], &rings[other.0][other.1]);
-                let witnesses = study.witness_points(one.0, one.1);
+                let witnesses = study.witnesses()[one.0][one.1].pieces();
                 let mut r = check(p, q, &witnesses);
                 for v in &mut r.violations {
                     v.data["pair"] = json!([one, other]);
@@ -57,13 +61,18 @@ impl Checker for SameSense {
 }
 
 /// Every artificial edge of `p` meeting exactly two artificial edges of
-/// `q`, from every witness of `p`.
-pub fn check(p: &SkeletonRing, q: &SkeletonRing, witnesses: &[Pt]) -> Report {
+/// `q`, from every witness of `p` (the points of `witnesses`).
+pub fn check(p: &SkeletonRing, q: &SkeletonRing, witnesses: &[Piece]) -> Report {
     let mut report = Report::new(ID);
+    let line = |r: &SkeletonRing, k: usize| {
+        let (x, y) = r.edge(k);
+        (x.clone(), y.clone())
+    };
     for i in p.artificial_edges() {
         let meets = artificial_crossings(p, i, q);
         let [b, c] = meets[..] else { continue };
-        for w in witnesses {
+        let lines = [line(p, i), line(q, b), line(q, c)];
+        for w in &part_points(witnesses, &lines) {
             let (sb, sc) = (
                 left_right(w, p.edge(i), q.edge(b)),
                 left_right(w, p.edge(i), q.edge(c)),
@@ -92,6 +101,7 @@ pub fn check(p: &SkeletonRing, q: &SkeletonRing, witnesses: &[Pt]) -> Report {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use wai_embed::Pt;
     use wai_exact::Point;
 
     #[test]
@@ -130,7 +140,7 @@ mod tests {
             ]),
             vec![false, true, false, true, false, false, false, false],
         );
-        let w = Pt::new(rug::Rational::from(0), rug::Rational::from(1));
+        let w = Piece::Point(Pt::new(rug::Rational::from(0), rug::Rational::from(1)));
         let report = check(&p, &q, &[w]);
         assert_eq!(report.examined, 1);
         assert_eq!(report.violations.len(), 1, "{:?}", report.violations);

@@ -5,13 +5,18 @@
 //! RL/RL, and of the x LR/RL and y RL/LR pairs, min{x, y} ≤ 1.
 //!
 //! ## Trust
-//! Exact, on the overlapping pairs of [`crate::Study::embedding_pairs`],
-//! for every pair of witnesses (one point per witness cell of each). A
-//! meeting pair that a point on a line leaves undecided is left out of
-//! the tallies; count `undecided`.
+//! Exact over whole witness regions, on the overlapping pairs of
+//! [`crate::Study::embedding_pairs`]: the tallies change only where w or
+//! w' crosses the line of a meeting artificial edge, so each witness
+//! region is cut by those lines ([`wai_embed::piece::part_points`]) and
+//! every pair of parts, one of each region, is tested. A meeting pair that
+//! a witness on a line leaves undecided (collinear common artificial
+//! edges, type 2, always are) is left out of the tallies; count
+//! `undecided`.
 
 use serde_json::json;
 use wai_embed::intersection::{edges_meet, left_right};
+use wai_embed::piece::part_points;
 use wai_embed::{Pt, SkeletonRing};
 
 use crate::driver::{Checker, Report, Violation};
@@ -44,8 +49,15 @@ impl Checker for FewCrossings {
                 &rings[pair.first.0][pair.first.1],
                 &rings[pair.second.0][pair.second.1],
             );
-            let ws = study.witness_points(pair.first.0, pair.first.1);
-            let ws2 = study.witness_points(pair.second.0, pair.second.1);
+            let lines = meeting_lines(p, q);
+            let ws = part_points(
+                &study.witnesses()[pair.first.0][pair.first.1].pieces(),
+                &lines,
+            );
+            let ws2 = part_points(
+                &study.witnesses()[pair.second.0][pair.second.1].pieces(),
+                &lines,
+            );
             for w in &ws {
                 for w2 in &ws2 {
                     let mut r = check(p, q, w, w2);
@@ -58,6 +70,24 @@ impl Checker for FewCrossings {
         }
         report
     }
+}
+
+/// The lines of the artificial edges of `p` and `q` that meet one of the
+/// other: the only lines across which a witness's tallies change.
+pub fn meeting_lines(p: &SkeletonRing, q: &SkeletonRing) -> Vec<(Pt, Pt)> {
+    let mut lines = Vec::new();
+    for i in p.artificial_edges() {
+        for j in q.artificial_edges() {
+            if edges_meet(p.edge(i), q.edge(j)) {
+                for (x, y) in [p.edge(i), q.edge(j)] {
+                    lines.push((x.clone(), y.clone()));
+                }
+            }
+        }
+    }
+    lines.sort();
+    lines.dedup();
+    lines
 }
 
 /// The tallies (LR/LR, RL/RL, LR/RL, RL/LR) of one pair and witnesses,

@@ -234,15 +234,6 @@ impl<'m> Study<'m> {
         })
     }
 
-    /// The witness cells' points of embedding `i` of class `class`.
-    pub fn witness_points(&self, class: usize, i: usize) -> Vec<Pt> {
-        self.witnesses()[class][i]
-            .cells
-            .iter()
-            .map(|c| Pt::from(&c.point))
-            .collect()
-    }
-
     /// The pairs of valid embeddings the sec. 4.4 claims examine: of one
     /// skeleton always, of different skeletons on maps of at most
     /// [`CROSS_SKELETON_MAX_N`] vertices; those whose polygons' bounding

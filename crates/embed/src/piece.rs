@@ -442,6 +442,24 @@ impl<'p> Parallel<'p> {
     }
 }
 
+/// One point of each part into which `lines` (each through two distinct
+/// points) cut `pieces`: across a part no point crosses a line, so
+/// whatever depends only on sides of those lines is the same at all its
+/// points. Points on a line are left out (see [`Piece::split`]).
+pub fn part_points(pieces: &[Piece], lines: &[(Pt, Pt)]) -> Vec<Pt> {
+    let mut parts: Vec<Piece> = pieces.to_vec();
+    for (a, b) in lines {
+        parts = parts
+            .into_iter()
+            .flat_map(|p| match p.split(a, b) {
+                Some((l, r)) => vec![l, r],
+                None => vec![p],
+            })
+            .collect();
+    }
+    parts.iter().map(Piece::inner_point).collect()
+}
+
 /// Where segment `pq` meets the line through `a` and `b` (they cross).
 fn line_cut(p: &Pt, q: &Pt, a: &Pt, b: &Pt) -> Pt {
     let e = b.sub(a);

@@ -141,3 +141,35 @@ fn figs_4_1_and_4_2_overlapping_kernels_and_crossing_artificial_edges() {
         .regions_by_points(&ws[0].pieces(), &ws[1].pieces())
         .is_visible());
 }
+
+#[test]
+fn fig_4_16_four_type_5_edges_and_no_map_vertex() {
+    use std::collections::HashSet;
+    use wai_embed::intersection::EdgeType;
+    let (map, points) = load("E4.10-four-type-5.json");
+    let study = Study::new(&map);
+    let (_, class) = common_skeleton(&study, &points);
+    assert_eq!(study.embeddings()[class].len(), 2);
+    assert!(study.witnesses()[class].iter().all(|w| w.is_valid()));
+    let pair = study
+        .embedding_pairs()
+        .iter()
+        .find(|p| p.first.0 == class && p.second.0 == class)
+        .expect("the two embeddings are a pair");
+    let x = pair.intersection.as_ref().expect("they overlap");
+    let rings = study.skeleton_rings();
+    let vertices: HashSet<Pt> = map.vertices().iter().map(|&p| Pt::from(p)).collect();
+    let types = wai_lemmas::l4_7::types(x, &rings[class][0], &rings[class][1], &vertices);
+    assert_eq!(types, vec![Some(EdgeType::TwoCrossings); 4]);
+    assert!(x
+        .cycles
+        .iter()
+        .flatten()
+        .all(|e| !vertices.contains(&e.from)));
+    let overlapping = study
+        .overlapping_pairs()
+        .iter()
+        .find(|p| p.class == class)
+        .unwrap();
+    assert!(!overlapping.sight.is_visible());
+}
