@@ -7,12 +7,10 @@
 //! [`crate::l4_7`]. Count `with type 5`: intersections that have one.
 
 use serde_json::json;
-use std::collections::HashSet;
 use wai_embed::intersection::EdgeType;
-use wai_embed::Pt;
 
 use crate::driver::{Checker, Report, Violation};
-use crate::l4_7::types;
+use crate::l4_7::classified_pairs;
 use crate::Study;
 
 const ID: &str = "C4.10";
@@ -32,28 +30,11 @@ impl Checker for FourTypeFive {
     }
 
     fn check_study(&self, study: &Study<'_>) -> Report {
-        let rings = study.skeleton_rings();
-        let vertices: HashSet<Pt> = study
-            .map()
-            .vertices()
-            .iter()
-            .map(|&p| Pt::from(p))
-            .collect();
         let mut report = Report::new(ID);
-        for pair in study.embedding_pairs() {
-            let Some(x) = &pair.intersection else {
-                continue;
-            };
-            if x.components() != 1 {
-                continue;
-            }
-            let (p, q) = (
-                &rings[pair.first.0][pair.first.1],
-                &rings[pair.second.0][pair.second.1],
-            );
-            let fives = types(x, p, q, &vertices)
-                .into_iter()
-                .filter(|t| *t == Some(EdgeType::TwoCrossings))
+        for (pair, _, types) in classified_pairs(study) {
+            let fives = types
+                .iter()
+                .filter(|t| **t == Some(EdgeType::TwoCrossings))
                 .count();
             report.record(check(fives).map(|mut v| {
                 v.data["pair"] = json!([pair.first, pair.second]);

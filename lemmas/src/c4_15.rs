@@ -96,11 +96,7 @@ mod tests {
 
     #[test]
     fn planted_witnesses_across_the_intersection_are_reported() {
-        let ring = |v: &[(i64, i64)]| {
-            v.iter()
-                .map(|&(x, y)| Pt::new(Rational::from(x), Rational::from(y)))
-                .collect::<Vec<_>>()
-        };
+        let ring = wai_embed::piece::ints;
         let p = ring(&[(0, 0), (4, 0), (4, 4), (0, 4)]);
         let q = ring(&[(2, 2), (6, 2), (6, 6), (2, 6)]);
         let pt = |x: i64, y: i64| Piece::Point(Pt::new(Rational::from(x), Rational::from(y)));

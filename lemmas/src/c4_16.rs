@@ -113,11 +113,7 @@ mod tests {
 
     #[test]
     fn planted_witnesses_on_either_side_are_reported() {
-        let ring = |v: &[(i64, i64)]| {
-            v.iter()
-                .map(|&(x, y)| Pt::new(Rational::from(x), Rational::from(y)))
-                .collect::<Vec<_>>()
-        };
+        let ring = wai_embed::piece::ints;
         let p = ring(&[(0, 0), (4, 0), (4, 4), (0, 4)]);
         let q = ring(&[(2, 0), (6, 0), (6, 4), (2, 4)]);
         let t = Pt::new(Rational::from(2), Rational::new());

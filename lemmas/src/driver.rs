@@ -91,6 +91,14 @@ impl Report {
         self.violations.extend(violation);
     }
 
+    /// Adds `key: value` to the data of every violation found so far (the
+    /// instance they belong to: a pair of embeddings, a class…).
+    pub fn tag(&mut self, key: &str, value: serde_json::Value) {
+        for v in &mut self.violations {
+            v.data[key] = value.clone();
+        }
+    }
+
     /// Adds another report of the same claim to this one.
     pub fn absorb(&mut self, other: Report) {
         debug_assert_eq!(self.claim, other.claim, "reports of one claim");

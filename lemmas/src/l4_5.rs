@@ -50,9 +50,7 @@ impl Checker for TwoCrossings {
             if !pair.same_skeleton() {
                 report.count("different skeletons", r.examined);
             }
-            for v in &mut r.violations {
-                v.data["pair"] = json!([pair.first, pair.second]);
-            }
+            r.tag("pair", json!([pair.first, pair.second]));
             report.absorb(r);
         }
         report

@@ -62,7 +62,6 @@ pub fn check(x: &Intersection) -> Option<Violation> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use wai_embed::Pt;
 
     #[test]
     fn holds_on_the_funnel_figure() {
@@ -74,11 +73,7 @@ mod tests {
 
     #[test]
     fn planted_two_regions_are_reported() {
-        let ring = |v: &[(i64, i64)]| {
-            v.iter()
-                .map(|&(x, y)| Pt::new(rug::Rational::from(x), rug::Rational::from(y)))
-                .collect::<Vec<_>>()
-        };
+        let ring = wai_embed::piece::ints;
         let u = ring(&[
             (0, 0),
             (6, 0),

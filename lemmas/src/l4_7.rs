@@ -18,6 +18,7 @@ use wai_embed::intersection::{edge_type, EdgeType};
 use wai_embed::{Intersection, Pt, SkeletonRing};
 
 use crate::driver::{Checker, Report, Violation};
+use crate::study::EmbeddingPair;
 use crate::Study;
 
 const ID: &str = "L4.7";
@@ -39,33 +40,36 @@ impl Checker for FiveTypes {
     }
 
     fn check_study(&self, study: &Study<'_>) -> Report {
-        let rings = study.skeleton_rings();
-        let vertices: HashSet<Pt> = study
-            .map()
-            .vertices()
-            .iter()
-            .map(|&p| Pt::from(p))
-            .collect();
         let mut report = Report::new(ID);
-        for pair in study.embedding_pairs() {
-            let Some(x) = &pair.intersection else {
-                continue;
-            };
-            if x.components() != 1 {
-                continue;
-            }
-            let (p, q) = (
-                &rings[pair.first.0][pair.first.1],
-                &rings[pair.second.0][pair.second.1],
-            );
-            let mut r = check(x, p, q, &vertices);
-            for v in &mut r.violations {
-                v.data["pair"] = json!([pair.first, pair.second]);
-            }
+        for (pair, x, types) in classified_pairs(study) {
+            let mut r = check_types(x, &types);
+            r.tag("pair", json!([pair.first, pair.second]));
             report.absorb(r);
         }
         report
     }
+}
+
+/// The overlapping pairs of [`Study::embedding_pairs`] whose intersection
+/// is one region, with its edges' types (shared with C4.10).
+pub fn classified_pairs<'s>(
+    study: &'s Study<'_>,
+) -> impl Iterator<Item = (&'s EmbeddingPair, &'s Intersection, Vec<Option<EdgeType>>)> + 's {
+    let rings = study.skeleton_rings();
+    let vertices: HashSet<Pt> = study
+        .map()
+        .vertices()
+        .iter()
+        .map(|&p| Pt::from(p))
+        .collect();
+    study.embedding_pairs().iter().filter_map(move |pair| {
+        let x = pair.intersection.as_ref().filter(|x| x.components() == 1)?;
+        let (p, q) = (
+            &rings[pair.first.0][pair.first.1],
+            &rings[pair.second.0][pair.second.1],
+        );
+        Some((pair, x, types(x, p, q, &vertices)))
+    })
 }
 
 /// The edges of one intersection polygon, classified.
@@ -89,9 +93,13 @@ pub fn check(
     q: &SkeletonRing,
     vertices: &HashSet<Pt>,
 ) -> Report {
+    check_types(x, &types(x, p, q, vertices))
+}
+
+/// The edges of `x` with their `types`: each must have one.
+fn check_types(x: &Intersection, types: &[Option<EdgeType>]) -> Report {
     let mut report = Report::new(ID);
-    let edges: Vec<_> = x.cycles.iter().flatten().collect();
-    for (e, t) in edges.iter().zip(types(x, p, q, vertices)) {
+    for (e, t) in x.cycles.iter().flatten().zip(types) {
         if let Some(t) = t {
             report.count(NAMES[usize::from(t.number()) - 1], 1);
         }

@@ -50,9 +50,7 @@ impl Checker for SameSense {
                 let (p, q) = (&rings[one.0][one.1], &rings[other.0][other.1]);
                 let witnesses = study.witnesses()[one.0][one.1].pieces();
                 let mut r = check(p, q, &witnesses);
-                for v in &mut r.violations {
-                    v.data["pair"] = json!([one, other]);
-                }
+                r.tag("pair", json!([one, other]));
                 report.absorb(r);
             }
         }

@@ -61,9 +61,7 @@ impl Checker for FewCrossings {
             for w in &ws {
                 for w2 in &ws2 {
                     let mut r = check(p, q, w, w2);
-                    for v in &mut r.violations {
-                        v.data["pair"] = json!([pair.first, pair.second]);
-                    }
+                    r.tag("pair", json!([pair.first, pair.second]));
                     report.absorb(r);
                 }
             }

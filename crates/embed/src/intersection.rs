@@ -364,11 +364,7 @@ pub fn left_right(w: &Pt, a: (&Pt, &Pt), b: (&Pt, &Pt)) -> Option<bool> {
 mod tests {
     use super::*;
 
-    fn ring(pts: &[(i64, i64)]) -> Vec<Pt> {
-        pts.iter()
-            .map(|&(x, y)| Pt::new(Rational::from(x), Rational::from(y)))
-            .collect()
-    }
+    use crate::piece::ints as ring;
 
     #[test]
     fn two_squares_one_square_of_intersection() {

@@ -26,7 +26,9 @@
 //! which the strict in-between samples find. Every "visible" answer comes
 //! with two exact points, re-checked by [`wai_exact::sees`].
 
-use crate::piece::{cross, dot, segments_meet, turn, Parallel, Piece, Pt, Span};
+use crate::piece::{
+    cross, dot, offsets_between, projection, segments_meet, turn, Bounds, Parallel, Piece, Pt, Span,
+};
 use rug::{Integer, Rational};
 use std::cmp::Ordering;
 use wai_exact::{sees, Point};
@@ -204,39 +206,6 @@ fn cone(vs: impl IntoIterator<Item = Pt>) -> Option<Cone> {
     Some(c)
 }
 
-/// The closed axis-parallel box around some points: a cheap first test
-/// before the exact ones.
-struct BoundingBox {
-    lo: (Rational, Rational),
-    hi: (Rational, Rational),
-}
-
-impl BoundingBox {
-    fn of(pts: &[Pt]) -> BoundingBox {
-        let min = |f: fn(&Pt) -> &Rational| pts.iter().map(f).min().cloned().unwrap_or_default();
-        let max = |f: fn(&Pt) -> &Rational| pts.iter().map(f).max().cloned().unwrap_or_default();
-        BoundingBox {
-            lo: (min(|p| &p.x), min(|p| &p.y)),
-            hi: (max(|p| &p.x), max(|p| &p.y)),
-        }
-    }
-
-    /// False only if the closed segment `pq` surely misses the box.
-    fn meets_segment(&self, p: &Pt, q: &Pt) -> bool {
-        let (xl, xh) = if p.x <= q.x {
-            (&p.x, &q.x)
-        } else {
-            (&q.x, &p.x)
-        };
-        let (yl, yh) = if p.y <= q.y {
-            (&p.y, &q.y)
-        } else {
-            (&q.y, &p.y)
-        };
-        !(*xh < self.lo.0 || *xl > self.hi.0 || *yh < self.lo.1 || *yl > self.hi.1)
-    }
-}
-
 /// Whether `p` lies in the closed convex hull `h` (as [`hull`] returns it).
 fn in_hull(h: &[Pt], p: &Pt) -> bool {
     match h.len() {
@@ -291,22 +260,22 @@ impl<'m> Sightlines<'m> {
 
     /// The map edges that meet the closed hull `h`.
     fn edges_near(&self, h: &[Pt]) -> Vec<usize> {
-        let b = BoundingBox::of(h);
+        let b = Bounds::of(h);
         (0..self.points.len())
             .filter(|&i| {
                 let (p, q) = self.edge(i);
-                b.meets_segment(p, q) && segment_meets_hull(h, p, q)
+                b.meets(p, q) && segment_meets_hull(h, p, q)
             })
             .collect()
     }
 
     /// The reflex map vertices in the closed hull `h`.
     fn reflex_in(&self, h: &[Pt]) -> Vec<Pt> {
-        let b = BoundingBox::of(h);
+        let b = Bounds::of(h);
         (0..self.points.len())
             .filter(|&i| {
                 self.reflex[i]
-                    && b.meets_segment(&self.points[i], &self.points[i])
+                    && b.meets(&self.points[i], &self.points[i])
                     && in_hull(h, &self.points[i])
             })
             .map(|i| self.points[i].clone())
@@ -360,31 +329,13 @@ impl<'m> Sightlines<'m> {
     /// Does some point of a piece of `a` see some point of a piece of `b`?
     /// By the search over lines (see the module doc).
     pub fn regions_by_lines(&self, a: &[Piece], b: &[Piece]) -> Mutual {
-        let mut tested = 0;
-        for p in a {
-            for q in b {
-                match self.by_lines(p, q) {
-                    Mutual::Invisible { tested: t } => tested += t,
-                    seen => return seen,
-                }
-            }
-        }
-        Mutual::Invisible { tested }
+        all_pairs(a, b, |p, q| self.by_lines(p, q))
     }
 
     /// As [`Sightlines::regions_by_lines`], by the cuts and sweeps from
     /// points.
     pub fn regions_by_points(&self, a: &[Piece], b: &[Piece]) -> Mutual {
-        let mut tested = 0;
-        for p in a {
-            for q in b {
-                match self.by_points(p, q) {
-                    Mutual::Invisible { tested: t } => tested += t,
-                    seen => return seen,
-                }
-            }
-        }
-        Mutual::Invisible { tested }
+        all_pairs(a, b, |p, q| self.by_points(p, q))
     }
 
     /// One pair of pieces, by the search over lines.
@@ -438,13 +389,7 @@ impl<'m> Sightlines<'m> {
         let mut tested = 0;
         for d in tests {
             let n = d.perp();
-            let range = |v: &[Pt]| {
-                let proj: Vec<Rational> = v.iter().map(|p| dot(&n, p)).collect();
-                let lo = proj.iter().min().expect("pieces have vertices").clone();
-                let hi = proj.iter().max().expect("pieces have vertices").clone();
-                (lo, hi)
-            };
-            let ((alo, ahi), (blo, bhi)) = (range(&va), range(&vb));
+            let ((alo, ahi), (blo, bhi)) = (projection(&n, &va), projection(&n, &vb));
             let offsets: Vec<Rational> = if let Some(f) = &fixed {
                 let u = dot(&n, f);
                 let other = if matches!(a, Piece::Point(_)) {
@@ -462,18 +407,7 @@ impl<'m> Sightlines<'m> {
                 if lo >= hi {
                     continue;
                 }
-                let mut cuts: Vec<Rational> = e
-                    .iter()
-                    .map(|p| dot(&n, p))
-                    .filter(|u| lo < *u && *u < hi)
-                    .collect();
-                cuts.push(lo);
-                cuts.push(hi);
-                cuts.sort();
-                cuts.dedup();
-                cuts.windows(2)
-                    .map(|w| Rational::from(&w[0] + &w[1]) / 2u32)
-                    .collect()
+                offsets_between(&e, &n, lo, hi)
             };
             let (pa, pb) = (Parallel::new(a, &d), Parallel::new(b, &d));
             for u in offsets {
@@ -620,6 +554,21 @@ impl<'m> Sightlines<'m> {
         }
         Mutual::Invisible { tested }
     }
+}
+
+/// `test` on every pair of a piece of `a` and one of `b`: the first
+/// "visible", or "invisible" with the sight lines of all tests summed.
+fn all_pairs(a: &[Piece], b: &[Piece], test: impl Fn(&Piece, &Piece) -> Mutual) -> Mutual {
+    let mut tested = 0;
+    for p in a {
+        for q in b {
+            match test(p, q) {
+                Mutual::Invisible { tested: t } => tested += t,
+                seen => return seen,
+            }
+        }
+    }
+    Mutual::Invisible { tested }
 }
 
 /// The least `t > 0` at which the ray `w + t·d` meets the closed segment

@@ -62,11 +62,7 @@ pub fn common_interior_point(polygons: &[Vec<Pt>]) -> Option<Pt> {
 mod tests {
     use super::*;
 
-    fn ring(pts: &[(i64, i64)]) -> Vec<Pt> {
-        pts.iter()
-            .map(|&(x, y)| Pt::new(Rational::from(x), Rational::from(y)))
-            .collect()
-    }
+    use crate::piece::ints as ring;
 
     #[test]
     fn three_squares_share_a_corner_region_or_not() {

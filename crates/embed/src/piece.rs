@@ -180,6 +180,103 @@ pub fn convex_hull(pts: Vec<Pt>) -> Vec<Pt> {
     crate::mutual::hull(pts)
 }
 
+/// The parameters `t` with `α + t·β > 0` for every `(α, β)` given, an open
+/// interval (the constraints of a bounded open convex polygon), if any.
+fn open_span(constraints: impl Iterator<Item = (Rational, Rational)>) -> Option<Span> {
+    let mut lo: Option<Rational> = None;
+    let mut hi: Option<Rational> = None;
+    for (alpha, beta) in constraints {
+        match beta.cmp0() {
+            Ordering::Equal if alpha <= 0 => return None,
+            Ordering::Equal => {}
+            Ordering::Greater => {
+                let t = -alpha / beta;
+                if lo.as_ref().is_none_or(|l| t > *l) {
+                    lo = Some(t);
+                }
+            }
+            Ordering::Less => {
+                let t = -alpha / beta;
+                if hi.as_ref().is_none_or(|h| t < *h) {
+                    hi = Some(t);
+                }
+            }
+        }
+    }
+    match (lo, hi) {
+        (Some(lo), Some(hi)) if lo < hi => Some(Span::Open(lo, hi)),
+        _ => None,
+    }
+}
+
+/// Points with small integer coordinates (for tests and figures).
+pub fn ints(pts: &[(i64, i64)]) -> Vec<Pt> {
+    pts.iter()
+        .map(|&(x, y)| Pt::new(Rational::from(x), Rational::from(y)))
+        .collect()
+}
+
+/// The closed axis-parallel box around some points: a cheap first test
+/// before the exact ones.
+#[derive(Clone, Debug)]
+pub(crate) struct Bounds {
+    pub lo: (Rational, Rational),
+    pub hi: (Rational, Rational),
+}
+
+impl Bounds {
+    pub fn of(pts: &[Pt]) -> Bounds {
+        let min = |f: fn(&Pt) -> &Rational| pts.iter().map(f).min().cloned().unwrap_or_default();
+        let max = |f: fn(&Pt) -> &Rational| pts.iter().map(f).max().cloned().unwrap_or_default();
+        Bounds {
+            lo: (min(|p| &p.x), min(|p| &p.y)),
+            hi: (max(|p| &p.x), max(|p| &p.y)),
+        }
+    }
+
+    /// False only if the closed segment `ab` surely misses the box.
+    pub fn meets(&self, a: &Pt, b: &Pt) -> bool {
+        let (xl, xh) = if a.x <= b.x {
+            (&a.x, &b.x)
+        } else {
+            (&b.x, &a.x)
+        };
+        let (yl, yh) = if a.y <= b.y {
+            (&a.y, &b.y)
+        } else {
+            (&b.y, &a.y)
+        };
+        !(*xh < self.lo.0 || *xl > self.hi.0 || *yh < self.lo.1 || *yl > self.hi.1)
+    }
+}
+
+/// The least and greatest of `n · v` over `vertices`.
+pub(crate) fn projection(n: &Pt, vertices: &[Pt]) -> (Rational, Rational) {
+    let proj: Vec<Rational> = vertices.iter().map(|v| dot(n, v)).collect();
+    (
+        proj.iter().min().cloned().unwrap_or_default(),
+        proj.iter().max().cloned().unwrap_or_default(),
+    )
+}
+
+/// Offsets strictly between `lo` and `hi` and between any two consecutive
+/// projections `n · p` of the points `e` that fall between them: one per
+/// open slab of parallel lines of normal `n`.
+pub(crate) fn offsets_between(e: &[Pt], n: &Pt, lo: Rational, hi: Rational) -> Vec<Rational> {
+    let mut cuts: Vec<Rational> = e
+        .iter()
+        .map(|p| dot(n, p))
+        .filter(|u| lo < *u && *u < hi)
+        .collect();
+    cuts.push(lo);
+    cuts.push(hi);
+    cuts.sort();
+    cuts.dedup();
+    cuts.windows(2)
+        .map(|w| Rational::from(&w[0] + &w[1]) / 2u32)
+        .collect()
+}
+
 /// A relatively open convex piece of the plane: a cell of dimension 0, 1
 /// or 2 (its points; the boundary of a segment or polygon excluded).
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -283,34 +380,11 @@ impl Piece {
             Piece::Polygon(v) => {
                 // Inside: left of every edge a→b, (b − a) × (p0 + t·d − a) > 0,
                 // i.e. α + t·β > 0.
-                let mut lo: Option<Rational> = None;
-                let mut hi: Option<Rational> = None;
-                for i in 0..v.len() {
+                open_span((0..v.len()).map(|i| {
                     let (a, b) = (&v[i], &v[(i + 1) % v.len()]);
                     let e = b.sub(a);
-                    let alpha = cross(&e, &p0.sub(a));
-                    let beta = cross(&e, d);
-                    match beta.cmp0() {
-                        Ordering::Equal if alpha <= 0 => return None,
-                        Ordering::Equal => {}
-                        Ordering::Greater => {
-                            let t = -alpha / beta;
-                            if lo.as_ref().is_none_or(|l| t > *l) {
-                                lo = Some(t);
-                            }
-                        }
-                        Ordering::Less => {
-                            let t = -alpha / beta;
-                            if hi.as_ref().is_none_or(|h| t < *h) {
-                                hi = Some(t);
-                            }
-                        }
-                    }
-                }
-                match (lo, hi) {
-                    (Some(lo), Some(hi)) if lo < hi => Some(Span::Open(lo, hi)),
-                    _ => None,
-                }
+                    (cross(&e, &p0.sub(a)), cross(&e, d))
+                }))
             }
         }
     }
@@ -414,31 +488,11 @@ impl<'p> Parallel<'p> {
         if !matches!(self.piece, Piece::Polygon(_)) {
             return self.piece.span(&self.base(u), &self.d);
         }
-        let mut lo: Option<Rational> = None;
-        let mut hi: Option<Rational> = None;
-        for (k, c, beta) in &self.edges {
-            let alpha = Rational::from(u * k) - c;
-            match beta.cmp0() {
-                Ordering::Equal if alpha <= 0 => return None,
-                Ordering::Equal => {}
-                Ordering::Greater => {
-                    let t = -alpha / beta;
-                    if lo.as_ref().is_none_or(|l| t > *l) {
-                        lo = Some(t);
-                    }
-                }
-                Ordering::Less => {
-                    let t = -alpha / beta;
-                    if hi.as_ref().is_none_or(|h| t < *h) {
-                        hi = Some(t);
-                    }
-                }
-            }
-        }
-        match (lo, hi) {
-            (Some(lo), Some(hi)) if lo < hi => Some(Span::Open(lo, hi)),
-            _ => None,
-        }
+        open_span(
+            self.edges
+                .iter()
+                .map(|(k, c, beta)| (Rational::from(u * k) - c, beta.clone())),
+        )
     }
 }
 
@@ -474,7 +528,7 @@ mod tests {
     use super::*;
 
     fn pt(x: i64, y: i64) -> Pt {
-        Pt::new(Rational::from(x), Rational::from(y))
+        ints(&[(x, y)]).remove(0)
     }
 
     #[test]

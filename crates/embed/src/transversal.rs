@@ -3,7 +3,7 @@
 //! the intersection of their embeddings?), decided exactly and completely.
 
 use crate::mutual::{axes, between, half, hull, upper};
-use crate::piece::{dot, Piece, Pt};
+use crate::piece::{dot, offsets_between, projection, Piece, Pt};
 use rug::Rational;
 
 /// A line meeting `a`, `b` and `c`, as a point of `a` and a point of `b`
@@ -57,31 +57,17 @@ pub fn transversal(a: &Piece, b: &Piece, c: &Piece) -> Option<(Pt, Pt)> {
         let offsets: Vec<Rational> = match &fixed {
             Some(f) => vec![dot(&n, f)],
             None => {
-                let range = |p: &Piece| {
-                    let proj: Vec<Rational> = p.vertices().iter().map(|v| dot(&n, v)).collect();
-                    (
-                        proj.iter().min().cloned().unwrap_or_default(),
-                        proj.iter().max().cloned().unwrap_or_default(),
-                    )
-                };
-                let (ra, rb, rc) = (range(a), range(b), range(c));
+                let (ra, rb, rc) = (
+                    projection(&n, &a.vertices()),
+                    projection(&n, &b.vertices()),
+                    projection(&n, &c.vertices()),
+                );
                 let lo = ra.0.max(rb.0).max(rc.0);
                 let hi = ra.1.min(rb.1).min(rc.1);
                 if lo >= hi {
                     continue;
                 }
-                let mut cuts: Vec<Rational> = e
-                    .iter()
-                    .map(|p| dot(&n, p))
-                    .filter(|u| lo < *u && *u < hi)
-                    .collect();
-                cuts.push(lo);
-                cuts.push(hi);
-                cuts.sort();
-                cuts.dedup();
-                cuts.windows(2)
-                    .map(|w| Rational::from(&w[0] + &w[1]) / 2u32)
-                    .collect()
+                offsets_between(&e, &n, lo, hi)
             }
         };
         for u in offsets {

@@ -14,7 +14,7 @@
 //! points of the absorbing 2-cell.
 
 use crate::embedding::Embedding;
-use crate::piece::{turn, Piece, Pt};
+use crate::piece::{turn, Bounds, Piece, Pt};
 use std::cmp::Ordering;
 use std::collections::BTreeSet;
 use wai_cells::{Decomposition, FaceId, LowerSite};
@@ -205,40 +205,6 @@ pub fn interiors_overlap(p: &[Pt], q: &[Pt]) -> bool {
         return false;
     }
     one_side_overlaps(p, q, &bq) || one_side_overlaps(q, p, &bp)
-}
-
-/// The closed axis-parallel box of some points.
-struct Bounds {
-    lo: (rug::Rational, rug::Rational),
-    hi: (rug::Rational, rug::Rational),
-}
-
-impl Bounds {
-    fn of(pts: &[Pt]) -> Bounds {
-        let min =
-            |f: fn(&Pt) -> &rug::Rational| pts.iter().map(f).min().cloned().unwrap_or_default();
-        let max =
-            |f: fn(&Pt) -> &rug::Rational| pts.iter().map(f).max().cloned().unwrap_or_default();
-        Bounds {
-            lo: (min(|p| &p.x), min(|p| &p.y)),
-            hi: (max(|p| &p.x), max(|p| &p.y)),
-        }
-    }
-
-    /// False only if the closed segment `ab` surely misses the box.
-    fn meets(&self, a: &Pt, b: &Pt) -> bool {
-        let (xl, xh) = if a.x <= b.x {
-            (&a.x, &b.x)
-        } else {
-            (&b.x, &a.x)
-        };
-        let (yl, yh) = if a.y <= b.y {
-            (&a.y, &b.y)
-        } else {
-            (&b.y, &a.y)
-        };
-        !(*xh < self.lo.0 || *xl > self.hi.0 || *yh < self.lo.1 || *yl > self.hi.1)
-    }
 }
 
 fn one_side_overlaps(p: &[Pt], q: &[Pt], bq: &Bounds) -> bool {

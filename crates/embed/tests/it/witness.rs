@@ -3,9 +3,8 @@
 //! candidate edges; the interior-overlap test on its boundary cases.
 
 use crate::common::maps;
-use rug::Rational;
 use wai_cells::Decomposition;
-use wai_embed::{interiors_overlap, valid_candidate_edges, witness_regions, Embedder, Pt};
+use wai_embed::{interiors_overlap, valid_candidate_edges, witness_regions, Embedder};
 use wai_visibility::VisibilityIndex;
 
 #[test]
@@ -43,11 +42,7 @@ fn every_cell_witnesses_one_embedding_and_valid_candidates_are_candidates() {
     assert!(valid > 500, "{valid} valid embeddings");
 }
 
-fn ring(pts: &[(i64, i64)]) -> Vec<Pt> {
-    pts.iter()
-        .map(|&(x, y)| Pt::new(Rational::from(x), Rational::from(y)))
-        .collect()
-}
+use wai_embed::piece::ints as ring;
 
 #[test]
 fn interiors_overlap_only_with_a_common_inner_point() {
