@@ -36,13 +36,14 @@ impl Checker for OneSide {
     }
 
     fn check_study(&self, study: &Study<'_>) -> Report {
-        let rings = study.skeleton_rings();
         let mut report = Report::new(ID);
         for pair in study.overlapping_pairs() {
-            let (p, q) = (&rings[pair.class][pair.a], &rings[pair.class][pair.b]);
+            let x = study
+                .intersection(&study.embedding_pairs()[pair.pair])
+                .expect("an overlapping pair has an intersection");
             let ws = &study.witnesses()[pair.class];
             report.record(
-                check(&p.ring, &q.ring, &ws[pair.a].pieces(), &ws[pair.b].pieces()).map(|mut v| {
+                check(x, &ws[pair.a].pieces(), &ws[pair.b].pieces()).map(|mut v| {
                     v.data["class"] = json!(pair.class);
                     v.data["pair"] = json!([pair.a, pair.b]);
                     v
@@ -53,17 +54,16 @@ impl Checker for OneSide {
     }
 }
 
-/// The open convex hull of the intersection of `p` and `q`.
-fn open_hull(p: &[Pt], q: &[Pt]) -> Option<Piece> {
-    let x = Intersection::of(p, q);
+/// The open convex hull of the intersection `x`.
+fn open_hull(x: &Intersection) -> Option<Piece> {
     let points: Vec<Pt> = x.cycles.iter().flatten().map(|e| e.from.clone()).collect();
     let h = wai_embed::piece::convex_hull(points);
     (h.len() >= 3).then_some(Piece::Polygon(h))
 }
 
 /// One pair: no line through a witness of each crosses the intersection.
-pub fn check(p: &[Pt], q: &[Pt], w: &[Piece], w2: &[Piece]) -> Option<Violation> {
-    let hull = open_hull(p, q)?;
+pub fn check(x: &Intersection, w: &[Piece], w2: &[Piece]) -> Option<Violation> {
+    let hull = open_hull(x)?;
     for a in w {
         for b in w2 {
             if let Some((x, y)) = transversal(a, b, &hull) {
@@ -101,8 +101,9 @@ mod tests {
         let q = ring(&[(2, 2), (6, 2), (6, 6), (2, 6)]);
         let pt = |x: i64, y: i64| Piece::Point(Pt::new(Rational::from(x), Rational::from(y)));
         // Witnesses on the diagonal through the overlap: violated.
-        assert!(check(&p, &q, &[pt(1, 1)], &[pt(5, 5)]).is_some());
+        let x = Intersection::of(&p, &q);
+        assert!(check(&x, &[pt(1, 1)], &[pt(5, 5)]).is_some());
         // Witnesses beside it, their line passing below: holds.
-        assert!(check(&p, &q, &[pt(1, 1)], &[pt(5, 1)]).is_none());
+        assert!(check(&x, &[pt(1, 1)], &[pt(5, 1)]).is_none());
     }
 }

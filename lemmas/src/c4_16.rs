@@ -14,6 +14,7 @@
 
 use rug::Rational;
 use serde_json::json;
+use wai_embed::piece::projection;
 use wai_embed::{Intersection, Piece, Pt};
 
 use crate::driver::{Checker, Report, Violation};
@@ -37,7 +38,6 @@ impl Checker for SameSideAlongT {
     }
 
     fn check_study(&self, study: &Study<'_>) -> Report {
-        let rings = study.skeleton_rings();
         let map = study.map().vertices();
         let mut report = Report::new(ID);
         for pair in study.overlapping_pairs() {
@@ -47,17 +47,12 @@ impl Checker for SameSideAlongT {
                 map[all[pair.b].embedding.origin],
             );
             let t = Pt::from(o2).sub(&Pt::from(o));
-            let (p, q) = (&rings[pair.class][pair.a], &rings[pair.class][pair.b]);
+            let x = study
+                .intersection(&study.embedding_pairs()[pair.pair])
+                .expect("an overlapping pair has an intersection");
             let ws = &study.witnesses()[pair.class];
             report.record(
-                check(
-                    &p.ring,
-                    &q.ring,
-                    &t,
-                    &ws[pair.a].pieces(),
-                    &ws[pair.b].pieces(),
-                )
-                .map(|mut v| {
+                check(x, &t, &ws[pair.a].pieces(), &ws[pair.b].pieces()).map(|mut v| {
                     v.data["class"] = json!(pair.class);
                     v.data["pair"] = json!([pair.a, pair.b]);
                     v
@@ -68,16 +63,15 @@ impl Checker for SameSideAlongT {
     }
 }
 
-/// The least and greatest of `n · v` over the vertices.
+/// The least and greatest of `n · v` over the vertices, if any.
 fn range(n: &Pt, vertices: impl Iterator<Item = Pt>) -> Option<(Rational, Rational)> {
-    let proj: Vec<Rational> = vertices.map(|v| wai_embed::piece::dot(n, &v)).collect();
-    Some((proj.iter().min()?.clone(), proj.iter().max()?.clone()))
+    let v: Vec<Pt> = vertices.collect();
+    (!v.is_empty()).then(|| projection(n, &v))
 }
 
 /// One pair, with translation `t` from the first origin to the second.
-pub fn check(p: &[Pt], q: &[Pt], t: &Pt, w: &[Piece], w2: &[Piece]) -> Option<Violation> {
+pub fn check(x: &Intersection, t: &Pt, w: &[Piece], w2: &[Piece]) -> Option<Violation> {
     let n = t.perp();
-    let x = Intersection::of(p, q);
     let (l, u) = range(&n, x.cycles.iter().flatten().map(|e| e.from.clone()))?;
     let (a_lo, a_hi) = range(&n, w.iter().flat_map(Piece::vertices))?;
     let (b_lo, b_hi) = range(&n, w2.iter().flat_map(Piece::vertices))?;
@@ -119,7 +113,8 @@ mod tests {
         let t = Pt::new(Rational::from(2), Rational::new());
         let pt = |x: i64, y: i64| Piece::Point(Pt::new(Rational::from(x), Rational::from(y)));
         // t horizontal: the lines y = c, 0 < c < 4, cross the overlap.
-        assert!(check(&p, &q, &t, &[pt(1, 1)], &[pt(5, 3)]).is_some());
-        assert!(check(&p, &q, &t, &[pt(1, 5)], &[pt(5, 6)]).is_none());
+        let x = Intersection::of(&p, &q);
+        assert!(check(&x, &t, &[pt(1, 1)], &[pt(5, 3)]).is_some());
+        assert!(check(&x, &t, &[pt(1, 5)], &[pt(5, 6)]).is_none());
     }
 }

@@ -33,7 +33,7 @@ impl Checker for OneRegion {
     fn check_study(&self, study: &Study<'_>) -> Report {
         let mut report = Report::new(ID);
         for pair in study.embedding_pairs() {
-            let Some(x) = &pair.intersection else {
+            let Some(x) = study.intersection(pair) else {
                 continue;
             };
             if !pair.same_skeleton() {

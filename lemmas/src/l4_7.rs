@@ -54,7 +54,7 @@ impl Checker for FiveTypes {
 /// is one region, with its edges' types (shared with C4.10).
 pub fn classified_pairs<'s>(
     study: &'s Study<'_>,
-) -> impl Iterator<Item = (&'s EmbeddingPair, &'s Intersection, Vec<Option<EdgeType>>)> + 's {
+) -> Vec<(&'s EmbeddingPair, &'s Intersection, Vec<Option<EdgeType>>)> {
     let rings = study.skeleton_rings();
     let vertices: HashSet<Pt> = study
         .map()
@@ -62,14 +62,18 @@ pub fn classified_pairs<'s>(
         .iter()
         .map(|&p| Pt::from(p))
         .collect();
-    study.embedding_pairs().iter().filter_map(move |pair| {
-        let x = pair.intersection.as_ref().filter(|x| x.components() == 1)?;
-        let (p, q) = (
-            &rings[pair.first.0][pair.first.1],
-            &rings[pair.second.0][pair.second.1],
-        );
-        Some((pair, x, types(x, p, q, &vertices)))
-    })
+    study
+        .embedding_pairs()
+        .iter()
+        .filter_map(|pair| {
+            let x = study.intersection(pair).filter(|x| x.components() == 1)?;
+            let (p, q) = (
+                &rings[pair.first.0][pair.first.1],
+                &rings[pair.second.0][pair.second.1],
+            );
+            Some((pair, x, types(x, p, q, &vertices)))
+        })
+        .collect()
 }
 
 /// The edges of one intersection polygon, classified.

@@ -14,8 +14,8 @@ use std::rc::Rc;
 
 use wai_cells::{Arrangement, Decomposition, VisibilityRay};
 use wai_embed::{
-    interiors_overlap, overlapping_valid_pairs, witness_regions, Embedder, Embedding, Intersection,
-    Mutual, Pt, Sightlines, SkeletonRing, Witnesses,
+    interiors_overlap, witness_regions, Bounds, Embedder, Embedding, Intersection, Mutual, Pt,
+    Sightlines, SkeletonRing, Witnesses,
 };
 use wai_map::Map;
 use wai_visibility::{ConvexRegion, VisibilityIndex, VisibilityPolygon};
@@ -51,13 +51,15 @@ pub struct Study<'m> {
 pub const CROSS_SKELETON_MAX_N: usize = 14;
 
 /// Two valid embeddings, (class, index in [`Study::embeddings`]) each, whose
-/// skeleton polygons' bounding boxes meet, and their intersection if their
-/// interiors overlap.
+/// skeleton polygons' bounding boxes meet: whether their interiors
+/// overlap, and their intersection, traced when first asked for
+/// ([`Study::intersection`]).
 #[derive(Debug, Clone)]
 pub struct EmbeddingPair {
     pub first: (usize, usize),
     pub second: (usize, usize),
-    pub intersection: Option<Intersection>,
+    overlap: bool,
+    intersection: OnceCell<Intersection>,
 }
 
 impl EmbeddingPair {
@@ -66,7 +68,7 @@ impl EmbeddingPair {
     }
 
     pub fn overlap(&self) -> bool {
-        self.intersection.is_some()
+        self.overlap
     }
 }
 
@@ -78,6 +80,8 @@ pub struct OverlappingPair {
     pub class: usize,
     pub a: usize,
     pub b: usize,
+    /// Its index in [`Study::embedding_pairs`].
+    pub pair: usize,
     /// Whether the embedded kernels overlap too (Theorem 4.3's premise).
     pub kernels_overlap: bool,
     /// Whether a witness of one sees a witness of the other, by
@@ -185,32 +189,52 @@ impl<'m> Study<'m> {
     /// whether their witnesses see each other.
     pub fn overlapping_pairs(&self) -> &[OverlappingPair] {
         self.overlapping.get_or_init(|| {
-            let mut out = Vec::new();
             let witnesses = self.witnesses();
-            for (class, all) in self.embeddings().iter().enumerate() {
-                let ws = &witnesses[class];
-                let hs: Vec<Embedding> = all.iter().map(|h| h.embedding.clone()).collect();
-                for (a, b) in overlapping_valid_pairs(self.map, &hs, ws) {
-                    let kernel = |i: usize| -> Vec<Pt> {
-                        all[i].kernel.vertices().iter().map(Pt::from).collect()
+            let embeddings = self.embeddings();
+            self.embedding_pairs()
+                .iter()
+                .enumerate()
+                .filter(|(_, p)| p.same_skeleton() && p.overlap())
+                .map(|(pair, p)| {
+                    let (class, a, b) = (p.first.0, p.first.1, p.second.1);
+                    let (ka, kb) = (&embeddings[class][a].kernel, &embeddings[class][b].kernel);
+                    let kernel = |k: &ConvexRegion| -> Vec<Pt> {
+                        k.vertices().iter().map(Pt::from).collect()
                     };
-                    let kernels_overlap = all[a].kernel.has_interior()
-                        && all[b].kernel.has_interior()
-                        && interiors_overlap(&kernel(a), &kernel(b));
+                    let kernels_overlap = ka.has_interior()
+                        && kb.has_interior()
+                        && interiors_overlap(&kernel(ka), &kernel(kb));
+                    let ws = &witnesses[class];
                     let sight = self
                         .sightlines()
                         .regions_by_lines(&ws[a].pieces(), &ws[b].pieces());
-                    out.push(OverlappingPair {
+                    OverlappingPair {
                         class,
                         a,
                         b,
+                        pair,
                         kernels_overlap,
                         sight,
-                    });
-                }
-            }
-            out
+                    }
+                })
+                .collect()
         })
+    }
+
+    /// The intersection of the skeleton polygons of `pair` (one of
+    /// [`Study::embedding_pairs`]), if their interiors overlap; traced once.
+    pub fn intersection<'s>(&'s self, pair: &'s EmbeddingPair) -> Option<&'s Intersection> {
+        if !pair.overlap {
+            return None;
+        }
+        let rings = self.skeleton_rings();
+        Some(pair.intersection.get_or_init(|| {
+            let (p, q) = (
+                &rings[pair.first.0][pair.first.1],
+                &rings[pair.second.0][pair.second.1],
+            );
+            Intersection::of(&p.ring, &q.ring)
+        }))
     }
 
     /// By class and embedding: the embedded skeleton polygon h(V◇) with its
@@ -237,7 +261,7 @@ impl<'m> Study<'m> {
     /// The pairs of valid embeddings the sec. 4.4 claims examine: of one
     /// skeleton always, of different skeletons on maps of at most
     /// [`CROSS_SKELETON_MAX_N`] vertices; those whose polygons' bounding
-    /// boxes meet, with the intersection where the interiors overlap.
+    /// boxes meet, and whether their interiors overlap.
     pub fn embedding_pairs(&self) -> &[EmbeddingPair] {
         self.pairs.get_or_init(|| {
             let rings = self.skeleton_rings();
@@ -253,14 +277,9 @@ impl<'m> Study<'m> {
                 })
                 .collect();
             let cross = self.map.n() <= CROSS_SKELETON_MAX_N;
-            let bounds: Vec<_> = valid
+            let bounds: Vec<Bounds> = valid
                 .iter()
-                .map(|&(c, i)| {
-                    let r = &rings[c][i].ring;
-                    let lo = |f: fn(&Pt) -> &rug::Rational| r.iter().map(f).min().cloned();
-                    let hi = |f: fn(&Pt) -> &rug::Rational| r.iter().map(f).max().cloned();
-                    (lo(|p| &p.x), lo(|p| &p.y), hi(|p| &p.x), hi(|p| &p.y))
-                })
+                .map(|&(c, i)| Bounds::of(&rings[c][i].ring))
                 .collect();
             let mut out = Vec::new();
             for a in 0..valid.len() {
@@ -268,20 +287,18 @@ impl<'m> Study<'m> {
                     if valid[a].0 != valid[b].0 && !cross {
                         continue;
                     }
-                    let (ba, bb) = (&bounds[a], &bounds[b]);
-                    if ba.2 < bb.0 || bb.2 < ba.0 || ba.3 < bb.1 || bb.3 < ba.1 {
+                    if !bounds[a].meets_box(&bounds[b]) {
                         continue;
                     }
                     let (p, q) = (
                         &rings[valid[a].0][valid[a].1],
                         &rings[valid[b].0][valid[b].1],
                     );
-                    let intersection = interiors_overlap(&p.ring, &q.ring)
-                        .then(|| Intersection::of(&p.ring, &q.ring));
                     out.push(EmbeddingPair {
                         first: valid[a],
                         second: valid[b],
-                        intersection,
+                        overlap: interiors_overlap(&p.ring, &q.ring),
+                        intersection: OnceCell::new(),
                     });
                 }
             }

@@ -30,7 +30,7 @@ pub use embedding::{embeddings, Embedder, Embedding};
 pub use intersection::{EdgeType, Intersection, SkeletonRing};
 pub use mutual::{Mutual, Sightlines};
 pub use overlay::common_interior_point;
-pub use piece::{Piece, Pt};
+pub use piece::{Bounds, Piece, Pt};
 pub use sight::EdgeSight;
 pub use transversal::transversal;
 pub use witness::{

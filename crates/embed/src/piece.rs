@@ -219,7 +219,7 @@ pub fn ints(pts: &[(i64, i64)]) -> Vec<Pt> {
 /// The closed axis-parallel box around some points: a cheap first test
 /// before the exact ones.
 #[derive(Clone, Debug)]
-pub(crate) struct Bounds {
+pub struct Bounds {
     pub lo: (Rational, Rational),
     pub hi: (Rational, Rational),
 }
@@ -232,6 +232,11 @@ impl Bounds {
             lo: (min(|p| &p.x), min(|p| &p.y)),
             hi: (max(|p| &p.x), max(|p| &p.y)),
         }
+    }
+
+    /// Whether two closed boxes share a point.
+    pub fn meets_box(&self, o: &Bounds) -> bool {
+        !(self.hi.0 < o.lo.0 || o.hi.0 < self.lo.0 || self.hi.1 < o.lo.1 || o.hi.1 < self.lo.1)
     }
 
     /// False only if the closed segment `ab` surely misses the box.
@@ -251,7 +256,7 @@ impl Bounds {
 }
 
 /// The least and greatest of `n · v` over `vertices`.
-pub(crate) fn projection(n: &Pt, vertices: &[Pt]) -> (Rational, Rational) {
+pub fn projection(n: &Pt, vertices: &[Pt]) -> (Rational, Rational) {
     let proj: Vec<Rational> = vertices.iter().map(|v| dot(n, v)).collect();
     (
         proj.iter().min().cloned().unwrap_or_default(),

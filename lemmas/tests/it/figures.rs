@@ -156,7 +156,7 @@ fn fig_4_16_four_type_5_edges_and_no_map_vertex() {
         .iter()
         .find(|p| p.first.0 == class && p.second.0 == class)
         .expect("the two embeddings are a pair");
-    let x = pair.intersection.as_ref().expect("they overlap");
+    let x = study.intersection(pair).expect("they overlap");
     let rings = study.skeleton_rings();
     let vertices: HashSet<Pt> = map.vertices().iter().map(|&p| Pt::from(p)).collect();
     let types = wai_lemmas::l4_7::types(x, &rings[class][0], &rings[class][1], &vertices);
