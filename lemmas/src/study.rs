@@ -14,8 +14,8 @@ use std::rc::Rc;
 
 use wai_cells::{Arrangement, Decomposition, VisibilityRay};
 use wai_embed::{
-    interiors_overlap, witness_regions, Bounds, Embedder, Embedding, Intersection, Mutual, Pt,
-    Sightlines, SkeletonRing, Witnesses,
+    interiors_overlap, kernels_overlap, witness_regions, Bounds, Embedder, Embedding, Intersection,
+    Mutual, Sightlines, SkeletonRing, Witnesses,
 };
 use wai_map::Map;
 use wai_visibility::{ConvexRegion, VisibilityIndex, VisibilityPolygon};
@@ -197,13 +197,8 @@ impl<'m> Study<'m> {
                 .filter(|(_, p)| p.same_skeleton() && p.overlap())
                 .map(|(pair, p)| {
                     let (class, a, b) = (p.first.0, p.first.1, p.second.1);
-                    let (ka, kb) = (&embeddings[class][a].kernel, &embeddings[class][b].kernel);
-                    let kernel = |k: &ConvexRegion| -> Vec<Pt> {
-                        k.vertices().iter().map(Pt::from).collect()
-                    };
-                    let kernels_overlap = ka.has_interior()
-                        && kb.has_interior()
-                        && interiors_overlap(&kernel(ka), &kernel(kb));
+                    let kernels_overlap =
+                        kernels_overlap(&embeddings[class][a].kernel, &embeddings[class][b].kernel);
                     let ws = &witnesses[class];
                     let sight = self
                         .sightlines()

@@ -10,12 +10,12 @@ use crate::Failure;
 use std::path::Path;
 use wai_cells::{Decomposition, LowerSite};
 use wai_embed::{
-    interiors_overlap, overlapping_valid_pairs, valid_candidate_edges, witness_regions, CellRef,
+    kernels_overlap, overlapping_valid_pairs, valid_candidate_edges, witness_regions, CellRef,
     Embedder, Embedding, Mutual, Piece, Pt, Sightlines, Witnesses,
 };
 use wai_map::Map;
 use wai_render::{embeddings_svg, EmbeddingDrawn, MapStyle};
-use wai_visibility::VisibilityIndex;
+use wai_visibility::{ConvexRegion, VisibilityIndex};
 
 pub struct Options<'a> {
     pub class: Option<usize>,
@@ -30,6 +30,8 @@ struct ClassReport {
     embeddings: Vec<Embedding>,
     witnesses: Vec<Witnesses>,
     valid_candidates: Vec<Vec<Vec<usize>>>,
+    /// By embedding: h(ker V*).
+    kernels: Vec<ConvexRegion>,
     overlapping: Vec<Overlap>,
 }
 
@@ -55,18 +57,14 @@ fn analyse(
         .zip(&witnesses)
         .map(|(h, w)| valid_candidate_edges(index, h, w))
         .collect();
-    let kernel =
-        |h: &Embedding| -> Vec<Pt> { h.kernel(map).vertices().iter().map(Pt::from).collect() };
+    let kernels: Vec<ConvexRegion> = embeddings.iter().map(|h| h.kernel(map)).collect();
     let overlapping = overlapping_valid_pairs(map, &embeddings, &witnesses)
         .into_iter()
-        .map(|(a, b)| {
-            let (ka, kb) = (kernel(&embeddings[a]), kernel(&embeddings[b]));
-            Overlap {
-                a,
-                b,
-                kernels_overlap: ka.len() >= 3 && kb.len() >= 3 && interiors_overlap(&ka, &kb),
-                sight: sightlines.regions_by_lines(&witnesses[a].pieces(), &witnesses[b].pieces()),
-            }
+        .map(|(a, b)| Overlap {
+            a,
+            b,
+            kernels_overlap: kernels_overlap(&kernels[a], &kernels[b]),
+            sight: sightlines.regions_by_lines(&witnesses[a].pieces(), &witnesses[b].pieces()),
         })
         .collect();
     ClassReport {
@@ -74,6 +72,7 @@ fn analyse(
         embeddings,
         witnesses,
         valid_candidates,
+        kernels,
         overlapping,
     }
 }
@@ -103,7 +102,8 @@ fn json_class(map: &Map, d: &Decomposition<'_>, r: &ClassReport) -> serde_json::
         .iter()
         .zip(&r.witnesses)
         .zip(&r.valid_candidates)
-        .map(|((h, w), vc)| {
+        .zip(&r.kernels)
+        .map(|(((h, w), vc), kernel)| {
             serde_json::json!({
                 "origin": h.origin,
                 "origin_point": show(map, &v[h.origin].into()),
@@ -117,7 +117,7 @@ fn json_class(map: &Map, d: &Decomposition<'_>, r: &ClassReport) -> serde_json::
                 })).collect::<Vec<_>>(),
                 "candidate_edges": h.candidates,
                 "valid_candidate_edges": vc,
-                "kernel": h.kernel(map).vertices().iter().map(|p| show(map, p)).collect::<Vec<_>>(),
+                "kernel": kernel.vertices().iter().map(|p| show(map, p)).collect::<Vec<_>>(),
             })
         })
         .collect();
@@ -223,10 +223,11 @@ fn svg(map: &Map, r: &ClassReport, out: &Path) -> Result<(), Failure> {
         .iter()
         .zip(&r.witnesses)
         .zip(&r.valid_candidates)
-        .map(|((h, w), vc)| EmbeddingDrawn {
+        .zip(&r.kernels)
+        .map(|(((h, w), vc), kernel)| EmbeddingDrawn {
             origin: h.origin,
             polygon: h.polygon(map),
-            kernel: h.kernel(map).vertices().to_vec(),
+            kernel: kernel.vertices().to_vec(),
             witnesses: w
                 .cells
                 .iter()

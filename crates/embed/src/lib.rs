@@ -34,6 +34,6 @@ pub use piece::{Bounds, Piece, Pt};
 pub use sight::EdgeSight;
 pub use transversal::transversal;
 pub use witness::{
-    interiors_overlap, overlapping_valid_pairs, piece_of, valid_candidate_edges, witness_regions,
-    CellRef, WitnessCell, Witnesses,
+    interiors_overlap, kernels_overlap, overlapping_valid_pairs, piece_of, valid_candidate_edges,
+    witness_regions, CellRef, WitnessCell, Witnesses,
 };

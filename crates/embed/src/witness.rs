@@ -188,6 +188,16 @@ pub fn overlapping_valid_pairs(
     out
 }
 
+/// Whether two embedded kernels overlap (Theorem 4.3's premise): both
+/// have an interior and the interiors share a point. A kernel that is a
+/// point or a segment overlaps nothing.
+pub fn kernels_overlap(a: &wai_visibility::ConvexRegion, b: &wai_visibility::ConvexRegion) -> bool {
+    let ring = |k: &wai_visibility::ConvexRegion| -> Vec<Pt> {
+        k.vertices().iter().map(Pt::from).collect()
+    };
+    a.has_interior() && b.has_interior() && interiors_overlap(&ring(a), &ring(b))
+}
+
 /// Whether the interiors of two simple polygons, each counter-clockwise,
 /// share a point (sec. 4.2: the embeddings *overlap*; sharing only
 /// boundary points, they merely intersect, sec. 4.6).
