@@ -22,7 +22,8 @@
 //!   [`l3_1c`], [`d3_5`], [`t3_2`], [`t3_3a`], [`t3_3b`], [`a3_6`], [`l3_5`],
 //!   [`l3_7`], [`l3_7t`], [`t3_9a`], [`t3_9b`], [`t3_10`], [`l4_1`],
 //!   [`l4_5`], [`l4_6`], [`l4_7`], [`l4_8`], [`l4_9`], [`c4_10`], [`c4_15`],
-//!   [`c4_16`], [`t4_2`], [`t4_3`], [`t5_17`] so far; `l4_17.rs`, … to come.
+//!   [`c4_16`], [`l4_17`], [`l4_18`], [`t4_19`], [`c4_20`], [`t4_2`],
+//!   [`t4_3`], [`t5_17`] so far; the rest of chapter 5 to come.
 //!   Each module
 //!   - opens with a doc comment that states the claim in our own words and
 //!     cites the thesis (`/// Claim T4.2 (Theorem 4.2).`),
@@ -49,6 +50,7 @@ pub mod a3_6;
 pub mod c4_10;
 pub mod c4_15;
 pub mod c4_16;
+pub mod c4_20;
 pub mod d3_5;
 pub mod driver;
 pub mod family;
@@ -59,6 +61,8 @@ pub mod l3_5;
 pub mod l3_7;
 pub mod l3_7t;
 pub mod l4_1;
+pub mod l4_17;
+pub mod l4_18;
 pub mod l4_5;
 pub mod l4_6;
 pub mod l4_7;
@@ -73,6 +77,7 @@ pub mod t3_3a;
 pub mod t3_3b;
 pub mod t3_9a;
 pub mod t3_9b;
+pub mod t4_19;
 pub mod t4_2;
 pub mod t4_3;
 pub mod t5_17;
@@ -433,25 +438,29 @@ pub static CLAIMS: &[Claim] = &[
         Exact,
         "Lemma 4.17",
         "Lines of sight from one embedded skeleton polygon to candidate edges of two different artificial edges never cross outside it.",
-    ),
+    )
+    .checked(l4_17::checker),
     c(
         "L4.18",
         Exact,
         "Lemma 4.18",
         "For crossing candidate edges c of h and c' of h' with h, h' overlapping, h(a) meets h'(V<>) or h'(a') meets h(V<>).",
-    ),
+    )
+    .checked(l4_18::checker),
     c(
         "T4.19",
         Exact,
         "Theorem 4.19",
         "A candidate edge of an overlapping embedding crossing two candidate edges c1, c2 of one artificial edge is not between them on the boundary.",
-    ),
+    )
+    .checked(t4_19::checker),
     c(
         "C4.20",
         Exact,
         "Corollary 4.20",
         "Mutually crossing candidate edge pairs appear on the boundary as c1, c2, c1', c2' or c1', c2', c1, c2.",
-    ),
+    )
+    .checked(c4_20::checker),
     // Chapter 5 — the complexity of an equivalence class.
     c(
         "O5.3",

@@ -9,13 +9,14 @@
 //! here, so a stress run builds each once per map.
 
 use std::cell::{OnceCell, RefCell};
-use std::collections::BTreeMap;
+use std::collections::{BTreeMap, HashMap};
 use std::rc::Rc;
 
 use wai_cells::{Arrangement, Decomposition, VisibilityRay};
 use wai_embed::{
-    interiors_overlap, kernels_overlap, witness_regions, Bounds, Embedder, Embedding, Intersection,
-    Mutual, Sightlines, SkeletonRing, Witnesses,
+    crossing, interiors_overlap, kernels_overlap, sight_fans, witness_regions, witness_views,
+    Bounds, Crossing, Embedder, Embedding, Intersection, Mutual, SightFan, Sightlines,
+    SkeletonRing, Witnesses,
 };
 use wai_map::Map;
 use wai_visibility::{ConvexRegion, VisibilityIndex, VisibilityPolygon};
@@ -41,7 +42,22 @@ pub struct Study<'m> {
     rings: OnceCell<Vec<Vec<SkeletonRing>>>,
     /// The pairs of valid embeddings the sec. 4.4 checkers examine.
     pairs: OnceCell<Vec<EmbeddingPair>>,
+    /// By class, embedding and witness cell, by skeleton edge: the map
+    /// edge seen through it (`wai_embed::witness_views`).
+    views: OnceCell<Vec<Vec<Views>>>,
+    /// By class and embedding: the sight fans of its witness cells.
+    fans: OnceCell<Vec<Vec<Vec<SightFan>>>>,
+    /// Def 4.4, decided so far: by (overlapping pair, (artificial edge,
+    /// candidate edge) of its first embedding, of its second).
+    crossings: RefCell<HashMap<CrossingKey, Option<Crossing>>>,
 }
+
+/// (index in [`Study::overlapping_pairs`], (artificial edge, candidate
+/// edge) of the pair's embedding `a`, the same of `b`).
+type CrossingKey = (usize, (usize, usize), (usize, usize));
+
+/// By witness cell, by skeleton edge: the map edge seen through it.
+pub type Views = Vec<Vec<Option<usize>>>;
 
 /// Maps of at most this many vertices have the sec. 4.4 claims (L4.5 to
 /// C4.10, which allow different skeletons) checked on pairs of valid
@@ -111,6 +127,9 @@ impl<'m> Study<'m> {
             overlapping: OnceCell::new(),
             rings: OnceCell::new(),
             pairs: OnceCell::new(),
+            views: OnceCell::new(),
+            fans: OnceCell::new(),
+            crossings: RefCell::new(HashMap::new()),
         }
     }
 
@@ -299,6 +318,88 @@ impl<'m> Study<'m> {
             }
             out
         })
+    }
+
+    /// By class, embedding and witness cell: the map edge seen through
+    /// each skeleton edge (`None` for full edges), from V_w of the cell's
+    /// representative point.
+    pub fn views(&self) -> &[Vec<Views>] {
+        self.views.get_or_init(|| {
+            let witnesses = self.witnesses();
+            self.embeddings()
+                .iter()
+                .zip(witnesses)
+                .map(|(hs, ws)| {
+                    hs.iter()
+                        .zip(ws)
+                        .map(|(h, w)| witness_views(self.index(), &h.embedding, w))
+                        .collect()
+                })
+                .collect()
+        })
+    }
+
+    /// By class and embedding: one sight fan per witness cell and
+    /// artificial edge (Def 4.4's lines of sight, `wai_embed::SightFan`).
+    pub fn fans(&self) -> &[Vec<Vec<SightFan>>] {
+        self.fans.get_or_init(|| {
+            let (witnesses, views) = (self.witnesses(), self.views());
+            self.embeddings()
+                .iter()
+                .enumerate()
+                .map(|(c, hs)| {
+                    hs.iter()
+                        .enumerate()
+                        .map(|(i, h)| {
+                            sight_fans(self.map, &h.embedding, &witnesses[c][i], &views[c][i])
+                        })
+                        .collect()
+                })
+                .collect()
+        })
+    }
+
+    /// Def 4.4 on pair `pair` of [`Study::overlapping_pairs`]: whether
+    /// candidate edge `first.1` of artificial edge `first.0` (a skeleton
+    /// edge's index) in the pair's embedding `a` crosses candidate edge
+    /// `second.1` of `second.0` in embedding `b`, with two lines of sight
+    /// that show it. Exact over whole witness regions
+    /// (`wai_embed::crossing`, each witness cell's fan against each);
+    /// decided once.
+    pub fn crosses(
+        &self,
+        pair: usize,
+        first: (usize, usize),
+        second: (usize, usize),
+    ) -> Option<Crossing> {
+        let key = (pair, first, second);
+        if let Some(x) = self.crossings.borrow().get(&key) {
+            return x.clone();
+        }
+        let p = &self.overlapping_pairs()[pair];
+        let fans = &self.fans()[p.class];
+        let of = |i: usize, (a, c): (usize, usize)| {
+            fans[i]
+                .iter()
+                .filter(move |f| f.artificial == a && f.edge == c)
+        };
+        let ring = self.map.vertices();
+        let found = (first.1 != second.1)
+            .then(|| {
+                of(p.a, first)
+                    .flat_map(|f| of(p.b, second).map(move |g| (f, g)))
+                    .find_map(|(f, g)| crossing(ring, f, g, false))
+            })
+            .flatten();
+        self.crossings.borrow_mut().insert(key, found.clone());
+        found
+    }
+
+    /// By class and embedding: the valid candidate edges (Def 4.1) of
+    /// each skeleton edge (empty for full edges), from the witness views.
+    pub fn valid_candidates(&self, class: usize, embedding: usize) -> Vec<Vec<usize>> {
+        let k = self.embeddings()[class][embedding].embedding.vertices.len();
+        wai_embed::valid_from_views(k, &self.views()[class][embedding])
     }
 
     /// V_p of each of [`sample::viewpoints`]`(map, limit)`, by the

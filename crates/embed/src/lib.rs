@@ -17,6 +17,7 @@
 //! No floating point: positions along edges are GMP rationals, every sign
 //! an exact integer predicate.
 
+mod crossing;
 mod embedding;
 pub mod intersection;
 mod mutual;
@@ -26,6 +27,7 @@ mod sight;
 mod transversal;
 mod witness;
 
+pub use crossing::{crossing, Crossing, SightFan};
 pub use embedding::{embeddings, Embedder, Embedding};
 pub use intersection::{EdgeType, Intersection, SkeletonRing};
 pub use mutual::{Mutual, Sightlines};
@@ -34,6 +36,7 @@ pub use piece::{Bounds, Piece, Pt};
 pub use sight::EdgeSight;
 pub use transversal::transversal;
 pub use witness::{
-    interiors_overlap, kernels_overlap, overlapping_valid_pairs, piece_of, valid_candidate_edges,
-    witness_regions, CellRef, WitnessCell, Witnesses,
+    interiors_overlap, kernels_overlap, overlapping_valid_pairs, piece_of, segment_meets_polygon,
+    sight_fans, valid_candidate_edges, valid_from_views, witness_regions, witness_views, CellRef,
+    WitnessCell, Witnesses,
 };

@@ -443,6 +443,70 @@ impl Piece {
             }
         }
     }
+
+    /// Whether `x` is a point of the piece.
+    pub fn contains(&self, x: &Pt) -> bool {
+        match self {
+            Piece::Point(p) => p == x,
+            Piece::Segment(a, b) => {
+                turn(a, b, x) == Ordering::Equal && dot(&a.sub(x), &b.sub(x)) < 0
+            }
+            Piece::Polygon(v) => {
+                (0..v.len()).all(|i| turn(&v[i], &v[(i + 1) % v.len()], x) == Ordering::Greater)
+            }
+        }
+    }
+
+    /// A point that this piece and `o` share, if they share one. Exact and
+    /// complete: each piece is relatively open and convex.
+    pub fn common_point(&self, o: &Piece) -> Option<Pt> {
+        match (self, o) {
+            (Piece::Point(p), _) => o.contains(p).then(|| p.clone()),
+            (_, Piece::Point(p)) => self.contains(p).then(|| p.clone()),
+            (Piece::Segment(a, b), _) => segment_common(a, b, o),
+            (_, Piece::Segment(a, b)) => segment_common(a, b, self),
+            // Both convex: clip one by the inner side of each edge of the
+            // other; what is left, if anything, is their intersection.
+            (Piece::Polygon(_), Piece::Polygon(q)) => {
+                let mut left = self.clone();
+                for i in 0..q.len() {
+                    left = left.clip(&q[i], &q[(i + 1) % q.len()], Ordering::Greater)?;
+                }
+                Some(left.inner_point())
+            }
+        }
+    }
+
+    /// Whether this piece and `o` share a point.
+    pub fn meets(&self, o: &Piece) -> bool {
+        self.common_point(o).is_some()
+    }
+
+    /// The part of the piece strictly on side `side` (`Greater`: left) of
+    /// the line through `a` and `b`, if any.
+    pub fn clip(&self, a: &Pt, b: &Pt, side: Ordering) -> Option<Piece> {
+        debug_assert_ne!(side, Ordering::Equal);
+        if let Some((l, r)) = self.split(a, b) {
+            return Some(if side == Ordering::Greater { l } else { r });
+        }
+        // Not cut: wholly on one side (or, below dimension 2, on the line).
+        (turn(a, b, &self.inner_point()) == side).then(|| self.clone())
+    }
+}
+
+/// A point of the open segment `ab` in the piece `o`, if any.
+fn segment_common(a: &Pt, b: &Pt, o: &Piece) -> Option<Pt> {
+    let d = b.sub(a);
+    let t = match o.span(a, &d)? {
+        Span::At(t) => (t > 0 && t < 1).then_some(t)?,
+        Span::Open(lo, hi) => {
+            let (zero, one) = (Rational::new(), Rational::from(1));
+            let lo = if lo > zero { lo } else { zero };
+            let hi = if hi < one { hi } else { one };
+            (lo < hi).then(|| Rational::from(&lo + &hi) / 2u32)?
+        }
+    };
+    Some(a.along(&d, &t))
 }
 
 /// A piece prepared for the parallel lines of one direction `d`: the line
@@ -520,7 +584,9 @@ pub fn part_points(pieces: &[Piece], lines: &[(Pt, Pt)]) -> Vec<Pt> {
 }
 
 /// Where segment `pq` meets the line through `a` and `b` (they cross).
-fn line_cut(p: &Pt, q: &Pt, a: &Pt, b: &Pt) -> Pt {
+/// Where the line through `p` and `q` meets the line through `a` and `b`
+/// (which must not be parallel).
+pub(crate) fn line_cut(p: &Pt, q: &Pt, a: &Pt, b: &Pt) -> Pt {
     let e = b.sub(a);
     let cp = cross(&e, &p.sub(a));
     let cq = cross(&e, &q.sub(a));

@@ -122,10 +122,9 @@ pub fn witness_regions(
     out
 }
 
-/// Def 4.1: the valid candidate edges of each artificial edge of `h`
-/// (by skeleton edge, as [`Embedding::candidates`]; empty for full edges
-/// and for an embedding with no witness): the map edges that carry the
-/// edge's half or partial edge in V_w for some witness w.
+/// By witness cell of `h` (as `witnesses.cells`), by skeleton edge: the
+/// map edge that carries the edge's half or partial edge in V_w for the
+/// cell's points (`None` for full edges).
 ///
 /// One point per witness cell suffices: along a connected set of points
 /// with one skeleton the map edge under a partial edge cannot change,
@@ -135,31 +134,93 @@ pub fn witness_regions(
 /// # Panics
 /// If V_w of a witness cell's point cannot be computed or has another
 /// skeleton than h's class (a bug the claims T3.3b and L3.5 catch).
+pub fn witness_views(
+    index: &VisibilityIndex<'_>,
+    h: &Embedding,
+    witnesses: &Witnesses,
+) -> Vec<Vec<Option<usize>>> {
+    witnesses
+        .cells
+        .iter()
+        .map(|w| {
+            let vp = index
+                .visibility_polygon(&w.point)
+                .expect("a witness lies inside the map");
+            let s = Skeleton::of(index.map(), &vp).expect("a witness's V_w has a skeleton");
+            assert_eq!(
+                s.map_vertices(),
+                h.vertices.as_slice(),
+                "witness {} does not have the skeleton of its embedding",
+                w.point
+            );
+            s.edges()
+                .iter()
+                .map(|e| match e {
+                    SkeletonEdge::Artificial { map_edge, .. } => Some(*map_edge),
+                    SkeletonEdge::Full { .. } => None,
+                })
+                .collect()
+        })
+        .collect()
+}
+
+/// Def 4.1: the valid candidate edges of each artificial edge of `h`
+/// (by skeleton edge, as [`Embedding::candidates`]; empty for full edges
+/// and for an embedding with no witness): the map edges that carry the
+/// edge's half or partial edge in V_w for some witness w
+/// ([`witness_views`]).
+///
+/// # Panics
+/// As [`witness_views`].
 pub fn valid_candidate_edges(
     index: &VisibilityIndex<'_>,
     h: &Embedding,
     witnesses: &Witnesses,
 ) -> Vec<Vec<usize>> {
-    let k = h.vertices.len();
-    let mut valid: Vec<BTreeSet<usize>> = vec![BTreeSet::new(); k];
-    for w in &witnesses.cells {
-        let vp = index
-            .visibility_polygon(&w.point)
-            .expect("a witness lies inside the map");
-        let s = Skeleton::of(index.map(), &vp).expect("a witness's V_w has a skeleton");
-        assert_eq!(
-            s.map_vertices(),
-            h.vertices.as_slice(),
-            "witness {} does not have the skeleton of its embedding",
-            w.point
-        );
-        for (i, e) in s.edges().iter().enumerate() {
-            if let SkeletonEdge::Artificial { map_edge, .. } = e {
-                valid[i].insert(*map_edge);
+    valid_from_views(h.vertices.len(), &witness_views(index, h, witnesses))
+}
+
+/// [`valid_candidate_edges`] from the views [`witness_views`] gives.
+pub fn valid_from_views(edges: usize, views: &[Vec<Option<usize>>]) -> Vec<Vec<usize>> {
+    let mut valid: Vec<BTreeSet<usize>> = vec![BTreeSet::new(); edges];
+    for view in views {
+        for (i, e) in view.iter().enumerate() {
+            if let Some(e) = e {
+                valid[i].insert(*e);
             }
         }
     }
     valid.into_iter().map(|s| s.into_iter().collect()).collect()
+}
+
+/// The sight fans ([`crate::SightFan`]) of `h`: one per witness cell and
+/// artificial edge, from the cells' `views` ([`witness_views`]).
+pub fn sight_fans(
+    map: &wai_map::Map,
+    h: &Embedding,
+    witnesses: &Witnesses,
+    views: &[Vec<Option<usize>>],
+) -> Vec<crate::SightFan> {
+    let v = map.vertices();
+    let n = v.len();
+    let k = h.vertices.len();
+    let at = |m: usize| Pt::from(v[m]);
+    let mut out = Vec::new();
+    for (cell, (w, view)) in witnesses.cells.iter().zip(views).enumerate() {
+        for (i, e) in view.iter().enumerate() {
+            if let Some(e) = *e {
+                out.push(crate::SightFan::new(
+                    &w.piece,
+                    cell,
+                    i,
+                    (at(h.vertices[i]), at(h.vertices[(i + 1) % k])),
+                    e,
+                    (at(e), at((e + 1) % n)),
+                ));
+            }
+        }
+    }
+    out
 }
 
 /// The pairs `(a, b)`, `a < b`, of embeddings of one skeleton that are
@@ -252,6 +313,13 @@ fn one_side_overlaps(p: &[Pt], q: &[Pt], bq: &Bounds) -> bool {
         }
     }
     false
+}
+
+/// Whether the closed segment `ab` and the closed simple polygon `q`
+/// share a point.
+pub fn segment_meets_polygon(a: &Pt, b: &Pt, q: &[Pt]) -> bool {
+    !matches!(locate(q, a), Locus::Outside)
+        || (0..q.len()).any(|j| crate::piece::segments_meet(a, b, &q[j], &q[(j + 1) % q.len()]))
 }
 
 pub(crate) enum Locus {

@@ -140,6 +140,51 @@ fn figs_4_1_and_4_2_overlapping_kernels_and_crossing_artificial_edges() {
         .sightlines()
         .regions_by_points(&ws[0].pieces(), &ws[1].pieces())
         .is_visible());
+    // Example 4.4 (2): candidate edges of the two embeddings cross (Def
+    // 4.4), shown by two lines of sight that meet.
+    let k = study
+        .overlapping_pairs()
+        .iter()
+        .position(|p| p.class == class)
+        .expect("the pair overlaps");
+    let (va, vb) = (
+        study.valid_candidates(class, pair.a),
+        study.valid_candidates(class, pair.b),
+    );
+    let mut crossing = 0;
+    for (i, ci) in va.iter().enumerate() {
+        for (j, cj) in vb.iter().enumerate() {
+            for &c in ci {
+                for &d in cj {
+                    crossing += usize::from(study.crosses(k, (i, c), (j, d)).is_some());
+                }
+            }
+        }
+    }
+    assert!(crossing > 0, "no crossing candidate edges");
+}
+
+#[test]
+fn lemma_4_17_corollary_fails_for_def_3_11_candidate_edges_only() {
+    let (map, points) = load("L4.17-shared-candidate-edge.json");
+    let study = Study::new(&map);
+    let (_, class) = common_skeleton(&study, &points);
+    let all = &study.embeddings()[class];
+    assert_eq!(all.len(), 1);
+    let h = &all[0].embedding;
+    let shared = |sets: &[Vec<usize>]| -> usize {
+        (0..sets.len())
+            .flat_map(|a| (a + 1..sets.len()).map(move |b| (a, b)))
+            .map(|(a, b)| sets[a].iter().filter(|e| sets[b].contains(e)).count())
+            .sum()
+    };
+    // Two map edges are Def 3.11 candidates of both artificial edges …
+    assert_eq!(shared(&h.candidates), 2);
+    // … but valid candidates of one each.
+    assert_eq!(shared(&study.valid_candidates(class, 0)), 0);
+    let report = wai_lemmas::l4_17::checker().check_study(&study);
+    assert!(report.violations.is_empty(), "{:?}", report.violations);
+    assert!(report.counts["shared_def_3_11"] > 0);
 }
 
 #[test]

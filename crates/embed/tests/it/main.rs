@@ -1,4 +1,5 @@
 mod common;
+mod crossing;
 mod embeddings;
 mod fan;
 mod mutual;

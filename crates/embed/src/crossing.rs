@@ -1,0 +1,279 @@
+//! Def 4.4: crossing candidate edges, decided exactly over whole witness
+//! regions.
+//!
+//! # The lines of sight of one witness cell through one artificial edge
+//! Let h(a) = (v1, v2) be an embedded artificial edge, h(V◇) on its left,
+//! and w a witness of h in the cell C. V_w has skeleton V*, so behind h(a)
+//! it has a pocket: the triangle cut off by the rays from w through v1 and
+//! v2, closed by the partial (or half) edge, which lies on one map edge c,
+//! the same for every point of C ([`crate::witness_views`]). So w sees
+//! through h(a) exactly the open interval (s1(w), s2(w)) of c between the
+//! two rays, and nothing is in the way. Lines grazing v1 or v2 do not pass
+//! *through* h(a) (nor do they see, by the rule of sec. 2.2). The union
+//! U(C, a) of the lines of sight [w, p], w ∈ C, p ∈ c, through h(a) is
+//! therefore
+//!
+//! ```text
+//! C ∪ int conv(C̄ ∪ h(a)) ∪ h(a)° ∪ B° ∪ (t1, t2)
+//! ```
+//!
+//! - before h(a): a point lies on an open segment from a point of C to a
+//!   point of h(a)° iff it is in C or inside the hull;
+//! - behind h(a): a point x lies on such a line iff the open wedge from x
+//!   through h(a) meets C, iff C meets both open half-planes bounded by the
+//!   lines x v1 and x v2 on the wedge's side (C is connected and the two
+//!   closed outer parts are disjoint). The limits are the lines through v1
+//!   and through v2 and the vertices u of C̄ whose rays u→v1, u→v2 reach
+//!   farthest out on c's line, at t1 and t2 (a ray's end on a line is
+//!   monotone along a segment, so the extremes are at vertices). B is the
+//!   polygon v2, v1, t1, t2, a triangle when h(a) ends on c's line;
+//! - on c's line: the union of the intervals (s1(w), s2(w)), which is
+//!   (t1, t2) as C is relatively open.
+//!
+//! Each part is a relatively open convex [`Piece`], so whether two such
+//! unions share a point is decided exactly and completely piece by piece.
+//!
+//! # Certificates
+//! A shared point x comes with a witness and a point of the candidate
+//! edge on each side whose line of sight passes through x, found from x
+//! (a point of C in the wedge that reaches x), and re-checked: the segment
+//! sees (`wai_exact::sees`), crosses h(a)° and ends on c. A failed
+//! re-check panics: it would be a bug in the region above.
+
+use std::cmp::Ordering;
+
+use rug::Rational;
+use wai_exact::{sees, Point};
+
+use crate::piece::{convex_hull, dot, line_cut, segments_meet, turn, Bounds, Piece, Pt};
+
+/// The lines of sight from one witness cell through one embedded
+/// artificial edge to the candidate edge the cell sees (module doc).
+#[derive(Clone, Debug)]
+pub struct SightFan {
+    /// The witness cell's index in its [`crate::Witnesses`].
+    pub cell: usize,
+    /// The artificial edge: its index among the skeleton's edges.
+    pub artificial: usize,
+    /// The map edge seen through it.
+    pub edge: usize,
+    /// h(a), counter-clockwise along h(V◇).
+    pub v1: Pt,
+    pub v2: Pt,
+    /// The candidate edge's ends.
+    c: (Pt, Pt),
+    /// The witness cell.
+    witnesses: Piece,
+    /// The parts in h(V◇): the open hull, h(a)°, and the cell unless it
+    /// is a 2-cell (inside the hull).
+    pub inside: Vec<Piece>,
+    /// The parts behind h(a): B° and (t1, t2).
+    pub beyond: Vec<Piece>,
+    /// The box of each part, `beyond` then `inside`.
+    boxes: Vec<Bounds>,
+    bounds: Bounds,
+}
+
+/// Two lines of sight that meet (Def 4.4), each from a witness `w` to a
+/// point `p` of its candidate edge, and a point `at` they share.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Crossing {
+    pub at: Pt,
+    pub first: (Pt, Pt),
+    pub second: (Pt, Pt),
+}
+
+impl SightFan {
+    /// The lines of sight from the witness cell `witnesses` (index `cell`)
+    /// through the artificial edge `artificial`, from `v1` to `v2`
+    /// counter-clockwise along h(V◇), to the map edge `edge` from `c0` to
+    /// `c1`, which the cell sees through it.
+    ///
+    /// # Panics
+    /// If the cell is not strictly inside the edge's line, or a ray from
+    /// it through `v1` or `v2` does not reach the edge (neither can happen
+    /// for a witness, whose V_w has the pocket of the module doc).
+    pub fn new(
+        witnesses: &Piece,
+        cell: usize,
+        artificial: usize,
+        (v1, v2): (Pt, Pt),
+        edge: usize,
+        (c0, c1): (Pt, Pt),
+    ) -> SightFan {
+        let corners = witnesses.vertices();
+        // The cell is inside h(a)'s line; its closure may touch the line
+        // (a cell along a wall that h(a) continues).
+        assert!(
+            turn(&v1, &v2, &witnesses.inner_point()) == Ordering::Greater
+                && corners.iter().all(|u| turn(&v1, &v2, u) != Ordering::Less),
+            "witness cell {cell} is not inside artificial edge {v1}–{v2}"
+        );
+        let ray_end = |u: &Pt, v: &Pt| line_cut(u, v, &c0, &c1);
+        // Along c's line, from the s1 side to the s2 side.
+        let w0 = witnesses.inner_point();
+        let origin = ray_end(&w0, &v1);
+        let dir = ray_end(&w0, &v2).sub(&origin);
+        let along = |p: &Pt| dot(&p.sub(&origin), &dir);
+        let c_dir = c1.sub(&c0);
+        let extreme = |v: &Pt, first: bool| -> Pt {
+            // A corner whose ray runs parallel to c's line is skipped: the
+            // cell's other rays all reach c, so its limit is no extreme.
+            let ends = corners
+                .iter()
+                .filter(|u| crate::piece::cross(&v.sub(u), &c_dir) != 0)
+                .map(|u| ray_end(u, v));
+            let best = if first {
+                ends.min_by_key(|p| along(p))
+            } else {
+                ends.max_by_key(|p| along(p))
+            };
+            best.expect("a cell has a vertex")
+        };
+        let (t1, t2) = (extreme(&v1, true), extreme(&v2, false));
+        for t in [&t1, &t2] {
+            assert!(
+                segments_meet(t, t, &c0, &c1),
+                "witness cell {cell} sees past map edge {edge} through {v1}–{v2}"
+            );
+        }
+        // Largest parts first (a shared point is found sooner); a 2-cell
+        // lies inside the open hull, so it is not a part of its own.
+        let mut all = corners.clone();
+        all.extend([v1.clone(), v2.clone()]);
+        let mut inside = vec![Piece::Polygon(convex_hull(all))];
+        inside.push(Piece::Segment(v1.clone(), v2.clone()));
+        if witnesses.dimension() < 2 {
+            inside.push(witnesses.clone());
+        }
+        let mut beyond = Vec::new();
+        let b = convex_hull(vec![v2.clone(), v1.clone(), t1.clone(), t2.clone()]);
+        if b.len() >= 3 {
+            beyond.push(Piece::Polygon(b));
+        }
+        if t1 != t2 {
+            beyond.push(Piece::Segment(t1, t2));
+        }
+        let points: Vec<Pt> = inside
+            .iter()
+            .chain(&beyond)
+            .flat_map(Piece::vertices)
+            .collect();
+        let boxes = beyond
+            .iter()
+            .chain(&inside)
+            .map(|p| Bounds::of(&p.vertices()))
+            .collect();
+        SightFan {
+            boxes,
+            cell,
+            artificial,
+            edge,
+            v1,
+            v2,
+            c: (c0, c1),
+            witnesses: witnesses.clone(),
+            inside,
+            beyond,
+            bounds: Bounds::of(&points),
+        }
+    }
+
+    /// Every part of the union of the lines of sight.
+    pub fn pieces(&self) -> impl Iterator<Item = &Piece> {
+        self.beyond.iter().chain(&self.inside)
+    }
+
+    /// A point shared by a line of sight of this fan and one of `other`:
+    /// of any part, or (`beyond_only`) of the parts behind the artificial
+    /// edges only.
+    pub fn meets(&self, other: &SightFan, beyond_only: bool) -> Option<Pt> {
+        if !self.bounds.meets_box(&other.bounds) {
+            return None;
+        }
+        let k = |f: &SightFan| {
+            if beyond_only {
+                f.beyond.len()
+            } else {
+                f.boxes.len()
+            }
+        };
+        let (mine, theirs) = (k(self), k(other));
+        for (p, bp) in self.pieces().zip(&self.boxes).take(mine) {
+            for (q, bq) in other.pieces().zip(&other.boxes).take(theirs) {
+                if bp.meets_box(bq) {
+                    if let Some(x) = p.common_point(q) {
+                        return Some(x);
+                    }
+                }
+            }
+        }
+        None
+    }
+
+    /// A witness `w` of the cell and a point `p` of the candidate edge
+    /// whose line of sight through h(a) passes through `x`, a point of the
+    /// fan. Re-checked against the map `ring`.
+    ///
+    /// # Panics
+    /// If no such line is found or it fails the re-check (a bug).
+    pub fn sight_through(&self, ring: &[Point], x: &Pt) -> (Pt, Pt) {
+        let (v1, v2) = (&self.v1, &self.v2);
+        let to_c = |w: &Pt, through: &Pt| line_cut(w, through, &self.c.0, &self.c.1);
+        let on_c_line = turn(&self.c.0, &self.c.1, x) == Ordering::Equal;
+        let (w, p) = if self.witnesses.contains(x) {
+            let mid = v1.add(v2).scale(&Rational::from((1, 2)));
+            (x.clone(), to_c(x, &mid))
+        } else {
+            let w = match turn(v1, v2, x) {
+                Ordering::Equal => Some(self.witnesses.inner_point()),
+                // Before h(a): w behind x, in the wedge opposite h(a).
+                Ordering::Greater => self
+                    .witnesses
+                    .clip(x, v1, turn(x, v1, v2).reverse())
+                    .and_then(|c| c.clip(x, v2, turn(x, v2, v1).reverse()))
+                    .map(|c| c.inner_point()),
+                // Behind h(a): w in the wedge from x through h(a).
+                Ordering::Less => self
+                    .witnesses
+                    .clip(x, v1, turn(x, v1, v2))
+                    .and_then(|c| c.clip(x, v2, turn(x, v2, v1)))
+                    .map(|c| c.inner_point()),
+            };
+            let w = w.unwrap_or_else(|| panic!("no witness's line of sight reaches {x}"));
+            let p = if on_c_line { x.clone() } else { to_c(&w, x) };
+            (w, p)
+        };
+        self.recheck(ring, x, &w, &p);
+        (w, p)
+    }
+
+    fn recheck(&self, ring: &[Point], x: &Pt, w: &Pt, p: &Pt) {
+        let (v1, v2) = (&self.v1, &self.v2);
+        let through = turn(v1, v2, w) == Ordering::Greater
+            && turn(v1, v2, p) == Ordering::Less
+            && turn(w, p, v1) == turn(w, p, v2).reverse()
+            && turn(w, p, v1) != Ordering::Equal;
+        let ok = self.witnesses.contains(w)
+            && through
+            && segments_meet(p, p, &self.c.0, &self.c.1)
+            && segments_meet(x, x, w, p)
+            && sees(ring, &w.to_rat_point(), &p.to_rat_point()).is_visible();
+        assert!(
+            ok,
+            "the line of sight {w}–{p} through {v1}–{v2} found for {x} fails its re-check: a bug in the sight fans"
+        );
+    }
+}
+
+/// Def 4.4 for two fans: a pair of lines of sight, one of each, that meet
+/// (anywhere, or behind both artificial edges with `beyond_only`),
+/// certified against the map `ring`.
+pub fn crossing(ring: &[Point], f: &SightFan, g: &SightFan, beyond_only: bool) -> Option<Crossing> {
+    let at = f.meets(g, beyond_only)?;
+    Some(Crossing {
+        first: f.sight_through(ring, &at),
+        second: g.sight_through(ring, &at),
+        at,
+    })
+}

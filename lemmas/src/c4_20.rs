@@ -1,0 +1,123 @@
+//! Claim C4.20 (Corollary 4.20): if c1, c2 (valid candidate edges of a in
+//! h, c1 first on their directed line) and c1', c2' (of a' in an
+//! overlapping h' ≠ h, c1' first) cross each other pairwise (Def 4.4),
+//! they appear on ∂M in the order c1, c2, c1', c2' (cyclically, which is
+//! also the order c1', c2', c1, c2).
+//!
+//! ## Trust
+//! Exact, on every quadruple (c1 < c2 of one artificial edge of h, c1' <
+//! c2' of one of h') of valid candidate edges of every overlapping pair of
+//! valid embeddings of one skeleton (`examined`; the claim is symmetric in
+//! h and h', so each pair is taken one way). A quadruple in the order
+//! c1, c2, c1', c2' satisfies the claim whether or not its edges cross;
+//! for one that is not (`out_of_order`), the four crossings are decided
+//! by [`crate::Study::crosses`] over whole witness regions, and all four
+//! would be a violation. Readings of "directed line" and "between" as in
+//! [`crate::t4_19`].
+
+use serde_json::json;
+
+use crate::driver::{Checker, Report, Violation};
+use crate::t4_19::ordered_candidates;
+use crate::Study;
+
+const ID: &str = "C4.20";
+
+/// Checks C4.20 on every quadruple of mutually crossing candidate edges
+/// of two overlapping valid embeddings of one skeleton.
+#[derive(Debug, Clone, Copy, Default)]
+pub struct Order;
+
+/// The registry's constructor.
+pub fn checker() -> Box<dyn Checker> {
+    Box::new(Order)
+}
+
+impl Checker for Order {
+    fn id(&self) -> &'static str {
+        ID
+    }
+
+    fn check_study(&self, study: &Study<'_>) -> Report {
+        let n = study.map().n();
+        let mut report = Report::new(ID);
+        let pairs = |e: &[usize]| -> Vec<[usize; 2]> {
+            (0..e.len())
+                .flat_map(|i| (i + 1..e.len()).map(move |j| [e[i], e[j]]))
+                .collect()
+        };
+        for (k, p) in study.overlapping_pairs().iter().enumerate() {
+            let (mine, theirs) = (
+                ordered_candidates(study, p.class, p.a),
+                ordered_candidates(study, p.class, p.b),
+            );
+            for (a, edges) in mine.iter().enumerate() {
+                for (a2, others) in theirs.iter().enumerate() {
+                    for c in pairs(edges) {
+                        for d in pairs(others) {
+                            let mut verdict = check(n, c, d);
+                            if verdict.is_some() {
+                                report.count("out_of_order", 1);
+                                let all = c.iter().all(|&c| {
+                                    d.iter()
+                                        .all(|&d| study.crosses(k, (a, c), (a2, d)).is_some())
+                                });
+                                if !all {
+                                    verdict = None;
+                                }
+                            }
+                            report.record(verdict.map(|mut v| {
+                                v.data["class"] = json!(p.class);
+                                v.data["embeddings"] = json!([p.a, p.b]);
+                                v.data["artificial_edges"] = json!([a, a2]);
+                                v
+                            }));
+                        }
+                    }
+                }
+            }
+        }
+        report
+    }
+}
+
+/// One quadruple (each pair in the order of its line): counter-clockwise
+/// from c1, the boundary meets c2, then c1', then c2'.
+pub fn check(n: usize, [c1, c2]: [usize; 2], [d1, d2]: [usize; 2]) -> Option<Violation> {
+    let r = |x: usize| (x + n - c1) % n;
+    if r(c2) < r(d1) && r(d1) < r(d2) {
+        return None;
+    }
+    Some(Violation::with_data(
+        format!("mutually crossing candidate edges {c1}, {c2} and {d1}, {d2} interleave or run backwards on the boundary"),
+        json!({ "c": [c1, c2], "c_prime": [d1, d2] }),
+    ))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn holds_on_repeated_niches() {
+        let mut report = Report::new(ID);
+        for seed in [195, 114, 12] {
+            let map = wai_gen::repeated_niches(seed);
+            report.absorb(Order.check_study(&Study::new(&map)));
+        }
+        assert!(report.violations.is_empty(), "{:?}", report.violations);
+        // As for T4.19: no such quadruple on these maps yet.
+        assert_eq!(report.examined, 0);
+    }
+
+    #[test]
+    fn planted_orders_are_reported() {
+        assert!(check(20, [2, 5], [8, 11]).is_none());
+        // Wrapping around the start of the boundary is still in order.
+        assert!(check(20, [17, 19], [1, 4]).is_none());
+        // Interleaved.
+        assert!(check(20, [2, 8], [5, 11]).is_some());
+        // c2' before c1'.
+        assert!(check(20, [2, 5], [11, 8]).is_some());
+    }
+}
