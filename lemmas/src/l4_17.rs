@@ -6,13 +6,19 @@
 //! ## Trust
 //! Two parts, each exact.
 //! - **Lines of sight from the witnesses**, on every valid embedding: for
-//!   each two sight fans ([`wai_embed::SightFan`]) of h on different
-//!   artificial edges, whether their parts behind the artificial edges
-//!   (all of the fan that lies outside h(V◇)) share a point, decided
-//!   exactly over whole witness cells; a violation comes with two
-//!   certified lines of sight and the point where they meet. The lemma
-//!   speaks of lines from anywhere inside h(V◇); those from points that
-//!   are not witnesses are not examined (counted as `fan_pairs`).
+//!   each two (artificial edge, valid candidate edge) of h on different
+//!   artificial edges (`examined`), whether a line of sight from a witness
+//!   through one and one through the other meet behind them (outside
+//!   h(V◇)). Such lines lie in the open hull of the artificial edge and
+//!   its candidate edge, or on the open candidate edge; where those
+//!   regions of the two are apart (`apart`) nothing can meet, and
+//!   otherwise the sight fans ([`wai_embed::SightFan`]) of every witness
+//!   cell that sees the one against every cell that sees the other
+//!   (`fan_pairs` counts these cell pairs, pruned or not) are intersected
+//!   exactly; a violation comes with two certified lines of sight and the
+//!   point where they meet. The lemma speaks of lines from anywhere
+//!   inside h(V◇); those from points that are not witnesses are not
+//!   examined.
 //! - **The corollary**, on every valid embedding: no map edge is a valid
 //!   candidate edge (Def 4.1) of two artificial edges (counted as
 //!   `embeddings`).
@@ -30,7 +36,8 @@
 //! the corollary covers.
 
 use serde_json::json;
-use wai_embed::{crossing, valid_from_views, SightFan};
+use wai_embed::piece::convex_hull;
+use wai_embed::{crossing, Bounds, Piece, Pt, SightFan};
 
 use crate::driver::{Checker, Report, Violation};
 use crate::Study;
@@ -62,25 +69,77 @@ impl Checker for OwnArtificialEdge {
                 if !study.witnesses()[class][i].is_valid() {
                     continue;
                 }
-                report.count("embeddings", 1);
                 let tag = |mut v: Violation| {
                     v.data["class"] = json!(class);
                     v.data["embedding"] = json!(i);
                     v
                 };
-                let k = h.embedding.vertices.len();
-                let valid = valid_from_views(k, &study.views()[class][i]);
+                report.count("embeddings", 1);
+                let valid = study.valid_candidates(class, i);
                 report.record(check_candidates(&valid).map(tag));
-                let fans = &study.fans()[class][i];
-                let before = report.examined;
-                for v in check_fans(ring, fans) {
-                    report.record(v.map(tag));
+                // The sight regions: (artificial edge, candidate edge), the
+                // number of witness cells that see it, and the region its
+                // lines of sight behind the artificial edge lie in.
+                let views = &study.views()[class][i];
+                let polygon = h.embedding.polygon(study.map());
+                let k = polygon.len();
+                let mut regions = Vec::new();
+                for (a, edges) in valid.iter().enumerate() {
+                    for &c in edges {
+                        let cells = views.iter().filter(|v| v[a] == Some(c)).count();
+                        let pt = |p: wai_exact::Point| Pt::from(p);
+                        let window = (pt(polygon[a]), pt(polygon[(a + 1) % k]));
+                        let edge = (pt(ring[c]), pt(ring[(c + 1) % ring.len()]));
+                        let region = behind(&window, &edge);
+                        let bounds = Bounds::of(&[window.0, window.1, edge.0, edge.1]);
+                        regions.push(((a, c), cells, region, bounds));
+                    }
                 }
-                report.count("fan_pairs", report.examined - before);
+                for (x, (k1, n1, r1, b1)) in regions.iter().enumerate() {
+                    for (k2, n2, r2, b2) in regions[x + 1..].iter().filter(|r| r.0 .0 != k1.0) {
+                        report.count("fan_pairs", (n1 * n2) as u64);
+                        if !b1.meets_box(b2) || !meets(r1, r2) {
+                            report.count("apart", 1);
+                            report.record(None);
+                            continue;
+                        }
+                        let fans = study.fans(class, i);
+                        let of = |(a, c): (usize, usize)| {
+                            fans.iter()
+                                .filter(move |f| f.artificial == a && f.edge == c)
+                        };
+                        let found = of(*k1)
+                            .flat_map(|f| of(*k2).map(move |g| (f, g)))
+                            .find_map(|(f, g)| violation(ring, f, g));
+                        report.record(found.map(tag));
+                    }
+                }
             }
         }
         report
     }
+}
+
+/// A region that holds every line of sight through the artificial edge
+/// `window` to the map edge `edge` behind it, beyond the window: the open
+/// hull of the two (B° and the region of a fan lie inside it) and the
+/// open edge (where the seen intervals lie).
+fn behind(window: &(Pt, Pt), edge: &(Pt, Pt)) -> Vec<Piece> {
+    let hull = convex_hull(vec![
+        window.0.clone(),
+        window.1.clone(),
+        edge.0.clone(),
+        edge.1.clone(),
+    ]);
+    let mut out = vec![Piece::Segment(edge.0.clone(), edge.1.clone())];
+    if hull.len() >= 3 {
+        out.push(Piece::Polygon(hull));
+    }
+    out
+}
+
+fn meets(a: &[Piece], b: &[Piece]) -> bool {
+    a.iter().any(|p| b.iter().any(|q| p.meets(q)))
 }
 
 /// The corollary on one embedding's (valid) candidate edges, by skeleton
@@ -99,33 +158,23 @@ pub fn check_candidates(candidates: &[Vec<usize>]) -> Option<Violation> {
     None
 }
 
-/// Every pair of fans of one embedding on different artificial edges:
-/// `None` for a pair whose lines of sight do not meet behind them.
-pub fn check_fans<'f>(
-    ring: &'f [wai_exact::Point],
-    fans: &'f [SightFan],
-) -> impl Iterator<Item = Option<Violation>> + 'f {
-    fans.iter().enumerate().flat_map(move |(k, f)| {
-        fans[k + 1..]
-            .iter()
-            .filter(move |g| g.artificial != f.artificial)
-            .map(move |g| {
-                crossing(ring, f, g, true).map(|x| {
-                    Violation::with_data(
-                        format!(
-                            "lines of sight through artificial edges {} and {} of one embedding meet at {} outside it",
-                            f.artificial, g.artificial, x.at
-                        ),
-                        json!({
-                            "artificial_edges": [f.artificial, g.artificial],
-                            "map_edges": [f.edge, g.edge],
-                            "at": x.at.to_string(),
-                            "first": [x.first.0.to_string(), x.first.1.to_string()],
-                            "second": [x.second.0.to_string(), x.second.1.to_string()],
-                        }),
-                    )
-                })
-            })
+/// Two fans of one embedding on different artificial edges: their lines
+/// of sight meet behind the artificial edges (outside h(V◇)).
+pub fn violation(ring: &[wai_exact::Point], f: &SightFan, g: &SightFan) -> Option<Violation> {
+    crossing(ring, f, g, true).map(|x| {
+        Violation::with_data(
+            format!(
+                "lines of sight through artificial edges {} and {} of one embedding meet at {} outside it",
+                f.artificial, g.artificial, x.at
+            ),
+            json!({
+                "artificial_edges": [f.artificial, g.artificial],
+                "map_edges": [f.edge, g.edge],
+                "at": x.at.to_string(),
+                "first": [x.first.0.to_string(), x.first.1.to_string()],
+                "second": [x.second.0.to_string(), x.second.1.to_string()],
+            }),
+        )
     })
 }
 
@@ -142,6 +191,7 @@ mod tests {
         }
         assert!(report.violations.is_empty(), "{:?}", report.violations);
         assert!(report.counts["fan_pairs"] > 0);
+        assert!(report.examined > report.counts["apart"]);
     }
 
     #[test]

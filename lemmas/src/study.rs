@@ -45,8 +45,9 @@ pub struct Study<'m> {
     /// By class, embedding and witness cell, by skeleton edge: the map
     /// edge seen through it (`wai_embed::witness_views`).
     views: OnceCell<Vec<Vec<Views>>>,
-    /// By class and embedding: the sight fans of its witness cells.
-    fans: OnceCell<Vec<Vec<Vec<SightFan>>>>,
+    /// By class and embedding: the sight fans of its witness cells, each
+    /// embedding's built when first asked for.
+    fans: OnceCell<Vec<Vec<OnceCell<Vec<SightFan>>>>>,
     /// Def 4.4, decided so far: by (overlapping pair, (artificial edge,
     /// candidate edge) of its first embedding, of its second).
     crossings: RefCell<HashMap<CrossingKey, Option<Crossing>>>,
@@ -191,8 +192,8 @@ impl<'m> Study<'m> {
                 .iter()
                 .enumerate()
                 .map(|(class, all)| {
-                    let hs: Vec<Embedding> = all.iter().map(|h| h.embedding.clone()).collect();
-                    witness_regions(d, class, &hs)
+                    let origins: Vec<usize> = all.iter().map(|h| h.embedding.origin).collect();
+                    witness_regions(d, class, &origins)
                 })
                 .collect()
         })
@@ -339,23 +340,25 @@ impl<'m> Study<'m> {
         })
     }
 
-    /// By class and embedding: one sight fan per witness cell and
-    /// artificial edge (Def 4.4's lines of sight, `wai_embed::SightFan`).
-    pub fn fans(&self) -> &[Vec<Vec<SightFan>>] {
-        self.fans.get_or_init(|| {
-            let (witnesses, views) = (self.witnesses(), self.views());
+    /// Of embedding `i` of class `class`: one sight fan per witness cell
+    /// and artificial edge (Def 4.4's lines of sight,
+    /// `wai_embed::SightFan`); built when first asked for, as most
+    /// embeddings' fans are never needed (building all of them costs more
+    /// than every other chapter 4 structure together).
+    pub fn fans(&self, class: usize, i: usize) -> &[SightFan] {
+        let slots = self.fans.get_or_init(|| {
             self.embeddings()
                 .iter()
-                .enumerate()
-                .map(|(c, hs)| {
-                    hs.iter()
-                        .enumerate()
-                        .map(|(i, h)| {
-                            sight_fans(self.map, &h.embedding, &witnesses[c][i], &views[c][i])
-                        })
-                        .collect()
-                })
+                .map(|hs| hs.iter().map(|_| OnceCell::new()).collect())
                 .collect()
+        });
+        slots[class][i].get_or_init(|| {
+            sight_fans(
+                self.map,
+                &self.embeddings()[class][i].embedding,
+                &self.witnesses()[class][i],
+                &self.views()[class][i],
+            )
         })
     }
 
@@ -377,9 +380,8 @@ impl<'m> Study<'m> {
             return x.clone();
         }
         let p = &self.overlapping_pairs()[pair];
-        let fans = &self.fans()[p.class];
         let of = |i: usize, (a, c): (usize, usize)| {
-            fans[i]
+            self.fans(p.class, i)
                 .iter()
                 .filter(move |f| f.artificial == a && f.edge == c)
         };

@@ -51,7 +51,8 @@ fn analyse(
     class: usize,
 ) -> ClassReport {
     let embeddings = embedder.embeddings(&d.skeletons()[class]);
-    let witnesses = witness_regions(d, class, &embeddings);
+    let origins: Vec<usize> = embeddings.iter().map(|h| h.origin).collect();
+    let witnesses = witness_regions(d, class, &origins);
     let valid_candidates = embeddings
         .iter()
         .zip(&witnesses)

@@ -85,19 +85,15 @@ pub fn piece_of(d: &Decomposition<'_>, cell: CellRef) -> Piece {
     }
 }
 
-/// The witness regions of `embeddings`, all embeddings of class `class`'s
-/// skeleton, in their order: the class's 2-cells and kept lower cells,
-/// each given to the embedding at its own v0.
+/// The witness regions of the embeddings of class `class`'s skeleton whose
+/// origins h(v0) are `origins`, in their order: the class's 2-cells and
+/// kept lower cells, each given to the embedding at its own v0.
 ///
 /// A cell whose v0 is the origin of none of them is left out (that would
 /// break Lemma 3.4, which claim L3.5 checks).
-pub fn witness_regions(
-    d: &Decomposition<'_>,
-    class: usize,
-    embeddings: &[Embedding],
-) -> Vec<Witnesses> {
-    let mut out = vec![Witnesses::default(); embeddings.len()];
-    let slot = |origin: usize| embeddings.iter().position(|h| h.origin == origin);
+pub fn witness_regions(d: &Decomposition<'_>, class: usize, origins: &[usize]) -> Vec<Witnesses> {
+    let mut out = vec![Witnesses::default(); origins.len()];
+    let slot = |origin: usize| origins.iter().position(|&o| o == origin);
     for &f in &d.classes()[class] {
         if let Some(i) = slot(d.origin_of(f)) {
             let cell = CellRef::Face(f);

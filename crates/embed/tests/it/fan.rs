@@ -21,7 +21,8 @@ fn fan_counts() {
         let d = Decomposition::new(&map);
         let class = d.skeletons().iter().position(|k| *k == key).unwrap();
         let hs = Embedder::new(&index).embeddings(&key);
-        let ws = witness_regions(&d, class, &hs);
+        let origins: Vec<usize> = hs.iter().map(|h| h.origin).collect();
+        let ws = witness_regions(&d, class, &origins);
         let valid: Vec<Vec<Pt>> = hs
             .iter()
             .zip(&ws)

@@ -16,7 +16,8 @@ fn every_cell_witnesses_one_embedding_and_valid_candidates_are_candidates() {
         let embedder = Embedder::new(&index);
         for (class, key) in d.skeletons().iter().enumerate() {
             let hs = embedder.embeddings(key);
-            let ws = witness_regions(&d, class, &hs);
+            let origins: Vec<usize> = hs.iter().map(|h| h.origin).collect();
+            let ws = witness_regions(&d, class, &origins);
             let cells: usize = ws.iter().map(|w| w.cells.len()).sum();
             assert_eq!(
                 cells,
