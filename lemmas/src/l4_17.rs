@@ -76,7 +76,7 @@ impl Checker for OwnArtificialEdge {
                 };
                 report.count("embeddings", 1);
                 let valid = study.valid_candidates(class, i);
-                report.record(check_candidates(&valid).map(tag));
+                report.record(check_candidates(valid).map(tag));
                 // The sight regions: (artificial edge, candidate edge), the
                 // number of witness cells that see it, and the region its
                 // lines of sight behind the artificial edge lie in.
@@ -103,13 +103,9 @@ impl Checker for OwnArtificialEdge {
                             report.record(None);
                             continue;
                         }
-                        let fans = study.fans(class, i);
-                        let of = |(a, c): (usize, usize)| {
-                            fans.iter()
-                                .filter(move |f| f.artificial == a && f.edge == c)
-                        };
-                        let found = of(*k1)
-                            .flat_map(|f| of(*k2).map(move |g| (f, g)))
+                        let found = study
+                            .fans_seeing(class, i, *k1)
+                            .flat_map(|f| study.fans_seeing(class, i, *k2).map(move |g| (f, g)))
                             .find_map(|(f, g)| violation(ring, f, g));
                         report.record(found.map(tag));
                     }

@@ -52,28 +52,29 @@ impl Checker for ArtificialEdgeInside {
             for (i, ci) in va.iter().enumerate().filter(|(_, c)| !c.is_empty()) {
                 for (j, cj) in vb.iter().enumerate().filter(|(_, c)| !c.is_empty()) {
                     let (a, a2) = (edge(r, i), edge(r2, j));
-                    let outside = check(&a, r, &a2, r2).is_some();
+                    // The violation a crossing would be, if neither edge
+                    // meets the other polygon.
+                    let outside = check(&a, r, &a2, r2);
                     for &c in ci {
                         for &c2 in cj.iter().filter(|&&c2| c2 != c) {
-                            if !outside {
+                            let Some(outside) = &outside else {
                                 report.count("artificial_edge_meets", 1);
                                 report.record(None);
                                 continue;
-                            }
+                            };
                             report.count("both_outside", 1);
                             let found = study.crosses(k, (i, c), (j, c2));
-                            report.record(found.and_then(|x| {
-                                check(&a, r, &a2, r2).map(|mut v| {
-                                    v.data["class"] = json!(p.class);
-                                    v.data["pair"] = json!([p.a, p.b]);
-                                    v.data["candidate_edges"] = json!([c, c2]);
-                                    v.data["sight"] = json!({
-                                        "at": x.at.to_string(),
-                                        "first": [x.first.0.to_string(), x.first.1.to_string()],
-                                        "second": [x.second.0.to_string(), x.second.1.to_string()],
-                                    });
-                                    v
-                                })
+                            report.record(found.map(|x| {
+                                let mut v = outside.clone();
+                                v.data["class"] = json!(p.class);
+                                v.data["pair"] = json!([p.a, p.b]);
+                                v.data["candidate_edges"] = json!([c, c2]);
+                                v.data["sight"] = json!({
+                                    "at": x.at.to_string(),
+                                    "first": [x.first.0.to_string(), x.first.1.to_string()],
+                                    "second": [x.second.0.to_string(), x.second.1.to_string()],
+                                });
+                                v
                             }));
                         }
                     }

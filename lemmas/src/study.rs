@@ -45,6 +45,8 @@ pub struct Study<'m> {
     /// By class, embedding and witness cell, by skeleton edge: the map
     /// edge seen through it (`wai_embed::witness_views`).
     views: OnceCell<Vec<Vec<Views>>>,
+    /// By class and embedding: the valid candidate edges, read off `views`.
+    valid: OnceCell<Vec<Vec<Vec<Vec<usize>>>>>,
     /// By class and embedding: the sight fans of its witness cells, each
     /// embedding's built when first asked for.
     fans: OnceCell<Vec<Vec<OnceCell<Vec<SightFan>>>>>,
@@ -129,6 +131,7 @@ impl<'m> Study<'m> {
             rings: OnceCell::new(),
             pairs: OnceCell::new(),
             views: OnceCell::new(),
+            valid: OnceCell::new(),
             fans: OnceCell::new(),
             crossings: RefCell::new(HashMap::new()),
         }
@@ -380,16 +383,11 @@ impl<'m> Study<'m> {
             return x.clone();
         }
         let p = &self.overlapping_pairs()[pair];
-        let of = |i: usize, (a, c): (usize, usize)| {
-            self.fans(p.class, i)
-                .iter()
-                .filter(move |f| f.artificial == a && f.edge == c)
-        };
         let ring = self.map.vertices();
         let found = (first.1 != second.1)
             .then(|| {
-                of(p.a, first)
-                    .flat_map(|f| of(p.b, second).map(move |g| (f, g)))
+                self.fans_seeing(p.class, p.a, first)
+                    .flat_map(|f| self.fans_seeing(p.class, p.b, second).map(move |g| (f, g)))
                     .find_map(|(f, g)| crossing(ring, f, g, false))
             })
             .flatten();
@@ -397,11 +395,36 @@ impl<'m> Study<'m> {
         found
     }
 
+    /// The fans of embedding `i` of class `class` (as [`Study::fans`])
+    /// whose witness cells see candidate edge `key.1` through artificial
+    /// edge `key.0`.
+    pub fn fans_seeing(
+        &self,
+        class: usize,
+        i: usize,
+        (a, c): (usize, usize),
+    ) -> impl Iterator<Item = &SightFan> + '_ {
+        self.fans(class, i)
+            .iter()
+            .filter(move |f| f.artificial == a && f.edge == c)
+    }
+
     /// By class and embedding: the valid candidate edges (Def 4.1) of
-    /// each skeleton edge (empty for full edges), from the witness views.
-    pub fn valid_candidates(&self, class: usize, embedding: usize) -> Vec<Vec<usize>> {
-        let k = self.embeddings()[class][embedding].embedding.vertices.len();
-        wai_embed::valid_from_views(k, &self.views()[class][embedding])
+    /// each skeleton edge (empty for full edges), read off the witness
+    /// views once.
+    pub fn valid_candidates(&self, class: usize, embedding: usize) -> &[Vec<usize>] {
+        &self.valid.get_or_init(|| {
+            self.embeddings()
+                .iter()
+                .zip(self.views())
+                .map(|(hs, views)| {
+                    hs.iter()
+                        .zip(views)
+                        .map(|(h, v)| wai_embed::valid_from_views(h.embedding.vertices.len(), v))
+                        .collect()
+                })
+                .collect()
+        })[class][embedding]
     }
 
     /// V_p of each of [`sample::viewpoints`]`(map, limit)`, by the

@@ -43,7 +43,7 @@ pub fn checker() -> Box<dyn Checker> {
 /// `embedding` of class `class`, in the order of their directed line.
 pub fn ordered_candidates(study: &Study<'_>, class: usize, embedding: usize) -> Vec<Vec<usize>> {
     let map = study.map().vertices();
-    let mut v = study.valid_candidates(class, embedding);
+    let mut v = study.valid_candidates(class, embedding).to_vec();
     for edges in &mut v {
         edges.sort_by(|&c1, &c2| {
             if c1 == c2 {
@@ -100,12 +100,17 @@ impl Checker for NotBetween {
         let n = study.map().n();
         let mut report = Report::new(ID);
         for (k, p) in study.overlapping_pairs().iter().enumerate() {
+            let (of_a, of_b) = (
+                ordered_candidates(study, p.class, p.a),
+                ordered_candidates(study, p.class, p.b),
+            );
             for h_first in [true, false] {
                 let (h, h2) = if h_first { (p.a, p.b) } else { (p.b, p.a) };
-                let (mine, theirs) = (
-                    ordered_candidates(study, p.class, h),
-                    ordered_candidates(study, p.class, h2),
-                );
+                let (mine, theirs) = if h_first {
+                    (&of_a, &of_b)
+                } else {
+                    (&of_b, &of_a)
+                };
                 for (a, edges) in mine.iter().enumerate() {
                     for (i, &c1) in edges.iter().enumerate() {
                         for &c2 in &edges[i + 1..] {

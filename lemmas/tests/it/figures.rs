@@ -181,7 +181,7 @@ fn lemma_4_17_corollary_fails_for_def_3_11_candidate_edges_only() {
     // Two map edges are Def 3.11 candidates of both artificial edges …
     assert_eq!(shared(&h.candidates), 2);
     // … but valid candidates of one each.
-    assert_eq!(shared(&study.valid_candidates(class, 0)), 0);
+    assert_eq!(shared(study.valid_candidates(class, 0)), 0);
     let report = wai_lemmas::l4_17::checker().check_study(&study);
     assert!(report.violations.is_empty(), "{:?}", report.violations);
     assert!(report.counts["shared_def_3_11"] > 0);
