@@ -14,18 +14,22 @@ pub const DEFAULT_MAP: &str = include_str!("../maps/office-floor.json");
 #[derive(clap::Args, Debug)]
 pub struct GenArgs {
     /// A thesis family by id (see --list).
-    #[arg(long, conflicts_with = "random", required_unless_present_any = ["random", "list"])]
+    #[arg(long, conflicts_with_all = ["random", "layout"], required_unless_present_any = ["random", "layout", "list"])]
     pub family: Option<String>,
     /// A family parameter; repeat for families with several.
     #[arg(long = "param")]
     pub params: Vec<u32>,
     /// A random kind by id (see --list).
-    #[arg(long)]
+    #[arg(long, conflicts_with = "layout")]
     pub random: Option<String>,
+    /// A seeded chapter 4 layout by id (see --list): repeated rooms whose
+    /// embeddings overlap.
+    #[arg(long)]
+    pub layout: Option<String>,
     /// Vertex count target for random kinds.
     #[arg(long, default_value_t = 20)]
     pub n: usize,
-    /// Seed for random kinds (the same seed gives the same map).
+    /// Seed for random kinds and layouts (the same seed gives the same map).
     #[arg(long, default_value_t = 0)]
     pub seed: u64,
     /// Output file; standard output if absent.
@@ -226,12 +230,13 @@ pub fn gen(args: &GenArgs) -> Result<(), Failure> {
         print!("{}", catalogue());
         return Ok(());
     }
-    let map = match (&args.family, &args.random) {
-        (Some(family), _) => wai_gen::family(family, &args.params),
-        (None, Some(kind)) => wai_gen::random(kind, args.n, args.seed),
-        (None, None) => {
+    let map = match (&args.family, &args.random, &args.layout) {
+        (Some(family), _, _) => wai_gen::family(family, &args.params),
+        (None, Some(kind), _) => wai_gen::random(kind, args.n, args.seed),
+        (None, None, Some(id)) => wai_gen::layout(id, args.seed),
+        (None, None, None) => {
             return Err(Failure::usage(
-                "give --family ID or --random KIND (see --list)",
+                "give --family ID, --random KIND or --layout ID (see --list)",
             ))
         }
     }
@@ -264,6 +269,10 @@ fn catalogue() -> String {
             "  {:<20} {} (n from {} to {}; vertices: {})\n",
             k.id, k.method, k.min_n, k.max_n, k.vertices
         ));
+    }
+    s.push_str("\nChapter 4 layouts (gen --layout ID --seed S):\n");
+    for l in wai_gen::LAYOUTS {
+        s.push_str(&format!("  {:<20} {}\n", l.id, l.shows));
     }
     s
 }

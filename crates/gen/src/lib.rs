@@ -18,6 +18,7 @@
 //! No decision reads a float: angular order, crossings and collinearity
 //! are decided by `wai_exact` predicates on integer points.
 
+mod bottles;
 mod families;
 mod polyomino;
 mod repeated;
@@ -26,6 +27,7 @@ mod simple;
 mod special;
 mod strategies;
 
+pub use bottles::{bottled_niches, BottleLayout};
 pub use families::{
     comb_convex_chain, comb_layout, convex_niches, convex_niches_layout, convex_niches_viewpoints,
     convex_niches_with, corridor_niches, corridor_niches_viewpoints, overlap_fan,
@@ -52,6 +54,8 @@ pub enum GenError {
     UnknownFamily(String),
     #[error("unknown random kind {0:?} (known: {known})", known = kind_ids())]
     UnknownKind(String),
+    #[error("unknown layout {0:?} (known: {known})", known = layout_ids())]
+    UnknownLayout(String),
     #[error("family {family} takes {expected} parameters, got {got}")]
     ParamCount {
         family: &'static str,
@@ -82,6 +86,10 @@ pub enum GenError {
 
 fn family_ids() -> String {
     FAMILIES.iter().map(|f| f.id).collect::<Vec<_>>().join(", ")
+}
+
+fn layout_ids() -> String {
+    LAYOUTS.iter().map(|l| l.id).collect::<Vec<_>>().join(", ")
 }
 
 fn kind_ids() -> String {
@@ -295,4 +303,44 @@ pub fn random(kind: &str, n: usize, seed: u64) -> Result<Map, GenError> {
         ring,
         format!("{}/n={n},seed={seed}", info.id),
     ))
+}
+
+/// A seeded chapter 4 layout: repeated rooms whose embeddings overlap.
+#[derive(Clone, Copy, Debug)]
+pub struct LayoutInfo {
+    pub id: &'static str,
+    /// What its maps show.
+    pub shows: &'static str,
+    pub generate: fn(u64) -> Map,
+}
+
+/// The chapter 4 layouts, for [`layout`] and the CLI's `gen --layout`.
+pub const LAYOUTS: &[LayoutInfo] = &[
+    LayoutInfo {
+        id: "repeated-niches",
+        shows: "funnels under a corridor with flared niches: overlapping valid embeddings, \
+                often overlapping kernels (Figs 4.1, 4.2; T4.2, T4.3)",
+        generate: repeated_niches,
+    },
+    LayoutInfo {
+        id: "bottled-niches",
+        shows: "rooms under bottles with spiked back walls: artificial edges with two valid \
+                candidate edges that cross the other room's (Fig 4.31; T4.19, C4.20)",
+        generate: bottled_niches,
+    },
+];
+
+/// The map of layout `id` (one of [`LAYOUTS`]) for `seed`.
+///
+/// ```
+/// let m = wai_gen::layout("bottled-niches", 1).unwrap();
+/// assert_eq!(m, wai_gen::bottled_niches(1));
+/// assert!(wai_gen::layout("nope", 1).is_err());
+/// ```
+pub fn layout(id: &str, seed: u64) -> Result<Map, GenError> {
+    LAYOUTS
+        .iter()
+        .find(|l| l.id == id)
+        .map(|l| (l.generate)(seed))
+        .ok_or_else(|| GenError::UnknownLayout(id.to_owned()))
 }

@@ -6,13 +6,17 @@
 //! and orthogonal maps (n ≤ 30).
 //!
 //! `cargo run --release -p wai-lemmas --bin stress -- [--maps N] [--start S]
-//! [--repeated]` or `-- --corpus`
+//! [--repeated | --bottles]`, `-- --files MAP...` or `-- --corpus`
 //!
 //! Map i is `wai_gen::random(kind, n, seed = S + i)` with the kind cycling
 //! through every random kind and n cycling through 8..=30; with
 //! `--repeated` it is `wai_gen::repeated_niches(S + i)` instead, maps whose
 //! repeated funnels and niches give overlapping embeddings of one skeleton
-//! (the chapter 4 claims examine nothing on most random maps). With `--corpus`
+//! (the chapter 4 claims examine nothing on most random maps), and with
+//! `--bottles` it is `wai_gen::bottled_niches(S + i)`, whose overlapping
+//! embeddings have artificial edges with several valid candidate edges
+//! that cross (Fig 4.31: Theorem 4.19, Corollary 4.20). With `--files`
+//! the maps are the given map files. With `--corpus`
 //! the maps are instead the fixed corpus of issue 7's acceptance: every free
 //! polyomino of up to 8 cells, every thesis family at parameters 1 to 6,
 //! and every map of `shared/datasets` that the cells tests decompose (R2V,
@@ -44,14 +48,20 @@ fn arg(args: &[String], name: &str, default: u64) -> u64 {
 const USAGE: &str = "\
 stress: every claim checker over seeded random maps (n from 8 to 30, every random kind)
 
-usage: stress [--maps N] [--start S] [--repeated] [--claims L] | stress --corpus [--claims L]
+usage: stress [--maps N] [--start S] [--repeated | --bottles] [--claims L]
+       stress --corpus [--claims L]
+       stress --files MAP... [--claims L]
   --maps N    how many maps (default 10000)
   --start S   the first seed (default 0)
   --repeated  the maps are wai_gen::repeated_niches(S + i): repeated funnels
               and niches, with overlapping embeddings (chapter 4)
+  --bottles   the maps are wai_gen::bottled_niches(S + i): rooms under
+              bottled niches, whose artificial edges have several valid
+              candidate edges that cross (Fig 4.31; T4.19, C4.20)
   --claims L  only the checkers of the comma-separated claim ids L
   --corpus    instead: all free polyominoes up to 8 cells, the families at
               parameters 1..=6 and the dataset maps (needs ../shared/datasets)
+  --files     instead: the map files that follow (JSON map format)
   -h, --help  this text
 
 Prints per claim the instances examined; exits 1 on a violation other than
@@ -65,8 +75,33 @@ fn main() {
     }
     let corpus = args.iter().any(|a| a == "--corpus");
     let repeated = args.iter().any(|a| a == "--repeated");
+    let bottles = args.iter().any(|a| a == "--bottles");
     let start = arg(&args, "--start", 0);
-    let all: Vec<wai_map::Map> = if corpus {
+    let files: Vec<&String> = args
+        .iter()
+        .skip_while(|a| *a != "--files")
+        .skip(1)
+        .take_while(|a| !a.starts_with("--"))
+        .collect();
+    let all: Vec<wai_map::Map> = if !files.is_empty() {
+        files
+            .iter()
+            .map(|f| {
+                let loaded = std::fs::read(f)
+                    .map_err(|e| e.to_string())
+                    .and_then(|b| wai_map::json::from_json(&b).map_err(|e| e.to_string()))
+                    .unwrap_or_else(|e| {
+                        eprintln!("stress: {f}: {e}");
+                        std::process::exit(2);
+                    });
+                let name = loaded
+                    .map
+                    .name()
+                    .map_or_else(|| (*f).clone(), str::to_owned);
+                loaded.map.with_name(name)
+            })
+            .collect()
+    } else if corpus {
         corpus_maps().unwrap_or_else(|e| {
             eprintln!("stress: {e}");
             std::process::exit(2);
@@ -74,6 +109,10 @@ fn main() {
     } else if repeated {
         (0..arg(&args, "--maps", 10_000))
             .map(|j| wai_gen::repeated_niches(start + j))
+            .collect()
+    } else if bottles {
+        (0..arg(&args, "--maps", 10_000))
+            .map(|j| wai_gen::bottled_niches(start + j))
             .collect()
     } else {
         let kinds = wai_gen::RANDOM_KINDS;
@@ -179,7 +218,12 @@ fn main() {
         );
     }
     eprintln!();
-    if corpus {
+    if !files.is_empty() {
+        println!(
+            "stress: {total} map files, {:.1} s",
+            t.elapsed().as_secs_f64()
+        );
+    } else if corpus {
         println!(
             "stress: the corpus, {total} maps (polyominoes <= 8, families, datasets), {:.1} s",
             t.elapsed().as_secs_f64()
@@ -187,7 +231,13 @@ fn main() {
     } else {
         println!(
             "stress: {total} {}maps (seeds {start}..{}), {:.1} s",
-            if repeated { "repeated-niches " } else { "" },
+            if repeated {
+                "repeated-niches "
+            } else if bottles {
+                "bottled-niches "
+            } else {
+                ""
+            },
             start + total,
             t.elapsed().as_secs_f64()
         );

@@ -87,8 +87,93 @@ fn fig_3_10_an_embedding_without_witness() {
     );
 }
 
+/// How the artificial edges of two embeddings of one skeleton meet: pairs
+/// on the same two map vertices, sharing exactly one, strictly crossing.
+#[derive(Debug, Default)]
+struct Relations {
+    same_vertices: usize,
+    one_vertex: usize,
+    strictly_crossing: usize,
+}
+
+fn artificial_edge_relations(
+    map: &Map,
+    key: &SkeletonKey,
+    h: &wai_lemmas::study::Embedded,
+    g: &wai_lemmas::study::Embedded,
+) -> Relations {
+    let (vh, vg) = (&h.embedding.vertices, &g.embedding.vertices);
+    let k = vh.len();
+    let pts = map.vertices();
+    let artificial: Vec<usize> = (0..k).filter(|&i| key.labels[i].is_some()).collect();
+    let mut r = Relations::default();
+    for &a in &artificial {
+        for &b in &artificial {
+            let (e, f) = ([vh[a], vh[(a + 1) % k]], [vg[b], vg[(b + 1) % k]]);
+            match e.iter().filter(|x| f.contains(x)).count() {
+                2 => r.same_vertices += 1,
+                1 => r.one_vertex += 1,
+                _ => {
+                    let (s, t) = ((pts[e[0]], pts[e[1]]), (pts[f[0]], pts[f[1]]));
+                    let o = [
+                        orientation(s.0, s.1, t.0),
+                        orientation(s.0, s.1, t.1),
+                        orientation(t.0, t.1, s.0),
+                        orientation(t.0, t.1, s.1),
+                    ];
+                    if !o.contains(&Orientation::Collinear) && o[0] != o[1] && o[2] != o[3] {
+                        r.strictly_crossing += 1;
+                    }
+                }
+            }
+        }
+    }
+    r
+}
+
 #[test]
-fn figs_4_1_and_4_2_overlapping_kernels_and_crossing_artificial_edges() {
+fn fig_4_1_overlapping_kernels_with_artificial_edges_that_share_vertices() {
+    let (map, points) = load("E4.1-fig-4-1-adjacent-funnels.json");
+    let study = Study::new(&map);
+    let (key, class) = common_skeleton(&study, &points);
+    let all = &study.embeddings()[class];
+    assert_eq!(all.len(), 2);
+    assert!(study.witnesses()[class].iter().all(|w| w.is_valid()));
+    let pair = study
+        .overlapping_pairs()
+        .iter()
+        .find(|p| p.class == class)
+        .expect("the skeleton polygons overlap");
+    assert!(pair.kernels_overlap);
+    // Artificial edges meet only in vertices: the northern ones on the
+    // same pairs of map vertices, the two from the ceiling to the floor in
+    // the vertex between the funnels.
+    let r = artificial_edge_relations(&map, &key, &all[0], &all[1]);
+    assert_eq!(r.strictly_crossing, 0, "{r:?}");
+    assert!(r.same_vertices >= 2 && r.one_vertex >= 1, "{r:?}");
+    let floor = map
+        .vertices()
+        .iter()
+        .position(|v| *v == wai_exact::Point::new(35, 0))
+        .expect("the vertex between the funnels");
+    let touching = |h: &wai_lemmas::study::Embedded| {
+        let v = &h.embedding.vertices;
+        (0..v.len())
+            .filter(|&a| key.labels[a].is_some())
+            .any(|a| v[a] == floor || v[(a + 1) % v.len()] == floor)
+    };
+    assert!(touching(&all[0]) && touching(&all[1]));
+    // Theorems 4.2 and 4.3: the witnesses do not see each other.
+    assert!(matches!(pair.sight, Mutual::Invisible { .. }));
+    let ws = &study.witnesses()[class];
+    assert!(!study
+        .sightlines()
+        .regions_by_points(&ws[0].pieces(), &ws[1].pieces())
+        .is_visible());
+}
+
+#[test]
+fn fig_4_2_overlapping_kernels_and_crossing_artificial_edges() {
     let (map, points) = load("E4.1-funnels-kernels-overlap.json");
     let study = Study::new(&map);
     let (key, class) = common_skeleton(&study, &points);
@@ -107,25 +192,11 @@ fn figs_4_1_and_4_2_overlapping_kernels_and_crossing_artificial_edges() {
     assert!(interiors_overlap(&ring(0), &ring(1)));
     assert!(interiors_overlap(&kernel(0), &kernel(1)));
     // Fig 4.2: an artificial edge of one strictly crosses one of the other.
-    let (p, q) = (
-        all[0].embedding.polygon(&map),
-        all[1].embedding.polygon(&map),
+    let r = artificial_edge_relations(&map, &key, &all[0], &all[1]);
+    assert!(
+        r.strictly_crossing > 0,
+        "no strictly crossing artificial edges"
     );
-    let k = p.len();
-    let artificial: Vec<usize> = (0..k).filter(|&i| key.labels[i].is_some()).collect();
-    let strict = artificial.iter().any(|&a| {
-        artificial.iter().any(|&b| {
-            let (s, t) = ((p[a], p[(a + 1) % k]), (q[b], q[(b + 1) % k]));
-            let o = [
-                orientation(s.0, s.1, t.0),
-                orientation(s.0, s.1, t.1),
-                orientation(t.0, t.1, s.0),
-                orientation(t.0, t.1, s.1),
-            ];
-            !o.contains(&Orientation::Collinear) && o[0] != o[1] && o[2] != o[3]
-        })
-    });
-    assert!(strict, "no strictly crossing artificial edges");
     // Theorems 4.2 and 4.3: the witnesses do not see each other, by both
     // methods.
     let pair = study
@@ -217,4 +288,148 @@ fn fig_4_16_four_type_5_edges_and_no_map_vertex() {
         .find(|p| p.class == class)
         .unwrap();
     assert!(!overlapping.sight.is_visible());
+}
+
+#[test]
+fn fig_4_31_candidate_edges_of_two_rooms_cross_in_one_neck() {
+    use wai_lemmas::{c4_20, t4_19};
+    let (map, points) = load("T4.19-fig-4-31-bottles.json");
+    // The stored map is the generator's, with its viewpoints.
+    assert_eq!(map.vertices(), wai_gen::bottled_niches(0).vertices());
+    let layout = wai_gen::BottleLayout::of_seed(0);
+    assert_eq!(
+        points,
+        layout
+            .viewpoints()
+            .iter()
+            .map(|p| RatPoint::from(*p))
+            .collect::<Vec<_>>()
+    );
+    let study = Study::new(&map);
+    let (key, class) = common_skeleton(&study, &points);
+    let all = &study.embeddings()[class];
+    assert_eq!(all.len(), 2, "one embedding per room");
+    assert!(study.witnesses()[class].iter().all(|w| w.is_valid()));
+    let pair = study
+        .overlapping_pairs()
+        .iter()
+        .position(|p| p.class == class)
+        .expect("the rooms' embeddings overlap");
+    let p = &study.overlapping_pairs()[pair];
+    assert!(matches!(p.sight, Mutual::Invisible { .. }));
+    // Three artificial edges (across the necks) with two valid candidate
+    // edges each, in each embedding.
+    for i in [p.a, p.b] {
+        let valid = study.valid_candidates(class, i);
+        assert_eq!(valid.iter().filter(|c| c.len() == 2).count(), 3);
+        assert!(valid.iter().all(|c| c.len() <= 2));
+    }
+    // The neck above the first room is an artificial edge of both
+    // embeddings (a of h, a' of h'); its candidate edges of h cross those
+    // of h' pairwise, in the order of Corollary 4.20.
+    let n = map.n();
+    let ends = |i: usize, a: usize| {
+        let v = &all[i].embedding.vertices;
+        let mut e = [v[a], v[(a + 1) % v.len()]];
+        e.sort_unstable();
+        e
+    };
+    let artificial: Vec<usize> = (0..key.labels.len())
+        .filter(|&a| key.labels[a].is_some())
+        .collect();
+    let (ca, cb) = (
+        t4_19::ordered_candidates(&study, class, p.a),
+        t4_19::ordered_candidates(&study, class, p.b),
+    );
+    let mut shared = 0;
+    for &a in &artificial {
+        for &b in &artificial {
+            if ends(p.a, a) != ends(p.b, b) || ca[a].len() != 2 || cb[b].len() != 2 {
+                continue;
+            }
+            shared += 1;
+            for &c in &ca[a] {
+                for &d in &cb[b] {
+                    let x = study.crosses(pair, (a, c), (b, d));
+                    assert!(x.is_some(), "{c} and {d} do not cross");
+                }
+            }
+            let (c, d) = ([ca[a][0], ca[a][1]], [cb[b][0], cb[b][1]]);
+            assert!(c4_20::check(n, c, d).is_none());
+            for &e in &d {
+                assert!(!t4_19::between(n, c[0], c[1], e));
+            }
+        }
+    }
+    assert_eq!(shared, 2, "the two necks between the rooms");
+    // The checkers examine these triples and quadruples and find nothing.
+    let t = t4_19::checker().check_study(&study);
+    assert!(t.violations.is_empty(), "{:?}", t.violations);
+    assert!(t.counts["crosses_both"] > 0);
+    let q = c4_20::checker().check_study(&study);
+    assert!(q.violations.is_empty(), "{:?}", q.violations);
+    assert!(q.counts["mutually_crossing"] > 0);
+}
+
+#[test]
+fn fig_4_28_intersecting_embeddings_whose_witnesses_see_each_other() {
+    use std::collections::BTreeSet;
+    use wai_exact::sees;
+    let (map, points) = load("E4.28-intersecting-hexagons.json");
+    let study = Study::new(&map);
+    let (key, class) = common_skeleton(&study, &points);
+    let all = &study.embeddings()[class];
+    assert_eq!(all.len(), 2);
+    let ws = &study.witnesses()[class];
+    assert!(ws.iter().all(|w| w.is_valid()));
+    let ring = |i: usize| -> Vec<Pt> {
+        all[i]
+            .embedding
+            .polygon(&map)
+            .into_iter()
+            .map(Pt::from)
+            .collect()
+    };
+    let kernel = |i: usize| -> Vec<Pt> { all[i].kernel.vertices().iter().map(Pt::from).collect() };
+    // Each skeleton polygon is convex, its own kernel.
+    for i in 0..2 {
+        let (r, k) = (ring(i), kernel(i));
+        assert_eq!(
+            r.iter().collect::<BTreeSet<_>>(),
+            k.iter().collect::<BTreeSet<_>>()
+        );
+    }
+    // The embeddings intersect but do not overlap: they share exactly one
+    // segment, an artificial edge of both.
+    assert!(!interiors_overlap(&ring(0), &ring(1)));
+    assert!(!interiors_overlap(&kernel(0), &kernel(1)));
+    assert!(study.overlapping_pairs().iter().all(|p| p.class != class));
+    let artificial = |i: usize| -> BTreeSet<[usize; 2]> {
+        let v = &all[i].embedding.vertices;
+        (0..v.len())
+            .filter(|&a| key.labels[a].is_some())
+            .map(|a| {
+                let mut e = [v[a], v[(a + 1) % v.len()]];
+                e.sort_unstable();
+                e
+            })
+            .collect()
+    };
+    assert_eq!(artificial(0).intersection(&artificial(1)).count(), 1);
+    // The exact test over the whole witness regions says visible, by both
+    // methods, with certificates that re-check.
+    let (a, b) = (ws[0].pieces(), ws[1].pieces());
+    for sight in [
+        study.sightlines().regions_by_lines(&a, &b),
+        study.sightlines().regions_by_points(&a, &b),
+    ] {
+        match sight {
+            Mutual::Visible { from, to } => {
+                assert!(sees(map.vertices(), &from.to_rat_point(), &to.to_rat_point()).is_visible())
+            }
+            Mutual::Invisible { .. } => panic!("the witnesses of Fig 4.28 see each other"),
+        }
+    }
+    // So do the two stored viewpoints.
+    assert!(sees(map.vertices(), &points[0], &points[1]).is_visible());
 }

@@ -267,6 +267,20 @@ fn gen_usage_errors_are_clear() {
     assert!(text(&out.stderr).contains("no-such-family"));
     let out = wai(&["info"], b"");
     assert_eq!(out.status.code(), Some(2));
+    let out = wai(&["gen", "--layout", "no-such-layout"], b"");
+    assert_eq!(out.status.code(), Some(2));
+    assert!(text(&out.stderr).contains("bottled-niches"));
+}
+
+#[test]
+fn gen_writes_the_chapter_4_layouts() {
+    let out = wai(&["gen", "--list"], b"");
+    assert!(text(&out.stdout).contains("bottled-niches"));
+    let out = wai(&["gen", "--layout", "bottled-niches", "--seed", "3"], b"");
+    assert!(out.status.success(), "{}", text(&out.stderr));
+    let back = wai(&["info", "-"], &out.stdout);
+    assert!(back.status.success());
+    assert!(text(&back.stdout).contains("bottled-niches seed=3"));
 }
 
 const L_ROOM: &str = r#"{"outer": [["0","0"],["4","0"],["4","2"],["2","2"],["2","4"],["0","4"]]}"#;

@@ -188,3 +188,29 @@ fn repeated_niches_are_valid_and_their_viewpoints_repeat() {
         }
     }
 }
+
+/// `bottled_niches`: valid for many seeds, deterministic; two viewpoints
+/// per room, the same two in every room, inside the map; the spikes lie
+/// inside the chamber and the chambers do not touch.
+#[test]
+fn bottled_niches_are_valid_and_their_viewpoints_repeat() {
+    for seed in 0..500 {
+        let m = wai_gen::bottled_niches(seed);
+        assert_eq!(m, wai_gen::bottled_niches(seed));
+        let l = wai_gen::BottleLayout::of_seed(seed);
+        assert!(l.spikes[4] + l.spike_width < l.chamber && 2 * l.chamber < l.pitch);
+        assert!(2 * l.mouth < l.pitch, "seed {seed}: rooms touch");
+        let vs = l.viewpoints();
+        assert_eq!(vs.len() as i128, 2 * l.rooms);
+        for w in vs.windows(3) {
+            assert_eq!((w[2].x - w[0].x, w[2].y - w[0].y), (l.pitch, 0));
+        }
+        for v in vs {
+            assert_eq!(
+                wai_exact::locate(m.vertices(), v),
+                wai_exact::Containment::Inside,
+                "seed {seed}"
+            );
+        }
+    }
+}
