@@ -87,6 +87,16 @@ fn fig_3_10_an_embedding_without_witness() {
     );
 }
 
+/// The embedded skeleton polygon h(V◇) of `h`.
+fn skeleton_ring(map: &Map, h: &wai_lemmas::study::Embedded) -> Vec<Pt> {
+    h.embedding.polygon(map).into_iter().map(Pt::from).collect()
+}
+
+/// The embedded kernel h(ker V*) of `h`.
+fn kernel_ring(h: &wai_lemmas::study::Embedded) -> Vec<Pt> {
+    h.kernel.vertices().iter().map(Pt::from).collect()
+}
+
 /// How the artificial edges of two embeddings of one skeleton meet: pairs
 /// on the same two map vertices, sharing exactly one, strictly crossing.
 #[derive(Debug, Default)]
@@ -180,15 +190,8 @@ fn fig_4_2_overlapping_kernels_and_crossing_artificial_edges() {
     let all = &study.embeddings()[class];
     assert_eq!(all.len(), 2);
     assert!(study.witnesses()[class].iter().all(|w| w.is_valid()));
-    let ring = |i: usize| -> Vec<Pt> {
-        all[i]
-            .embedding
-            .polygon(&map)
-            .into_iter()
-            .map(Pt::from)
-            .collect()
-    };
-    let kernel = |i: usize| -> Vec<Pt> { all[i].kernel.vertices().iter().map(Pt::from).collect() };
+    let ring = |i: usize| skeleton_ring(&map, &all[i]);
+    let kernel = |i: usize| kernel_ring(&all[i]);
     assert!(interiors_overlap(&ring(0), &ring(1)));
     assert!(interiors_overlap(&kernel(0), &kernel(1)));
     // Fig 4.2: an artificial edge of one strictly crosses one of the other.
@@ -382,15 +385,8 @@ fn fig_4_28_intersecting_embeddings_whose_witnesses_see_each_other() {
     assert_eq!(all.len(), 2);
     let ws = &study.witnesses()[class];
     assert!(ws.iter().all(|w| w.is_valid()));
-    let ring = |i: usize| -> Vec<Pt> {
-        all[i]
-            .embedding
-            .polygon(&map)
-            .into_iter()
-            .map(Pt::from)
-            .collect()
-    };
-    let kernel = |i: usize| -> Vec<Pt> { all[i].kernel.vertices().iter().map(Pt::from).collect() };
+    let ring = |i: usize| skeleton_ring(&map, &all[i]);
+    let kernel = |i: usize| kernel_ring(&all[i]);
     // Each skeleton polygon is convex, its own kernel.
     for i in 0..2 {
         let (r, k) = (ring(i), kernel(i));
