@@ -28,7 +28,7 @@ use crate::Study;
 const ID: &str = "T4.2";
 
 /// Maps up to this many vertices have every verdict cross-checked.
-pub const CROSS_CHECK_MAX_N: usize = 100;
+pub const CROSS_CHECK_MAX_N: usize = 120;
 
 /// Checks T4.2 on every overlapping pair of valid embeddings of a map.
 #[derive(Debug, Clone, Copy, Default)]
