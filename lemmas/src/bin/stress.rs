@@ -19,8 +19,9 @@
 //! the maps are the given map files. With `--corpus`
 //! the maps are instead the fixed corpus of issue 7's acceptance: every free
 //! polyomino of up to 8 cells, every thesis family at parameters 1 to 6,
-//! and every map of `shared/datasets` that the cells tests decompose (R2V,
-//! Westport, AGPLIB up to 60 vertices). Prints progress,
+//! every map of `shared/datasets` that the cells tests decompose (R2V,
+//! Westport, AGPLIB up to 60 vertices) and the maps of `counterexamples/`.
+//! Prints progress,
 //! then per claim the instances examined and the violations; the known
 //! failures of the sec. 3.6 rule (claim A3.6: 1-cells such as
 //! `counterexamples/T3.3b-doorway-1d-cell.json`, and 0-cells) are counted
@@ -60,7 +61,8 @@ usage: stress [--maps N] [--start S] [--repeated | --bottles] [--claims L]
               candidate edges that cross (Fig 4.31; T4.19, C4.20)
   --claims L  only the checkers of the comma-separated claim ids L
   --corpus    instead: all free polyominoes up to 8 cells, the families at
-              parameters 1..=6 and the dataset maps (needs ../shared/datasets)
+              parameters 1..=6, the dataset maps (needs ../shared/datasets)
+              and the maps of counterexamples/
   --files     instead: the map files that follow (JSON map format)
   -h, --help  this text
 
@@ -225,7 +227,7 @@ fn main() {
         );
     } else if corpus {
         println!(
-            "stress: the corpus, {total} maps (polyominoes <= 8, families, datasets), {:.1} s",
+            "stress: the corpus, {total} maps (polyominoes <= 8, families, datasets, counterexamples), {:.1} s",
             t.elapsed().as_secs_f64()
         );
     } else {
@@ -271,8 +273,9 @@ fn main() {
 }
 
 /// The fixed corpus: free polyominoes up to 8 cells, the families at
-/// parameters 1..=6, the dataset maps. An error if the datasets are missing
-/// (the run must not pass on less than it says).
+/// parameters 1..=6, the dataset maps and the maps of `counterexamples/`
+/// (a stored violation is reported again). An error if the datasets are
+/// missing (the run must not pass on less than it says).
 fn corpus_maps() -> Result<Vec<wai_map::Map>, String> {
     let mut maps: Vec<wai_map::Map> =
         wai_gen::exhaustive_polyomino_maps(8, wai_gen::Symmetry::Free)
@@ -322,6 +325,25 @@ fn corpus_maps() -> Result<Vec<wai_map::Map>, String> {
                 maps.push(loaded.map.with_name(name));
             }
         }
+    }
+    // The figures and violations of `counterexamples/`: some chapter 4
+    // configurations (Figs 4.1, 4.2, 4.31) occur in none of the above.
+    let stored = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../counterexamples");
+    let mut files: Vec<std::path::PathBuf> = std::fs::read_dir(&stored)
+        .map_err(|e| format!("{}: {e}", stored.display()))?
+        .filter_map(|e| e.ok().map(|e| e.path()))
+        .filter(|p| p.extension().is_some_and(|x| x == "json"))
+        .collect();
+    files.sort();
+    for f in files {
+        let bytes = std::fs::read(&f).map_err(|e| format!("{}: {e}", f.display()))?;
+        let loaded =
+            wai_map::json::from_json(&bytes).map_err(|e| format!("{}: {e}", f.display()))?;
+        let name = format!(
+            "counterexamples/{}",
+            f.file_name().unwrap_or_default().to_string_lossy()
+        );
+        maps.push(loaded.map.with_name(name));
     }
     Ok(maps)
 }
