@@ -39,48 +39,60 @@ impl Checker for Order {
     }
 
     fn check_study(&self, study: &Study<'_>) -> Report {
-        let n = study.map().n();
-        let mut report = Report::new(ID);
-        let pairs = |e: &[usize]| -> Vec<[usize; 2]> {
-            (0..e.len())
-                .flat_map(|i| (i + 1..e.len()).map(move |j| [e[i], e[j]]))
-                .collect()
-        };
-        for (k, p) in study.overlapping_pairs().iter().enumerate() {
-            let (mine, theirs) = (
-                ordered_candidates(study, p.class, p.a),
-                ordered_candidates(study, p.class, p.b),
-            );
-            for (a, edges) in mine.iter().enumerate() {
-                for (a2, others) in theirs.iter().enumerate() {
-                    for c in pairs(edges) {
-                        for d in pairs(others) {
-                            let mut verdict = check(n, c, d);
-                            if verdict.is_some() {
-                                report.count("out_of_order", 1);
-                            }
-                            let all = c.iter().all(|&c| {
-                                d.iter()
-                                    .all(|&d| study.crosses(k, (a, c), (a2, d)).is_some())
-                            });
-                            if all {
-                                report.count("mutually_crossing", 1);
-                            } else {
-                                verdict = None;
-                            }
-                            report.record(verdict.map(|mut v| {
-                                v.data["class"] = json!(p.class);
-                                v.data["embeddings"] = json!([p.a, p.b]);
-                                v.data["artificial_edges"] = json!([a, a2]);
+        on_boundary(study, &|e| e)
+    }
+}
+
+/// The check with `position` giving each map edge's place on the
+/// counter-clockwise boundary (the identity for [`Order`]; a test moves
+/// one edge to plant a violation in a real configuration).
+pub fn on_boundary(study: &Study<'_>, position: &dyn Fn(usize) -> usize) -> Report {
+    let n = study.map().n();
+    let mut report = Report::new(ID);
+    let pairs = |e: &[usize]| -> Vec<[usize; 2]> {
+        (0..e.len())
+            .flat_map(|i| (i + 1..e.len()).map(move |j| [e[i], e[j]]))
+            .collect()
+    };
+    for (k, p) in study.overlapping_pairs().iter().enumerate() {
+        let (mine, theirs) = (
+            ordered_candidates(study, p.class, p.a),
+            ordered_candidates(study, p.class, p.b),
+        );
+        for (a, edges) in mine.iter().enumerate() {
+            for (a2, others) in theirs.iter().enumerate() {
+                for c in pairs(edges) {
+                    for d in pairs(others) {
+                        let mut verdict =
+                            check(n, c.map(position), d.map(position)).map(|mut v| {
+                                v.data["c"] = json!(c);
+                                v.data["c_prime"] = json!(d);
                                 v
-                            }));
+                            });
+                        if verdict.is_some() {
+                            report.count("out_of_order", 1);
                         }
+                        let all = c.iter().all(|&c| {
+                            d.iter()
+                                .all(|&d| study.crosses(k, (a, c), (a2, d)).is_some())
+                        });
+                        if all {
+                            report.count("mutually_crossing", 1);
+                        } else {
+                            verdict = None;
+                        }
+                        report.record(verdict.map(|mut v| {
+                            v.data["class"] = json!(p.class);
+                            v.data["embeddings"] = json!([p.a, p.b]);
+                            v.data["artificial_edges"] = json!([a, a2]);
+                            v
+                        }));
                     }
                 }
             }
         }
-        report
     }
+    report
 }
 
 /// One quadruple (each pair in the order of its line): counter-clockwise
@@ -110,6 +122,55 @@ mod tests {
         assert!(report.violations.is_empty(), "{:?}", report.violations);
         // Fig 4.31's configuration: quadruples that cross pairwise.
         assert!(report.counts["mutually_crossing"] > 0);
+    }
+
+    #[test]
+    fn an_edge_moved_between_a_crossing_pair_is_reported() {
+        // Fig 4.31's map: find a mutually crossing quadruple, then move
+        // c1' on the boundary to the edge after c1 (between c1 and c2):
+        // the whole check must report the interleaving.
+        let map = wai_gen::bottled_niches(0);
+        let study = Study::new(&map);
+        let quadruple = study
+            .overlapping_pairs()
+            .iter()
+            .enumerate()
+            .find_map(|(k, p)| {
+                let (mine, theirs) = (
+                    ordered_candidates(&study, p.class, p.a),
+                    ordered_candidates(&study, p.class, p.b),
+                );
+                let two = |e: &Vec<usize>| (e.len() == 2).then(|| [e[0], e[1]]);
+                mine.iter().enumerate().find_map(|(a, c)| {
+                    let c = two(c)?;
+                    theirs.iter().enumerate().find_map(|(a2, d)| {
+                        let d = two(d)?;
+                        c.iter()
+                            .all(|&c| {
+                                d.iter()
+                                    .all(|&d| study.crosses(k, (a, c), (a2, d)).is_some())
+                            })
+                            .then_some((c, d))
+                    })
+                })
+            });
+        let (c, d) = quadruple.expect("Fig 4.31 has a mutually crossing quadruple");
+        assert!(Order.check_study(&study).violations.is_empty());
+        let after = (c[0] + 1) % map.n();
+        let swapped = |e: usize| match e {
+            e if e == d[0] => after,
+            e if e == after => d[0],
+            e => e,
+        };
+        let report = on_boundary(&study, &swapped);
+        assert!(
+            report
+                .violations
+                .iter()
+                .any(|v| v.data["c"] == json!(c) && v.data["c_prime"] == json!(d)),
+            "{:?}",
+            report.violations
+        );
     }
 
     #[test]

@@ -98,49 +98,61 @@ impl Checker for NotBetween {
     }
 
     fn check_study(&self, study: &Study<'_>) -> Report {
-        let n = study.map().n();
-        let mut report = Report::new(ID);
-        for (k, p) in study.overlapping_pairs().iter().enumerate() {
-            let (of_a, of_b) = (
-                ordered_candidates(study, p.class, p.a),
-                ordered_candidates(study, p.class, p.b),
-            );
-            for h_first in [true, false] {
-                let (h, h2) = if h_first { (p.a, p.b) } else { (p.b, p.a) };
-                let (mine, theirs) = if h_first {
-                    (&of_a, &of_b)
-                } else {
-                    (&of_b, &of_a)
-                };
-                for (a, edges) in mine.iter().enumerate() {
-                    for (i, &c1) in edges.iter().enumerate() {
-                        for &c2 in &edges[i + 1..] {
-                            for (a2, others) in theirs.iter().enumerate() {
-                                for &c in others {
-                                    let mut verdict = None;
-                                    let x = |c1| crosses(study, k, h_first, (a, c1), (a2, c));
-                                    if between(n, c1, c2, c) {
-                                        report.count("between", 1);
-                                    }
-                                    if x(c1) && x(c2) {
-                                        report.count("crosses_both", 1);
-                                        verdict = check(n, c1, c2, c).map(|mut v| {
-                                            v.data["class"] = json!(p.class);
-                                            v.data["embeddings"] = json!([h, h2]);
-                                            v.data["artificial_edges"] = json!([a, a2]);
-                                            v
-                                        });
-                                    }
-                                    report.record(verdict);
+        on_boundary(study, &|e| e)
+    }
+}
+
+/// The check with `position` giving each map edge's place on the
+/// counter-clockwise boundary (the identity for [`NotBetween`]; a test
+/// moves one edge to plant a violation in a real configuration).
+pub fn on_boundary(study: &Study<'_>, position: &dyn Fn(usize) -> usize) -> Report {
+    let n = study.map().n();
+    let at = |c1: usize, c2: usize, c: usize| (position(c1), position(c2), position(c));
+    let mut report = Report::new(ID);
+    for (k, p) in study.overlapping_pairs().iter().enumerate() {
+        let (of_a, of_b) = (
+            ordered_candidates(study, p.class, p.a),
+            ordered_candidates(study, p.class, p.b),
+        );
+        for h_first in [true, false] {
+            let (h, h2) = if h_first { (p.a, p.b) } else { (p.b, p.a) };
+            let (mine, theirs) = if h_first {
+                (&of_a, &of_b)
+            } else {
+                (&of_b, &of_a)
+            };
+            for (a, edges) in mine.iter().enumerate() {
+                for (i, &c1) in edges.iter().enumerate() {
+                    for &c2 in &edges[i + 1..] {
+                        for (a2, others) in theirs.iter().enumerate() {
+                            for &c in others {
+                                let mut verdict = None;
+                                let x = |c1| crosses(study, k, h_first, (a, c1), (a2, c));
+                                let (q1, q2, q) = at(c1, c2, c);
+                                if between(n, q1, q2, q) {
+                                    report.count("between", 1);
                                 }
+                                if x(c1) && x(c2) {
+                                    report.count("crosses_both", 1);
+                                    verdict = check(n, q1, q2, q).map(|mut v| {
+                                        v.data["c1"] = json!(c1);
+                                        v.data["c2"] = json!(c2);
+                                        v.data["c"] = json!(c);
+                                        v.data["class"] = json!(p.class);
+                                        v.data["embeddings"] = json!([h, h2]);
+                                        v.data["artificial_edges"] = json!([a, a2]);
+                                        v
+                                    });
+                                }
+                                report.record(verdict);
                             }
                         }
                     }
                 }
             }
         }
-        report
     }
+    report
 }
 
 /// One triple: `c` (crossing both) is not between `c1` and `c2` (c1
@@ -179,6 +191,54 @@ mod tests {
             let map = wai_gen::repeated_niches(seed);
             assert_eq!(NotBetween.check_study(&Study::new(&map)).examined, 0);
         }
+    }
+
+    #[test]
+    fn an_edge_moved_between_two_crossed_edges_is_reported() {
+        // Fig 4.31's map: find c1, c2 of h and c' of h' with c' crossing
+        // both, then move c' on the boundary to the edge after c1 (the
+        // spike between c1 and c2): the whole check must report it.
+        let map = wai_gen::bottled_niches(0);
+        let study = Study::new(&map);
+        let n = map.n();
+        let mut triple = None;
+        'search: for (k, p) in study.overlapping_pairs().iter().enumerate() {
+            let (mine, theirs) = (
+                ordered_candidates(&study, p.class, p.a),
+                ordered_candidates(&study, p.class, p.b),
+            );
+            for (a, edges) in mine.iter().enumerate() {
+                for (i, &c1) in edges.iter().enumerate() {
+                    for &c2 in &edges[i + 1..] {
+                        for (a2, others) in theirs.iter().enumerate() {
+                            for &c in others {
+                                let x = |e| crosses(&study, k, true, (a, e), (a2, c));
+                                if x(c1) && x(c2) && between(n, c1, c2, (c1 + 1) % n) {
+                                    triple = Some((c1, c2, c));
+                                    break 'search;
+                                }
+                            }
+                        }
+                    }
+                }
+            }
+        }
+        let (c1, c2, c) = triple.expect("Fig 4.31 has a crossing triple");
+        assert!(NotBetween.check_study(&study).violations.is_empty());
+        let spike = (c1 + 1) % n;
+        let swapped = |e: usize| match e {
+            e if e == c => spike,
+            e if e == spike => c,
+            e => e,
+        };
+        let report = on_boundary(&study, &swapped);
+        assert!(
+            report.violations.iter().any(|v| v.data["c"] == json!(c)
+                && v.data["c1"] == json!(c1)
+                && v.data["c2"] == json!(c2)),
+            "{:?}",
+            report.violations
+        );
     }
 
     #[test]
