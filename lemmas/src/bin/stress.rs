@@ -302,48 +302,42 @@ fn corpus_maps() -> Result<Vec<wai_map::Map>, String> {
         ("agplib/vonkoch", 60),
     ] {
         let dir = root.join(sub);
-        let mut files: Vec<std::path::PathBuf> = std::fs::read_dir(&dir)
-            .map_err(|e| {
-                format!(
-                    "{}: {e} (the corpus needs shared/ beside the checkout)",
-                    dir.display()
-                )
-            })?
-            .filter_map(|e| e.ok().map(|e| e.path()))
-            .filter(|p| p.extension().is_some_and(|x| x == "json") && !p.ends_with("index.json"))
-            .collect();
-        files.sort();
-        for f in files {
-            let bytes = std::fs::read(&f).map_err(|e| format!("{}: {e}", f.display()))?;
-            let loaded =
-                wai_map::json::from_json(&bytes).map_err(|e| format!("{}: {e}", f.display()))?;
-            if loaded.map.n() <= max_n {
-                let name = format!(
-                    "{sub}/{}",
-                    f.file_name().unwrap_or_default().to_string_lossy()
-                );
-                maps.push(loaded.map.with_name(name));
-            }
+        if !dir.is_dir() {
+            return Err(format!(
+                "{}: no such directory (the corpus needs shared/ beside the checkout)",
+                dir.display()
+            ));
         }
+        maps.extend(maps_in(&dir, sub, max_n)?);
     }
     // The figures and violations of `counterexamples/`: some chapter 4
     // configurations (Figs 4.1, 4.2, 4.31) occur in none of the above.
     let stored = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../counterexamples");
-    let mut files: Vec<std::path::PathBuf> = std::fs::read_dir(&stored)
-        .map_err(|e| format!("{}: {e}", stored.display()))?
+    maps.extend(maps_in(&stored, "counterexamples", usize::MAX)?);
+    Ok(maps)
+}
+
+/// The maps of the `*.json` files of `dir` (but `index.json`) with at most
+/// `max_n` vertices, in file name order, named `label/FILE`.
+fn maps_in(dir: &std::path::Path, label: &str, max_n: usize) -> Result<Vec<wai_map::Map>, String> {
+    let mut files: Vec<std::path::PathBuf> = std::fs::read_dir(dir)
+        .map_err(|e| format!("{}: {e}", dir.display()))?
         .filter_map(|e| e.ok().map(|e| e.path()))
-        .filter(|p| p.extension().is_some_and(|x| x == "json"))
+        .filter(|p| p.extension().is_some_and(|x| x == "json") && !p.ends_with("index.json"))
         .collect();
     files.sort();
+    let mut maps = Vec::new();
     for f in files {
         let bytes = std::fs::read(&f).map_err(|e| format!("{}: {e}", f.display()))?;
         let loaded =
             wai_map::json::from_json(&bytes).map_err(|e| format!("{}: {e}", f.display()))?;
-        let name = format!(
-            "counterexamples/{}",
-            f.file_name().unwrap_or_default().to_string_lossy()
-        );
-        maps.push(loaded.map.with_name(name));
+        if loaded.map.n() <= max_n {
+            let name = format!(
+                "{label}/{}",
+                f.file_name().unwrap_or_default().to_string_lossy()
+            );
+            maps.push(loaded.map.with_name(name));
+        }
     }
     Ok(maps)
 }
