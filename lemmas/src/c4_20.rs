@@ -12,8 +12,8 @@
 //! in the order c1, c2, c1', c2'). The four crossings are decided by
 //! [`crate::Study::crosses`] over whole witness regions for every
 //! quadruple; `mutually_crossing` counts those that meet the corollary's
-//! premise, and one of them out of order is a violation. Readings of "directed line" and "between" as in
-//! [`crate::t4_19`].
+//! premise, and one of them out of order is a violation. Readings of
+//! "directed line" and "between" as in [`crate::t4_19`].
 
 use serde_json::json;
 

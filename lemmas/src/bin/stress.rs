@@ -89,18 +89,12 @@ fn main() {
         files
             .iter()
             .map(|f| {
-                let loaded = std::fs::read(f)
-                    .map_err(|e| e.to_string())
-                    .and_then(|b| wai_map::json::from_json(&b).map_err(|e| e.to_string()))
-                    .unwrap_or_else(|e| {
-                        eprintln!("stress: {f}: {e}");
-                        std::process::exit(2);
-                    });
-                let name = loaded
-                    .map
-                    .name()
-                    .map_or_else(|| (*f).clone(), str::to_owned);
-                loaded.map.with_name(name)
+                let map = read_map(std::path::Path::new(f)).unwrap_or_else(|e| {
+                    eprintln!("stress: {e}");
+                    std::process::exit(2);
+                });
+                let name = map.name().map_or_else(|| (*f).clone(), str::to_owned);
+                map.with_name(name)
             })
             .collect()
     } else if corpus {
@@ -328,16 +322,22 @@ fn maps_in(dir: &std::path::Path, label: &str, max_n: usize) -> Result<Vec<wai_m
     files.sort();
     let mut maps = Vec::new();
     for f in files {
-        let bytes = std::fs::read(&f).map_err(|e| format!("{}: {e}", f.display()))?;
-        let loaded =
-            wai_map::json::from_json(&bytes).map_err(|e| format!("{}: {e}", f.display()))?;
-        if loaded.map.n() <= max_n {
+        let map = read_map(&f)?;
+        if map.n() <= max_n {
             let name = format!(
                 "{label}/{}",
                 f.file_name().unwrap_or_default().to_string_lossy()
             );
-            maps.push(loaded.map.with_name(name));
+            maps.push(map.with_name(name));
         }
     }
     Ok(maps)
+}
+
+/// The map of a file in the JSON map format; errors name the file.
+fn read_map(f: &std::path::Path) -> Result<wai_map::Map, String> {
+    let bytes = std::fs::read(f).map_err(|e| format!("{}: {e}", f.display()))?;
+    wai_map::json::from_json(&bytes)
+        .map(|loaded| loaded.map)
+        .map_err(|e| format!("{}: {e}", f.display()))
 }
