@@ -28,7 +28,7 @@ pub struct FormatArg {
 /// comes near it, and a stray binary or log file is caught early.
 const MAX_FILE_BYTES: u64 = 512 * 1024 * 1024;
 
-fn read_bytes(path: &Path) -> Result<Vec<u8>, Failure> {
+pub(crate) fn read_bytes(path: &Path) -> Result<Vec<u8>, Failure> {
     let shown = path.display();
     if path == Path::new("-") {
         let mut buf = Vec::new();

@@ -4,8 +4,8 @@
 //! (generate a map of a thesis family or a random kind), `info` (validate a
 //! map and print its numbers), `vis` (V_p and V*_p of a viewpoint),
 //! `decompose` (the visibility cell decomposition), `embeddings` (the
-//! embeddings of each skeleton, witnesses, overlaps), `render` (draw a map
-//! as SVG).
+//! embeddings of each skeleton, witnesses, overlaps), `preprocess` and
+//! `localize` (the exact reference localizer), `render` (draw a map as SVG).
 //!
 //! Exit codes: 0 success; 1 the map is invalid; 2 bad usage; 3 the file
 //! could not be read or written. Errors say what and where, never panic.
@@ -14,6 +14,7 @@ mod commands;
 mod decompose;
 mod embeddings;
 mod input;
+mod localize;
 mod vis;
 
 // The allocator of every binary of the workspace (see Cargo.toml).
@@ -114,6 +115,43 @@ enum Command {
         #[command(flatten)]
         format: input::FormatArg,
     },
+    /// Preprocess a map for localization (Alg 3.14): decompose it and
+    /// overlay each class's cells, then save the structure (versioned JSON)
+    /// for `wai localize`.
+    Preprocess {
+        /// Map file (JSON map format or GeoJSON); `-` reads standard input.
+        map: PathBuf,
+        /// Output file.
+        #[arg(short, long)]
+        out: PathBuf,
+        #[command(flatten)]
+        format: input::FormatArg,
+    },
+    /// Every position where a robot can be, given what it sees (Alg 3.13):
+    /// a visibility polygon relative to the robot (--polygon), or the one
+    /// simulated at a map point (--at). Prints each position with the map
+    /// vertex its skeleton origin lands on, or says why there is none.
+    Localize {
+        /// A map file (preprocessed now) or a file written by `wai preprocess`.
+        map: PathBuf,
+        /// Simulate the view at `x,y` (exact numbers in the map's units).
+        #[arg(long, allow_hyphen_values = true)]
+        at: Option<String>,
+        /// A JSON file with the polygon: an array of [x, y] pairs (or an
+        /// object with "vertices"), exact numbers in the map's units,
+        /// relative to the robot, counter-clockwise.
+        #[arg(long)]
+        polygon: Option<PathBuf>,
+        /// Print JSON: {"answers": [{"position": [x, y], "origin_vertex": i}], "class": k}
+        /// (and "reason" when there is no answer).
+        #[arg(long)]
+        json: bool,
+        /// Draw the map, the polygon at every answer and the answers into this SVG file.
+        #[arg(long)]
+        svg: Option<PathBuf>,
+        #[command(flatten)]
+        format: input::FormatArg,
+    },
     /// Draw a map as SVG, reflex vertices marked.
     Render {
         /// Map file (JSON map format or GeoJSON); `-` reads standard input.
@@ -200,6 +238,24 @@ fn main() -> ExitCode {
             &map,
             &embeddings::Options {
                 class,
+                json,
+                svg: svg.as_deref(),
+            },
+            format.format,
+        ),
+        Command::Preprocess { map, out, format } => localize::preprocess(&map, &out, format.format),
+        Command::Localize {
+            map,
+            at,
+            polygon,
+            json,
+            svg,
+            format,
+        } => localize::localize(
+            &map,
+            &localize::Options {
+                at: at.as_deref(),
+                polygon: polygon.as_deref(),
                 json,
                 svg: svg.as_deref(),
             },

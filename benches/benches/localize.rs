@@ -1,0 +1,107 @@
+//! The reference localizer (issue 9), ids `localize/{stage}/{map}`:
+//! preprocessing (Alg 3.14: decomposition and one overlay per class),
+//! the query (Alg 3.13) over a fixed set of simulated views, and the
+//! brute-force oracle on the same views in the same run as the reference
+//! point. Query throughput is in queries per second: the median time per
+//! query is the iteration median divided by the number of views.
+
+// The allocator of every binary of the workspace (see Cargo.toml).
+#[global_allocator]
+static ALLOCATOR: mimalloc::MiMalloc = mimalloc::MiMalloc;
+
+use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion, Throughput};
+use rand::{Rng, SeedableRng};
+use rand_chacha::ChaCha8Rng;
+use std::time::Duration;
+use wai_exact::{Containment, RatPoint};
+use wai_localize::{oracle, Localizer, RobotView};
+use wai_map::Map;
+use wai_visibility::VisibilityIndex;
+
+/// `count` views from random points with denominators up to 8.
+fn views(map: &Map, count: usize, seed: u64) -> Vec<RobotView> {
+    let index = VisibilityIndex::new(map);
+    let (lo, hi) = map.bounding_box();
+    let mut rng = ChaCha8Rng::seed_from_u64(seed);
+    let mut out = Vec::new();
+    while out.len() < count {
+        let w: i128 = rng.random_range(1..=8);
+        let p = RatPoint::from_i128(
+            rng.random_range(lo.x * w..=hi.x * w),
+            rng.random_range(lo.y * w..=hi.y * w),
+            w,
+        )
+        .expect("w > 0");
+        if wai_exact::locate_rat(map.vertices(), &p) == Containment::Inside {
+            out.push(RobotView::from_visibility(
+                &index.visibility_polygon(&p).expect("inside"),
+            ));
+        }
+    }
+    out
+}
+
+fn bench(c: &mut Criterion) {
+    let maps = [
+        ("banana", "n=76,r=54", wai_benches::maps::banana(20, 56)),
+        (
+            "random-orthogonal",
+            "n=76",
+            wai_gen::random("random-orthogonal", 76, 1).unwrap(),
+        ),
+        (
+            "corridor-niches",
+            "k=16",
+            wai_gen::family("corridor-niches", &[16]).unwrap(),
+        ),
+        (
+            "random-orthogonal",
+            "n=500",
+            wai_gen::random("random-orthogonal", 500, 1).unwrap(),
+        ),
+    ];
+    let mut g = c.benchmark_group("localize");
+    g.sample_size(10).measurement_time(Duration::from_secs(5));
+    for (name, param, map) in &maps {
+        let id = format!("{name}/{param}");
+        let loc = Localizer::new(map);
+        let items: usize = (0..loc.classes()).map(|k| loc.overlay(k).items.len()).sum();
+        let traps: usize = (0..loc.classes())
+            .map(|k| loc.overlay(k).trapezoids())
+            .sum();
+        let vs = views(map, 200, 1);
+        let m: usize = vs.iter().map(|v| v.vertices().len()).sum::<usize>() / vs.len();
+        let a: usize = vs.iter().map(|v| loc.localize(v).placements.len()).sum();
+        eprintln!(
+            "localize/{id}: {} classes, {items} cells, {traps} trapezoids; {} views, mean m = {m}, {a} answers",
+            loc.classes(),
+            vs.len()
+        );
+        if map.n() <= 100 {
+            g.throughput(Throughput::Elements(1));
+            g.bench_with_input(BenchmarkId::new("preprocess", &id), map, |b, m| {
+                b.iter(|| Localizer::new(m).classes())
+            });
+        }
+        g.throughput(Throughput::Elements(vs.len() as u64));
+        g.bench_with_input(BenchmarkId::new("query", &id), &vs, |b, vs| {
+            b.iter(|| {
+                vs.iter()
+                    .map(|v| loc.localize(v).placements.len())
+                    .sum::<usize>()
+            })
+        });
+        let index = VisibilityIndex::new(map);
+        g.bench_with_input(BenchmarkId::new("brute-force", &id), &vs, |b, vs| {
+            b.iter(|| {
+                vs.iter()
+                    .map(|v| oracle::brute_force(&index, v).len())
+                    .sum::<usize>()
+            })
+        });
+    }
+    g.finish();
+}
+
+criterion_group!(benches, bench);
+criterion_main!(benches);

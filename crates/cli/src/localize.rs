@@ -1,0 +1,236 @@
+//! `wai preprocess` and `wai localize`: the exact reference localizer
+//! (Alg 3.14 and 3.13).
+
+use crate::input::{load, read_bytes, Format};
+use crate::vis::{parse_viewpoint, show};
+use crate::Failure;
+use rug::{Integer, Rational};
+use serde_json::Value;
+use std::path::Path;
+use wai_exact::RatPoint;
+use wai_localize::{Localizer, RobotView};
+use wai_map::{format_exact, parse_exact, Map};
+use wai_render::Canvas;
+use wai_visibility::VisibilityIndex;
+
+/// Whether the bytes are a preprocessed file (its "format" field).
+fn is_preprocessed(bytes: &[u8]) -> bool {
+    serde_json::from_slice::<Value>(bytes)
+        .ok()
+        .and_then(|v| v.get("format").and_then(|f| f.as_str().map(str::to_string)))
+        .is_some_and(|f| f == wai_localize::file::FORMAT)
+}
+
+/// A localizer from a map file (preprocessed now) or a preprocessed file.
+fn localizer(path: &Path, format: Format) -> Result<Localizer, Failure> {
+    let bytes = read_bytes(path)?;
+    if is_preprocessed(&bytes) {
+        return wai_localize::file::from_json(&bytes)
+            .map_err(|e| Failure::invalid(format!("{}: {e}", path.display())));
+    }
+    let loaded = load(path, format)?;
+    eprintln!(
+        "preprocessing {} (n = {}, r = {}) …",
+        path.display(),
+        loaded.map.n(),
+        loaded.map.r()
+    );
+    Ok(Localizer::new(&loaded.map))
+}
+
+pub fn preprocess(path: &Path, out: &Path, format: Format) -> Result<(), Failure> {
+    let loaded = load(path, format)?;
+    let map = &loaded.map;
+    eprintln!(
+        "preprocessing {} (n = {}, r = {}) …",
+        path.display(),
+        map.n(),
+        map.r()
+    );
+    let loc = Localizer::new(map);
+    let text = wai_localize::file::to_json(&loc);
+    std::fs::write(out, &text).map_err(|e| Failure::io(format!("{}: {e}", out.display())))?;
+    let cells: usize = (0..loc.classes()).map(|k| loc.overlay(k).items.len()).sum();
+    let traps: usize = (0..loc.classes())
+        .map(|k| loc.overlay(k).trapezoids())
+        .sum();
+    println!(
+        "{}: {} classes, {cells} cells of every dimension, {traps} trapezoids; {} bytes written to {}",
+        path.display(),
+        loc.classes(),
+        text.len(),
+        out.display()
+    );
+    Ok(())
+}
+
+/// Read V: a JSON array of [x, y] pairs, or an object with "vertices",
+/// exact numbers in the map's input units, relative to the robot.
+fn read_polygon(path: &Path, map: &Map) -> Result<RobotView, Failure> {
+    let shown = path.display();
+    let bytes = read_bytes(path)?;
+    let root: Value = serde_json::from_slice(&bytes)
+        .map_err(|e| Failure::invalid(format!("{shown}: not JSON: {e}")))?;
+    let ring = match &root {
+        Value::Array(a) => a,
+        Value::Object(o) => match o.get("vertices") {
+            Some(Value::Array(a)) => a,
+            _ => {
+                return Err(Failure::invalid(format!(
+                    "{shown}: expected an array of [x, y] pairs or an object with \"vertices\""
+                )))
+            }
+        },
+        _ => {
+            return Err(Failure::invalid(format!(
+                "{shown}: expected an array of [x, y] pairs or an object with \"vertices\""
+            )))
+        }
+    };
+    let mut pts = Vec::with_capacity(ring.len());
+    for (i, v) in ring.iter().enumerate() {
+        let pair = match v {
+            Value::Array(p) if p.len() == 2 => p,
+            _ => {
+                return Err(Failure::invalid(format!(
+                    "{shown}: vertex {i}: expected [x, y]"
+                )))
+            }
+        };
+        let mut c = [Rational::new(), Rational::new()];
+        for (k, n) in pair.iter().enumerate() {
+            let text = match n {
+                Value::String(s) => s.clone(),
+                Value::Number(x) => x.to_string(),
+                _ => {
+                    return Err(Failure::invalid(format!(
+                        "{shown}: vertex {i}: coordinate {k} is not a number"
+                    )))
+                }
+            };
+            c[k] = parse_exact(&text).map_err(|e| {
+                Failure::invalid(format!(
+                    "{shown}: vertex {i}: {text:?} is not an exact number: {e}"
+                ))
+            })?;
+        }
+        let [x, y] = c;
+        let (xn, xd) = x.into_numer_denom();
+        let (yn, yd) = y.into_numer_denom();
+        let s = map.scale();
+        pts.push(
+            RatPoint::new(xn * s * &yd, yn * s * &xd, xd * yd).expect("positive denominators"),
+        );
+    }
+    let view = RobotView::new(pts)
+        .map_err(|e| Failure::invalid(format!("{shown}: not a visibility polygon: {e}")))?;
+    for note in view.notes() {
+        eprintln!("note: {shown}: {note}");
+    }
+    Ok(view)
+}
+
+fn pt_json(map: &Map, p: &RatPoint) -> Value {
+    let den = Integer::from(p.hw() * map.scale());
+    let c = |n: &Integer| Value::from(format_exact(&Rational::from((n.clone(), den.clone()))));
+    Value::Array(vec![c(p.hx()), c(p.hy())])
+}
+
+pub struct Options<'a> {
+    pub at: Option<&'a str>,
+    pub polygon: Option<&'a Path>,
+    pub json: bool,
+    pub svg: Option<&'a Path>,
+}
+
+pub fn localize(path: &Path, opts: &Options<'_>, format: Format) -> Result<(), Failure> {
+    let loc = localizer(path, format)?;
+    let map = loc.map();
+    let view = match (opts.at, opts.polygon) {
+        (Some(at), None) => {
+            let p = parse_viewpoint(at, map)?;
+            let vp = VisibilityIndex::new(map)
+                .visibility_polygon(&p)
+                .map_err(|e| {
+                    Failure::invalid(format!(
+                        "--at: {}",
+                        e.to_string().replace(&p.to_string(), &show(map, &p))
+                    ))
+                })?;
+            RobotView::from_visibility(&vp)
+        }
+        (None, Some(file)) => read_polygon(file, map)?,
+        _ => {
+            return Err(Failure::usage(
+                "give exactly one of --at x,y (simulate the view there) and --polygon V.json",
+            ))
+        }
+    };
+    let answer = loc.localize(&view);
+    if let Some(out) = opts.svg {
+        let mut c = Canvas::for_map(map, 800.0);
+        c.polygon(map.vertices(), "#eef3fb", "#1f3b73", 1.5);
+        for a in &answer.placements {
+            c.polygon_rat(
+                &view.placed_at(&a.position),
+                "rgba(255,165,0,0.25)",
+                "#d95f02",
+                1.0,
+            );
+        }
+        for a in &answer.placements {
+            c.dot_rat(
+                &a.position,
+                5.0,
+                "#d62728",
+                &format!(
+                    "{} via map vertex {}",
+                    show(map, &a.position),
+                    a.origin_vertex
+                ),
+            );
+        }
+        let caption = format!(
+            "{} answers{}",
+            answer.placements.len(),
+            answer
+                .nowhere
+                .as_ref()
+                .map(|w| format!(": {w}"))
+                .unwrap_or_default()
+        );
+        let svg = c.finish(map.name().unwrap_or("localize"), &caption);
+        std::fs::write(out, svg).map_err(|e| Failure::io(format!("{}: {e}", out.display())))?;
+    }
+    if opts.json {
+        let answers: Vec<Value> = answer
+            .placements
+            .iter()
+            .map(|a| serde_json::json!({"position": pt_json(map, &a.position), "origin_vertex": a.origin_vertex}))
+            .collect();
+        let mut v = serde_json::json!({"answers": answers, "class": answer.class});
+        if let Some(w) = &answer.nowhere {
+            v["reason"] = Value::from(w.to_string());
+        }
+        println!("{}", serde_json::to_string_pretty(&v).expect("plain JSON"));
+    } else {
+        match &answer.nowhere {
+            Some(w) => println!("no position: {w}"),
+            None => {
+                println!(
+                    "{} position(s), class {}:",
+                    answer.placements.len(),
+                    answer.class.expect("found")
+                );
+                for a in &answer.placements {
+                    println!(
+                        "  {}  (v0 at map vertex {})",
+                        show(map, &a.position),
+                        a.origin_vertex
+                    );
+                }
+            }
+        }
+    }
+    Ok(())
+}

@@ -1,0 +1,304 @@
+//! A preprocessed map on disk: versioned JSON, every number an exact
+//! decimal string, so that a user preprocesses once (`wai preprocess`) and
+//! localizes many times. The file holds the map itself (scaled integer
+//! vertices and the scale), each class's skeleton key, and each class's
+//! overlay with its slabs, so loading does no geometry beyond validating
+//! the map.
+
+use crate::overlay::{CellSite, ClassOverlay, Item, Line, Shape, Slab};
+use crate::Localizer;
+use rug::{Integer, Rational};
+use serde::{Deserialize, Serialize};
+use wai_exact::{Point, RatPoint};
+use wai_map::Map;
+use wai_visibility::{LineLabel, SkeletonKey};
+
+/// The `format` field of every file.
+pub const FORMAT: &str = "wai-localizer";
+/// The version this build writes and reads.
+pub const VERSION: u32 = 1;
+
+/// Why a file could not be read back.
+#[derive(Debug, thiserror::Error)]
+pub enum FileError {
+    #[error("not JSON or not a preprocessed map: {0}")]
+    Json(#[from] serde_json::Error),
+    #[error("the file's format is {0:?}, not {FORMAT:?}")]
+    Format(String),
+    #[error(
+        "the file has version {0}; this build reads version {VERSION} (preprocess the map again)"
+    )]
+    Version(u32),
+    #[error("{0:?} is not an integer")]
+    Number(String),
+    #[error("the stored map is invalid: {0}")]
+    Map(String),
+    #[error("the stored structure is inconsistent: {0}")]
+    Structure(String),
+}
+
+#[derive(Serialize, Deserialize)]
+struct FileDto {
+    format: String,
+    version: u32,
+    name: Option<String>,
+    scale: String,
+    vertices: Vec<[String; 2]>,
+    classes: Vec<ClassDto>,
+}
+
+#[derive(Serialize, Deserialize)]
+struct ClassDto {
+    offsets: Vec<[String; 2]>,
+    labels: Vec<Option<[String; 3]>>,
+    /// Items: origin vertex, "f<face>" or "l<lower cell>", and points as
+    /// homogeneous [x, y, w].
+    items: Vec<ItemDto>,
+    xs: Vec<String>,
+    lines: Vec<[String; 3]>,
+    slabs: Vec<SlabDto>,
+}
+
+#[derive(Serialize, Deserialize)]
+struct ItemDto {
+    origin: usize,
+    site: String,
+    kind: String,
+    points: Vec<[String; 3]>,
+}
+
+#[derive(Serialize, Deserialize)]
+struct SlabDto {
+    pieces: Vec<u32>,
+    labels: Vec<Vec<u32>>,
+}
+
+fn z(s: &str) -> Result<Integer, FileError> {
+    Integer::from_str_radix(s, 10).map_err(|_| FileError::Number(s.to_string()))
+}
+
+fn i(s: &str) -> Result<i128, FileError> {
+    s.parse().map_err(|_| FileError::Number(s.to_string()))
+}
+
+fn q(s: &str) -> Result<Rational, FileError> {
+    let (n, d) = s.split_once('/').unwrap_or((s, "1"));
+    let d = z(d)?;
+    if d <= 0 {
+        return Err(FileError::Number(s.to_string()));
+    }
+    Ok(Rational::from((z(n)?, d)))
+}
+
+fn pt(p: &RatPoint) -> [String; 3] {
+    [p.hx().to_string(), p.hy().to_string(), p.hw().to_string()]
+}
+
+fn unpt(p: &[String; 3]) -> Result<RatPoint, FileError> {
+    RatPoint::new(z(&p[0])?, z(&p[1])?, z(&p[2])?)
+        .ok_or_else(|| FileError::Structure(format!("point {p:?} has w = 0")))
+}
+
+/// Serialize a localizer.
+pub fn to_json(loc: &Localizer) -> String {
+    let classes = loc
+        .keys
+        .iter()
+        .zip(&loc.overlays)
+        .map(|(key, o)| ClassDto {
+            offsets: key
+                .offsets
+                .iter()
+                .map(|(x, y)| [x.to_string(), y.to_string()])
+                .collect(),
+            labels: key
+                .labels
+                .iter()
+                .map(|l| {
+                    l.as_ref()
+                        .map(|l| [l.a.to_string(), l.b.to_string(), l.c.to_string()])
+                })
+                .collect(),
+            items: o
+                .items
+                .iter()
+                .map(|it| {
+                    let site = match it.site {
+                        CellSite::Face(f) => format!("f{f}"),
+                        CellSite::Lower(l) => format!("l{l}"),
+                    };
+                    let (kind, points) = match &it.shape {
+                        Shape::Polygon(r) => ("polygon", r.iter().map(pt).collect()),
+                        Shape::Segment(a, b) => ("segment", vec![pt(a), pt(b)]),
+                        Shape::Point(p) => ("point", vec![pt(p)]),
+                    };
+                    ItemDto {
+                        origin: it.origin,
+                        site,
+                        kind: kind.to_string(),
+                        points,
+                    }
+                })
+                .collect(),
+            xs: o.xs.iter().map(|x| x.to_string()).collect(),
+            lines: o
+                .lines
+                .iter()
+                .map(|l| [l.a.to_string(), l.b.to_string(), l.c.to_string()])
+                .collect(),
+            slabs: o
+                .slabs
+                .iter()
+                .map(|s| SlabDto {
+                    pieces: s.pieces.clone(),
+                    labels: s.labels.clone(),
+                })
+                .collect(),
+        })
+        .collect();
+    let dto = FileDto {
+        format: FORMAT.to_string(),
+        version: VERSION,
+        name: loc.map.name().map(str::to_string),
+        scale: loc.map.scale().to_string(),
+        vertices: loc
+            .map
+            .vertices()
+            .iter()
+            .map(|p| [p.x.to_string(), p.y.to_string()])
+            .collect(),
+        classes,
+    };
+    serde_json::to_string(&dto).expect("plain data serializes")
+}
+
+/// Read a localizer back; the map is validated again and the structure's
+/// indices are checked to be in range, so a damaged file is refused
+/// rather than answering wrongly or panicking.
+pub fn from_json(bytes: &[u8]) -> Result<Localizer, FileError> {
+    // Read the header first, for a clear message on another format.
+    let head: serde_json::Value = serde_json::from_slice(bytes)?;
+    let format = head.get("format").and_then(|f| f.as_str()).unwrap_or("");
+    if format != FORMAT {
+        return Err(FileError::Format(format.to_string()));
+    }
+    let version = head.get("version").and_then(|v| v.as_u64()).unwrap_or(0);
+    if version != u64::from(VERSION) {
+        return Err(FileError::Version(version as u32));
+    }
+    let dto: FileDto = serde_json::from_value(head)?;
+    let ring: Vec<Point> = dto
+        .vertices
+        .iter()
+        .map(|[x, y]| Ok(Point::new(i(x)?, i(y)?)))
+        .collect::<Result<_, FileError>>()?;
+    let scale = z(&dto.scale)?;
+    if scale <= 0 {
+        return Err(FileError::Number(dto.scale));
+    }
+    let (mut map, norm) =
+        Map::from_scaled_ring(ring.clone(), scale).map_err(|e| FileError::Map(e.to_string()))?;
+    if map.vertices() != ring.as_slice() || !norm.is_identity() {
+        return Err(FileError::Map(
+            "the stored vertices are not in normal form".into(),
+        ));
+    }
+    if let Some(name) = dto.name {
+        map = map.with_name(name);
+    }
+    let n = map.n();
+    let mut keys = Vec::with_capacity(dto.classes.len());
+    let mut overlays = Vec::with_capacity(dto.classes.len());
+    for (k, c) in dto.classes.into_iter().enumerate() {
+        let bad = |what: &str| FileError::Structure(format!("class {k}: {what}"));
+        let offsets = c
+            .offsets
+            .iter()
+            .map(|[x, y]| Ok((i(x)?, i(y)?)))
+            .collect::<Result<Vec<_>, FileError>>()?;
+        let labels = c
+            .labels
+            .iter()
+            .map(|l| match l {
+                None => Ok(None),
+                Some([a, b, c]) => Ok(Some(LineLabel {
+                    a: z(a)?,
+                    b: z(b)?,
+                    c: z(c)?,
+                })),
+            })
+            .collect::<Result<Vec<_>, FileError>>()?;
+        if offsets.len() != labels.len() {
+            return Err(bad("offsets and labels differ in length"));
+        }
+        let mut items = Vec::with_capacity(c.items.len());
+        for it in &c.items {
+            if it.origin >= n {
+                return Err(bad("an item's origin is not a map vertex"));
+            }
+            let idx: usize = it.site[1..].parse().map_err(|_| bad("bad site"))?;
+            let site = match &it.site[..1] {
+                "f" => CellSite::Face(idx),
+                "l" => CellSite::Lower(idx),
+                _ => return Err(bad("bad site")),
+            };
+            let pts = it.points.iter().map(unpt).collect::<Result<Vec<_>, _>>()?;
+            let shape = match (it.kind.as_str(), pts.len()) {
+                ("polygon", m) if m >= 3 => Shape::Polygon(pts),
+                ("segment", 2) => {
+                    let mut p = pts.into_iter();
+                    Shape::Segment(p.next().expect("2"), p.next().expect("2"))
+                }
+                ("point", 1) => Shape::Point(pts.into_iter().next().expect("1")),
+                _ => return Err(bad("bad item shape")),
+            };
+            items.push(Item {
+                origin: it.origin,
+                site,
+                shape,
+            });
+        }
+        let xs = c.xs.iter().map(|x| q(x)).collect::<Result<Vec<_>, _>>()?;
+        if xs.windows(2).any(|w| w[0] >= w[1]) {
+            return Err(bad("slab boundaries not ascending"));
+        }
+        let lines = c
+            .lines
+            .iter()
+            .map(|[a, b, cc]| {
+                Ok(Line {
+                    a: z(a)?,
+                    b: z(b)?,
+                    c: z(cc)?,
+                })
+            })
+            .collect::<Result<Vec<_>, FileError>>()?;
+        if c.slabs.len() != xs.len().saturating_sub(1) {
+            return Err(bad("slab count"));
+        }
+        let mut slabs = Vec::with_capacity(c.slabs.len());
+        for s in c.slabs {
+            let ok = s.labels.len() == s.pieces.len() + 1
+                && s.pieces.iter().all(|&l| (l as usize) < lines.len())
+                && s.labels
+                    .iter()
+                    .flatten()
+                    .all(|&t| (t as usize) < items.len());
+            if !ok {
+                return Err(bad("a slab's pieces or labels are out of range"));
+            }
+            slabs.push(Slab {
+                pieces: s.pieces,
+                labels: s.labels,
+            });
+        }
+        keys.push(SkeletonKey { offsets, labels });
+        overlays.push(ClassOverlay {
+            items,
+            xs,
+            lines,
+            slabs,
+        });
+    }
+    Ok(Localizer::assemble(map, keys, overlays))
+}

@@ -1,0 +1,33 @@
+//! The exact reference localizer (thesis sec. 3.8, Algorithms 3.13 and
+//! 3.14): given a map and what an ideal range sensor with a compass sees —
+//! a visibility polygon V with the robot at its origin — every position
+//! where the robot can be (the answer set A, Def 3.2), each with the
+//! embedding that gives it.
+//!
+//! - [`RobotView`]: V checked to be a visibility polygon (star-shaped from
+//!   the robot, winding once) and its skeleton V* computed from V alone.
+//! - [`Localizer`]: the preprocessing (one overlay per equivalence class of
+//!   its cells of every dimension, translated to the skeleton origin, with
+//!   slab point location) and the query.
+//! - [`oracle`]: an independent brute force to compare with.
+//! - [`file`]: save and load a preprocessed map (versioned JSON).
+
+pub mod file;
+mod localizer;
+pub mod oracle;
+pub mod overlay;
+mod view;
+
+pub use localizer::{Answer, Localizer, Nowhere, Placement};
+pub use overlay::CellSite;
+pub use view::{NoSkeleton, RobotView, ViewError, ViewSkeleton};
+
+use std::cmp::Ordering;
+use wai_exact::RatPoint;
+
+/// Points ordered by x, then y (exactly).
+pub fn cmp_points(a: &RatPoint, b: &RatPoint) -> Ordering {
+    use rug::Integer;
+    let x = (Integer::from(a.hx() * b.hw()) - Integer::from(b.hx() * a.hw())).cmp0();
+    x.then_with(|| (Integer::from(a.hy() * b.hw()) - Integer::from(b.hy() * a.hw())).cmp0())
+}

@@ -1,0 +1,342 @@
+//! The overlay of one equivalence class (Alg 3.14 steps 18–23): every cell
+//! of the class — of every dimension, kept or absorbed — translated so that
+//! its embedding's origin vertex sits at the skeleton origin, with a slab
+//! structure for point location (Example 3.5, Fig 3.12 (c)).
+//!
+//! Slabs are cut at the x of every cell vertex and of every crossing of two
+//! cell edges (cells of different embeddings overlap, and their edges
+//! cross). Inside an open slab no two edges cross, so the edges spanning it
+//! are ordered bottom to top; collinear edges of different cells are one
+//! piece. The open trapezoid between two consecutive pieces lies inside or
+//! outside each 2-cell as a whole, so it carries the list of 2-cells that
+//! cover it: a query strictly inside a trapezoid is answered by two binary
+//! searches and that list.
+//!
+//! A query on a slab line or on a piece (a point on a ray, a 1- or 0-cell,
+//! a cell edge) takes the exact path: every cell of the class is tested for
+//! containment. That is O(|EC|) instead of O(log |EC|), only on a set of
+//! measure zero; the answers are the same by construction and the tests
+//! compare both paths.
+
+use rug::{Integer, Rational};
+use std::cmp::Ordering;
+use std::collections::HashMap;
+use wai_exact::{orientation_rat, Orientation, RatPoint};
+
+/// Where a cell of the decomposition lies: a 2-cell (a face of the
+/// arrangement) or a 1- or 0-cell (an index into
+/// `Decomposition::lower_cells`).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub enum CellSite {
+    Face(usize),
+    Lower(usize),
+}
+
+/// A cell's shape, translated by minus its embedding's origin vertex.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum Shape {
+    /// An open convex polygon, counter-clockwise (straight vertices allowed).
+    Polygon(Vec<RatPoint>),
+    /// An open segment.
+    Segment(RatPoint, RatPoint),
+    /// A point.
+    Point(RatPoint),
+}
+
+/// One cell of a class in the overlay.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Item {
+    /// The map vertex that is the origin v0 of the cell's embedding.
+    pub origin: usize,
+    pub site: CellSite,
+    pub shape: Shape,
+}
+
+/// A line a·x + b·y = c with integer coefficients, primitive; b > 0 for a
+/// non-vertical line.
+#[derive(Clone, Debug, PartialEq, Eq, Hash)]
+pub struct Line {
+    pub a: Integer,
+    pub b: Integer,
+    pub c: Integer,
+}
+
+impl Line {
+    fn through(p: &RatPoint, q: &RatPoint) -> Line {
+        let zero = RatPoint::from_i128(0, 0, 1).expect("w = 1");
+        let l = crate::view::label_through(p, q, &zero);
+        let (a, b, c) = (l.a, l.b, l.c);
+        if b < 0 {
+            Line {
+                a: -a,
+                b: -b,
+                c: -c,
+            }
+        } else {
+            Line { a, b, c }
+        }
+    }
+
+    /// The sign of a·x + b·y − c at `p`: above the line when positive (b > 0).
+    fn side(&self, p: &RatPoint) -> Ordering {
+        (Integer::from(&self.a * p.hx()) + Integer::from(&self.b * p.hy())
+            - Integer::from(&self.c * p.hw()))
+        .cmp0()
+    }
+
+    /// y on this (non-vertical) line at `x`.
+    fn y_at(&self, x: &Rational) -> Rational {
+        (Rational::from(&self.c) - Rational::from(&self.a) * x) / Rational::from(&self.b)
+    }
+}
+
+/// One slab: the pieces that span it, bottom to top, and by trapezoid (0
+/// below the first piece, `pieces.len()` above the last) the items whose
+/// 2-cell covers it.
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
+pub struct Slab {
+    pub pieces: Vec<u32>,
+    pub labels: Vec<Vec<u32>>,
+}
+
+/// The overlay of one class with its point-location structure.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct ClassOverlay {
+    pub items: Vec<Item>,
+    /// The slab boundaries, ascending.
+    pub xs: Vec<Rational>,
+    pub lines: Vec<Line>,
+    /// Slab `s` lies between `xs[s]` and `xs[s + 1]`.
+    pub slabs: Vec<Slab>,
+}
+
+fn x_of(p: &RatPoint) -> Rational {
+    Rational::from((p.hx().clone(), p.hw().clone()))
+}
+
+fn sub(a: &RatPoint, b: &RatPoint) -> RatPoint {
+    let (aw, bw) = (a.hw(), b.hw());
+    RatPoint::new(
+        Integer::from(a.hx() * bw) - Integer::from(b.hx() * aw),
+        Integer::from(a.hy() * bw) - Integer::from(b.hy() * aw),
+        Integer::from(aw * bw),
+    )
+    .expect("positive denominators")
+}
+
+fn dot_sign(a: &RatPoint, b: &RatPoint) -> Ordering {
+    (Integer::from(a.hx() * b.hx()) + Integer::from(a.hy() * b.hy())).cmp0()
+}
+
+impl Item {
+    /// Whether `p` lies in the (open) cell.
+    pub fn contains(&self, p: &RatPoint) -> bool {
+        match &self.shape {
+            Shape::Polygon(ring) => {
+                let k = ring.len();
+                (0..k).all(|i| {
+                    orientation_rat(&ring[i], &ring[(i + 1) % k], p)
+                        == Orientation::CounterClockwise
+                })
+            }
+            Shape::Segment(a, b) => {
+                orientation_rat(a, b, p) == Orientation::Collinear
+                    && dot_sign(&sub(p, a), &sub(b, a)) == Ordering::Greater
+                    && dot_sign(&sub(p, b), &sub(a, b)) == Ordering::Greater
+            }
+            Shape::Point(q) => q == p,
+        }
+    }
+
+    fn vertices(&self) -> Vec<&RatPoint> {
+        match &self.shape {
+            Shape::Polygon(ring) => ring.iter().collect(),
+            Shape::Segment(a, b) => vec![a, b],
+            Shape::Point(q) => vec![q],
+        }
+    }
+
+    /// The edges (as point pairs) of a polygon or the segment itself.
+    fn edges(&self) -> Vec<(&RatPoint, &RatPoint)> {
+        match &self.shape {
+            Shape::Polygon(ring) => {
+                let k = ring.len();
+                (0..k).map(|i| (&ring[i], &ring[(i + 1) % k])).collect()
+            }
+            Shape::Segment(a, b) => vec![(a, b)],
+            Shape::Point(_) => Vec::new(),
+        }
+    }
+}
+
+/// A non-vertical edge for the slab build: its line and x-range.
+struct Span {
+    item: u32,
+    line: u32,
+    x0: Rational,
+    x1: Rational,
+}
+
+impl ClassOverlay {
+    /// Build the overlay and its slabs.
+    pub fn new(items: Vec<Item>) -> ClassOverlay {
+        let mut lines: Vec<Line> = Vec::new();
+        let mut line_ids: HashMap<Line, u32> = HashMap::new();
+        let mut xs: Vec<Rational> = Vec::new();
+        let mut spans: Vec<Span> = Vec::new();
+        for (i, it) in items.iter().enumerate() {
+            xs.extend(it.vertices().into_iter().map(x_of));
+            for (p, q) in it.edges() {
+                let (xp, xq) = (x_of(p), x_of(q));
+                if xp == xq {
+                    continue; // vertical: on a slab line
+                }
+                let l = Line::through(p, q);
+                let next = lines.len() as u32;
+                let id = *line_ids.entry(l.clone()).or_insert_with(|| {
+                    lines.push(l);
+                    next
+                });
+                let (x0, x1) = if xp < xq { (xp, xq) } else { (xq, xp) };
+                spans.push(Span {
+                    item: i as u32,
+                    line: id,
+                    x0,
+                    x1,
+                });
+            }
+        }
+        // Crossings of edges on different lines, strictly inside both
+        // x-ranges: a sweep over x-ranges.
+        let mut order: Vec<usize> = (0..spans.len()).collect();
+        order.sort_by(|&a, &b| spans[a].x0.cmp(&spans[b].x0));
+        let mut active: Vec<usize> = Vec::new();
+        let mut seen: std::collections::HashSet<(u32, u32)> = std::collections::HashSet::new();
+        for &s in &order {
+            active.retain(|&t| spans[t].x1 > spans[s].x0);
+            for &t in &active {
+                let (la, lb) = (spans[s].line, spans[t].line);
+                if la == lb {
+                    continue;
+                }
+                let key = (la.min(lb), la.max(lb));
+                if let Some(x) = crossing_x(&lines[la as usize], &lines[lb as usize]) {
+                    let inside = |sp: &Span| sp.x0 < x && x < sp.x1;
+                    // Two lines cross once: one x per pair of lines.
+                    if inside(&spans[s]) && inside(&spans[t]) && seen.insert(key) {
+                        xs.push(x);
+                    }
+                }
+            }
+            active.push(s);
+        }
+        xs.sort();
+        xs.dedup();
+        let nslabs = xs.len().saturating_sub(1);
+        let mut members: Vec<Vec<(u32, u32)>> = vec![Vec::new(); nslabs];
+        for sp in &spans {
+            let i0 = xs.binary_search(&sp.x0).expect("a vertex x");
+            let i1 = xs.binary_search(&sp.x1).expect("a vertex x");
+            for m in &mut members[i0..i1] {
+                m.push((sp.item, sp.line));
+            }
+        }
+        let mut slabs = Vec::with_capacity(nslabs);
+        for (s, mem) in members.into_iter().enumerate() {
+            let mid = (Rational::from(&xs[s] + &xs[s + 1])) / 2u32;
+            let mut ids: Vec<u32> = mem.iter().map(|&(_, l)| l).collect();
+            ids.sort_unstable();
+            ids.dedup();
+            let mut keyed: Vec<(Rational, u32)> = ids
+                .into_iter()
+                .map(|l| (lines[l as usize].y_at(&mid), l))
+                .collect();
+            keyed.sort();
+            let pieces: Vec<u32> = keyed.iter().map(|&(_, l)| l).collect();
+            let pos: HashMap<u32, usize> =
+                pieces.iter().enumerate().map(|(i, &l)| (l, i)).collect();
+            let mut labels = vec![Vec::new(); pieces.len() + 1];
+            // Per polygon item: its lowest and highest piece here.
+            let mut range: HashMap<u32, (usize, usize)> = HashMap::new();
+            for &(item, l) in &mem {
+                if !matches!(items[item as usize].shape, Shape::Polygon(_)) {
+                    continue;
+                }
+                let p = pos[&l];
+                range
+                    .entry(item)
+                    .and_modify(|r| *r = (r.0.min(p), r.1.max(p)))
+                    .or_insert((p, p));
+            }
+            let mut covered: Vec<(u32, (usize, usize))> = range.into_iter().collect();
+            covered.sort_unstable();
+            for (item, (lo, hi)) in covered {
+                for label in &mut labels[lo + 1..=hi] {
+                    label.push(item);
+                }
+            }
+            slabs.push(Slab { pieces, labels });
+        }
+        ClassOverlay {
+            items,
+            xs,
+            lines,
+            slabs,
+        }
+    }
+
+    /// The items whose cell contains `p`, ascending.
+    pub fn locate(&self, p: &RatPoint) -> Vec<u32> {
+        match self.locate_fast(p) {
+            Some(found) => found.to_vec(),
+            None => self.locate_exact(p),
+        }
+    }
+
+    /// The point-location path: the label of the open trapezoid holding
+    /// `p`, or `None` when `p` lies on a slab line or a piece.
+    pub fn locate_fast(&self, p: &RatPoint) -> Option<&[u32]> {
+        let x = x_of(p);
+        let s = match self.xs.binary_search(&x) {
+            Ok(_) => return None,
+            Err(0) => return Some(&[]),
+            Err(i) if i == self.xs.len() => return Some(&[]),
+            Err(i) => i - 1,
+        };
+        let slab = &self.slabs[s];
+        let (mut lo, mut hi) = (0usize, slab.pieces.len());
+        // Invariant: pieces[..lo] are below p, pieces[hi..] above.
+        while lo < hi {
+            let mid = (lo + hi) / 2;
+            match self.lines[slab.pieces[mid] as usize].side(p) {
+                Ordering::Greater => lo = mid + 1,
+                Ordering::Less => hi = mid,
+                Ordering::Equal => return None,
+            }
+        }
+        Some(&slab.labels[lo])
+    }
+
+    /// Every item tested for containment: the exact path for points on
+    /// slab lines and pieces, and the reference the tests compare with.
+    pub fn locate_exact(&self, p: &RatPoint) -> Vec<u32> {
+        (0..self.items.len() as u32)
+            .filter(|&i| self.items[i as usize].contains(p))
+            .collect()
+    }
+
+    /// Trapezoids over all slabs: the size of the structure.
+    pub fn trapezoids(&self) -> usize {
+        self.slabs.iter().map(|s| s.labels.len()).sum()
+    }
+}
+
+/// The x where two non-parallel lines meet.
+fn crossing_x(l1: &Line, l2: &Line) -> Option<Rational> {
+    let det = Integer::from(&l1.a * &l2.b) - Integer::from(&l2.a * &l1.b);
+    if det == 0 {
+        return None;
+    }
+    let num = Integer::from(&l1.c * &l2.b) - Integer::from(&l2.c * &l1.b);
+    Some(Rational::from((num, det)))
+}

@@ -1,0 +1,244 @@
+//! The localizer against the brute-force oracle and against the map-side
+//! skeleton, at viewpoints in every cell of every dimension (points on
+//! rays, 0-cells) and at random points.
+
+use rand::{Rng, SeedableRng};
+use rand_chacha::ChaCha8Rng;
+use rug::Integer;
+use wai_cells::Decomposition;
+use wai_exact::{Containment, RatPoint};
+use wai_localize::{oracle, Localizer, RobotView};
+use wai_map::Map;
+use wai_visibility::{Skeleton, VisibilityIndex};
+
+/// Tallies of one map's queries.
+#[derive(Debug, Default)]
+pub struct Tally {
+    pub queries: usize,
+    pub answers: usize,
+    pub max_answers: usize,
+    pub on_lower: usize,
+}
+
+/// Viewpoints: every cell's representative, every lower cell's, and
+/// `random` random points with small denominators inside the map.
+pub fn viewpoints(d: &Decomposition<'_>, random: usize, seed: u64) -> Vec<RatPoint> {
+    let mut pts: Vec<RatPoint> = d
+        .cells()
+        .iter()
+        .map(|&c| d.representative(c).clone())
+        .collect();
+    pts.extend(d.lower_cells().iter().map(|c| d.lower_representative(c)));
+    let map = d.map();
+    let (lo, hi) = map.bounding_box();
+    let mut rng = ChaCha8Rng::seed_from_u64(seed);
+    let mut added = 0;
+    let mut tries = 0;
+    while added < random && tries < 100 * random {
+        tries += 1;
+        let w: i128 = rng.random_range(1..=8);
+        let x = rng.random_range(lo.x * w..=hi.x * w);
+        let y = rng.random_range(lo.y * w..=hi.y * w);
+        let p = RatPoint::from_i128(x, y, w).expect("w > 0");
+        if wai_exact::locate_rat(map.vertices(), &p) == Containment::Inside {
+            pts.push(p);
+            added += 1;
+        }
+    }
+    pts
+}
+
+/// Localize from every viewpoint and compare with the oracle; panics with
+/// the map and the point on any disagreement.
+pub fn check_map(map: &Map, random: usize, seed: u64) -> Tally {
+    let d = Decomposition::new(map);
+    let loc = Localizer::from_decomposition(&d);
+    let index = VisibilityIndex::new(map);
+    let lower_from = d.cells().len();
+    let mut t = Tally::default();
+    for (i, p) in viewpoints(&d, random, seed).iter().enumerate() {
+        let vp = index.visibility_polygon(p).expect("inside");
+        let view = RobotView::from_visibility(&vp);
+        // The input check accepts every true visibility polygon unchanged.
+        let checked = RobotView::new(view.vertices().to_vec())
+            .unwrap_or_else(|e| panic!("{:?}: V at {p} refused: {e}", map.name()));
+        assert_eq!(checked, view, "V at {p} was changed by the input check");
+        let sk = view.skeleton().expect("a true V has a skeleton");
+        let map_sk = Skeleton::of(map, &vp).expect("map-side skeleton");
+        assert_eq!(
+            sk.key,
+            map_sk.key(),
+            "{:?}: skeleton from V alone at {p}",
+            map.name()
+        );
+        let answer = loc.localize(&view);
+        assert!(
+            answer.nowhere.is_none(),
+            "{:?}: no answer at {p}: {:?}",
+            map.name(),
+            answer.nowhere
+        );
+        let positions = answer.positions();
+        assert!(
+            positions.contains(p),
+            "{:?}: answer at {p} misses it",
+            map.name()
+        );
+        let brute = oracle::brute_force(&index, &view);
+        assert_eq!(
+            positions,
+            brute,
+            "{:?}: localizer and brute force at {p}",
+            map.name()
+        );
+        // Fast and exact point location agree where the fast one answers.
+        let k = answer.class.expect("class");
+        let o = loc.overlay(k);
+        if let Some(fast) = o.locate_fast(&sk.robot) {
+            assert_eq!(fast, o.locate_exact(&sk.robot).as_slice());
+        }
+        t.queries += 1;
+        t.answers += positions.len();
+        t.max_answers = t.max_answers.max(positions.len());
+        if i >= lower_from && i < lower_from + d.lower_cells().len() {
+            t.on_lower += 1;
+        }
+    }
+    t
+}
+
+fn maps() -> Vec<Map> {
+    let mut m = Vec::new();
+    for seed in 0..4 {
+        m.push(wai_gen::random("random-orthogonal", 16, seed).unwrap());
+        m.push(wai_gen::random("special-orthogonal", 16, seed).unwrap());
+        m.push(wai_gen::random("special-comb", 20, seed).unwrap());
+        m.push(wai_gen::random("random-simple-2opt", 12, seed).unwrap());
+    }
+    m.push(wai_gen::family("corridor-niches", &[4]).unwrap());
+    m.push(wai_gen::family("overlap-fan", &[1]).unwrap());
+    m.push(wai_gen::layout("repeated-niches", 0).unwrap());
+    m
+}
+
+#[test]
+fn localizer_agrees_with_brute_force_on_every_cell_and_random_points() {
+    let mut total = Tally::default();
+    for map in maps() {
+        let t = check_map(&map, 40, 7);
+        total.queries += t.queries;
+        total.answers += t.answers;
+        total.max_answers = total.max_answers.max(t.max_answers);
+        total.on_lower += t.on_lower;
+    }
+    eprintln!("{total:?}");
+    assert!(total.queries > 1000);
+    assert!(
+        total.on_lower > 100,
+        "points on 1- and 0-cells were examined"
+    );
+    assert!(total.max_answers >= 3, "some query has several answers");
+}
+
+#[test]
+fn repeated_rooms_give_every_room() {
+    // corridor-niches k = 4: four identical niches; a point deep in one
+    // niche is seen the same from the same spot of each.
+    let map = wai_gen::family("corridor-niches", &[4]).unwrap();
+    let loc = Localizer::new(&map);
+    let index = VisibilityIndex::new(&map);
+    let d = Decomposition::new(&map);
+    let best = d
+        .cells()
+        .iter()
+        .map(|&c| {
+            let p = d.representative(c).clone();
+            let v = RobotView::from_visibility(&index.visibility_polygon(&p).unwrap());
+            loc.localize(&v).placements.len()
+        })
+        .max()
+        .unwrap();
+    assert!(best >= 4, "largest answer set {best}");
+}
+
+#[test]
+fn a_polygon_nothing_sees_gets_the_empty_answer_with_its_reason() {
+    let map = wai_gen::family("corridor-niches", &[2]).unwrap();
+    let loc = Localizer::new(&map);
+    // A unit square around the robot: no map has it (its corners are at
+    // half-integer offsets from each other? No: integer, but no cell sees a
+    // square of side 2 in this map).
+    let sq = |x: i128, y: i128| RatPoint::from_i128(x, y, 1).unwrap();
+    let v = RobotView::new(vec![sq(-1, -1), sq(1, -1), sq(1, 1), sq(-1, 1)]).unwrap();
+    let a = loc.localize(&v);
+    assert!(a.placements.is_empty());
+    assert!(a.nowhere.is_some());
+    let _ = Integer::new();
+}
+
+/// Polygons that look right but are seen from nowhere, or from elsewhere:
+/// the skeleton of cell c1 rebuilt (Thm 3.2) around the representative of
+/// another cell c2, as if the robot stood there. Star-shaped and with a
+/// known skeleton, but the robot's position is in no cell of that class
+/// (unless c2's embedding shares it): the localizer must answer exactly
+/// what the brute force answers, and say "no cell" when that is empty.
+#[test]
+fn rebuilt_skeletons_around_the_wrong_point_answer_as_the_brute_force() {
+    let mut no_cell = 0;
+    let mut checked = 0;
+    for map in [
+        wai_gen::family("corridor-niches", &[3]).unwrap(),
+        wai_gen::random("special-orthogonal", 14, 2).unwrap(),
+        wai_gen::random("random-simple-2opt", 10, 1).unwrap(),
+    ] {
+        let d = Decomposition::new(&map);
+        let loc = Localizer::from_decomposition(&d);
+        let index = VisibilityIndex::new(&map);
+        let cells: Vec<usize> = d.cells().iter().copied().take(40).collect();
+        for &c1 in &cells {
+            let key = &d.skeletons()[d.skeleton_of(c1)];
+            let o = map.vertices()[d.origin_of(c1)];
+            for &c2 in &cells {
+                if d.skeleton_of(c2) == d.skeleton_of(c1) {
+                    continue;
+                }
+                let q = d.representative(c2);
+                let w = q.hw();
+                let rel = RatPoint::new(
+                    q.hx() - Integer::from(w * o.x),
+                    q.hy() - Integer::from(w * o.y),
+                    w.clone(),
+                )
+                .unwrap();
+                let pts: Vec<RatPoint> = wai_visibility::reconstruct(key, &rel)
+                    .iter()
+                    .map(|p| {
+                        let (pw, rw) = (p.hw(), rel.hw());
+                        RatPoint::new(
+                            Integer::from(p.hx() * rw) - Integer::from(rel.hx() * pw),
+                            Integer::from(p.hy() * rw) - Integer::from(rel.hy() * pw),
+                            Integer::from(pw * rw),
+                        )
+                        .unwrap()
+                    })
+                    .collect();
+                let Ok(view) = RobotView::new(pts) else {
+                    continue;
+                };
+                let answer = loc.localize(&view);
+                assert_eq!(
+                    answer.positions(),
+                    oracle::brute_force(&index, &view),
+                    "{:?}: skeleton of cell {c1} around cell {c2}",
+                    map.name()
+                );
+                checked += 1;
+                if matches!(answer.nowhere, Some(wai_localize::Nowhere::NoCell(_))) {
+                    no_cell += 1;
+                }
+            }
+        }
+    }
+    eprintln!("{checked} rebuilt views, {no_cell} in no cell");
+    assert!(checked > 100 && no_cell > 10, "{checked} {no_cell}");
+}

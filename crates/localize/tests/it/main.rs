@@ -1,0 +1,4 @@
+//! Integration tests of the localizer.
+
+mod agree;
+mod view;
