@@ -293,12 +293,7 @@ pub fn from_json(bytes: &[u8]) -> Result<Localizer, FileError> {
             });
         }
         keys.push(SkeletonKey { offsets, labels });
-        overlays.push(ClassOverlay {
-            items,
-            xs,
-            lines,
-            slabs,
-        });
+        overlays.push(ClassOverlay::from_parts(items, xs, lines, slabs));
     }
     Ok(Localizer::assemble(map, keys, overlays))
 }

@@ -12,6 +12,7 @@
 //! - [`oracle`]: an independent brute force to compare with.
 //! - [`file`]: save and load a preprocessed map (versioned JSON).
 
+pub mod fast;
 pub mod file;
 mod localizer;
 pub mod oracle;

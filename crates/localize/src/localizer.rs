@@ -3,11 +3,11 @@
 use crate::overlay::{CellSite, ClassOverlay, Item, Shape};
 use crate::view::{NoSkeleton, RobotView};
 use rug::Integer;
-use std::collections::HashMap;
+use rustc_hash::FxHashMap;
 use wai_cells::{Decomposition, LowerSite};
 use wai_exact::{Point, RatPoint};
 use wai_map::Map;
-use wai_visibility::{reconstruct, SkeletonKey};
+use wai_visibility::SkeletonKey;
 
 /// One position where the robot can be (an element of the answer set A,
 /// Def 3.2), with the embedding that gives it.
@@ -29,8 +29,6 @@ pub enum Nowhere {
     NoSkeleton(#[from] NoSkeleton),
     #[error("no cell of the map has the polygon's skeleton (no equivalence class matches)")]
     NoClass,
-    #[error("the skeleton matches class {0}, but the polygon's spurious vertices are not where the skeleton and the robot's position put them (Thm 3.2): no point sees this polygon")]
-    Inconsistent(usize),
     #[error("the skeleton matches class {0}, but the robot's position relative to v0 lies in no cell of the class")]
     NoCell(usize),
 }
@@ -67,7 +65,7 @@ impl Answer {
 pub struct Localizer {
     pub(crate) map: Map,
     pub(crate) keys: Vec<SkeletonKey>,
-    pub(crate) by_key: HashMap<SkeletonKey, usize>,
+    pub(crate) by_key: FxHashMap<SkeletonKey, usize>,
     pub(crate) overlays: Vec<ClassOverlay>,
 }
 
@@ -177,11 +175,12 @@ impl Localizer {
         let Some(k) = self.class_of(&sk.key) else {
             return Answer::nowhere(None, Nowhere::NoClass);
         };
-        // Thm 3.2: the skeleton and the position determine V; a polygon
-        // whose spurious vertices disagree is seen from nowhere.
-        if reconstruct(&sk.key, &sk.robot) != v.from_origin(sk.origin_index) {
-            return Answer::nowhere(Some(k), Nowhere::Inconsistent(k));
-        }
+        // No check that V is what the skeleton and the robot's position
+        // rebuild (Thm 3.2) is needed: in a checked V every spurious vertex
+        // lies on the ray through its blocking vertex and on the line of
+        // its half or partial edge, which is where `reconstruct` puts it
+        // (the tests assert the equality on every view they make). So a
+        // point of a cell of this class sees exactly V (Cor 3.6).
         let overlay = &self.overlays[k];
         let hits = overlay.locate(&sk.robot);
         if hits.is_empty() {

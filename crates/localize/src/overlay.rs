@@ -18,6 +18,7 @@
 //! measure zero; the answers are the same by construction and the tests
 //! compare both paths.
 
+use crate::fast::cmp_products;
 use rug::{Integer, Rational};
 use std::cmp::Ordering;
 use std::collections::HashMap;
@@ -108,7 +109,13 @@ pub struct ClassOverlay {
     pub lines: Vec<Line>,
     /// Slab `s` lies between `xs[s]` and `xs[s + 1]`.
     pub slabs: Vec<Slab>,
+    /// `xs` and `lines` as `i128`s when they all fit: the fast path.
+    fast: Option<FastParts>,
 }
+
+/// The slab boundaries as (numerator, denominator) and the lines as
+/// (a, b, c), all in `i128`.
+type FastParts = (Vec<(i128, i128)>, Vec<[i128; 3]>);
 
 fn x_of(p: &RatPoint) -> Rational {
     Rational::from((p.hx().clone(), p.hw().clone()))
@@ -277,12 +284,58 @@ impl ClassOverlay {
             }
             slabs.push(Slab { pieces, labels });
         }
+        ClassOverlay::from_parts(items, xs, lines, slabs)
+    }
+
+    /// An overlay from its parts (as read from a file).
+    pub fn from_parts(
+        items: Vec<Item>,
+        xs: Vec<Rational>,
+        lines: Vec<Line>,
+        slabs: Vec<Slab>,
+    ) -> ClassOverlay {
+        let small = |z: &Integer| z.to_i128().filter(|c| c.unsigned_abs() < 1u128 << 126);
+        let fx: Option<Vec<(i128, i128)>> = xs
+            .iter()
+            .map(|x| Some((small(x.numer())?, small(x.denom())?)))
+            .collect();
+        let fl: Option<Vec<[i128; 3]>> = lines
+            .iter()
+            .map(|l| Some([small(&l.a)?, small(&l.b)?, small(&l.c)?]))
+            .collect();
         ClassOverlay {
             items,
             xs,
             lines,
             slabs,
+            fast: fx.zip(fl),
         }
+    }
+
+    /// Which slab holds `p` (Err: on slab line `i`); the fast path when
+    /// everything fits.
+    fn slab_of(&self, p: &RatPoint, q: Option<[i128; 3]>) -> Result<usize, usize> {
+        if let (Some((xs, _)), Some(q)) = (&self.fast, q) {
+            // The sign of x_i − X/W: x_i = n/d, d > 0, W > 0.
+            return xs.binary_search_by(|&(n, d)| cmp_products(n, q[2], q[0], d));
+        }
+        self.xs.binary_search(&x_of(p))
+    }
+
+    /// The side of line `l` that `p` is on.
+    fn side(&self, l: u32, p: &RatPoint, q: Option<[i128; 3]>) -> Ordering {
+        if let (Some((_, lines)), Some(q)) = (&self.fast, q) {
+            let [a, b, c] = lines[l as usize];
+            let s = a
+                .checked_mul(q[0])
+                .zip(b.checked_mul(q[1]))
+                .zip(c.checked_mul(q[2]))
+                .and_then(|((ax, by), cw)| ax.checked_add(by)?.checked_sub(cw));
+            if let Some(s) = s {
+                return s.cmp(&0);
+            }
+        }
+        self.lines[l as usize].side(p)
     }
 
     /// The items whose cell contains `p`, ascending.
@@ -296,8 +349,9 @@ impl ClassOverlay {
     /// The point-location path: the label of the open trapezoid holding
     /// `p`, or `None` when `p` lies on a slab line or a piece.
     pub fn locate_fast(&self, p: &RatPoint) -> Option<&[u32]> {
-        let x = x_of(p);
-        let s = match self.xs.binary_search(&x) {
+        let small = |z: &Integer| z.to_i128().filter(|c| c.unsigned_abs() < 1u128 << 126);
+        let q = (|| Some([small(p.hx())?, small(p.hy())?, small(p.hw())?]))();
+        let s = match self.slab_of(p, q) {
             Ok(_) => return None,
             Err(0) => return Some(&[]),
             Err(i) if i == self.xs.len() => return Some(&[]),
@@ -308,7 +362,7 @@ impl ClassOverlay {
         // Invariant: pieces[..lo] are below p, pieces[hi..] above.
         while lo < hi {
             let mid = (lo + hi) / 2;
-            match self.lines[slab.pieces[mid] as usize].side(p) {
+            match self.side(slab.pieces[mid], p, q) {
                 Ordering::Greater => lo = mid + 1,
                 Ordering::Less => hi = mid,
                 Ordering::Equal => return None,

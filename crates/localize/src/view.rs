@@ -9,6 +9,7 @@
 //! kinds and the skeleton follow (Defs 3.5–3.7). Tests compare the result
 //! with the map-side skeleton of the same viewpoint.
 
+use crate::fast::{cmp_products, det2};
 use rug::Integer;
 use std::cmp::Ordering;
 use wai_exact::{orientation_rat, Orientation, RatPoint};
@@ -41,6 +42,10 @@ pub enum ViewError {
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct RobotView {
     vertices: Vec<RatPoint>,
+    /// The vertices as `i128` homogeneous triples when every coordinate is
+    /// below 2^126 in magnitude (so that negation and `unsigned_abs` are
+    /// safe): the fast path of [`crate::fast`]. Derived from `vertices`.
+    fast: Option<Vec<[i128; 3]>>,
     /// What normalisation changed (reversed orientation, dropped vertices).
     notes: Vec<String>,
 }
@@ -216,17 +221,138 @@ impl RobotView {
                 .map(|(p, _)| p)
                 .collect();
         }
-        Ok(RobotView { vertices: v, notes })
+        Ok(RobotView::build(v, notes))
+    }
+
+    fn build(vertices: Vec<RatPoint>, notes: Vec<String>) -> RobotView {
+        let small = |z: &Integer| z.to_i128().filter(|c| c.unsigned_abs() < 1u128 << 126);
+        let fast = vertices
+            .iter()
+            .map(|p| Some([small(p.hx())?, small(p.hy())?, small(p.hw())?]))
+            .collect();
+        RobotView {
+            vertices,
+            fast,
+            notes,
+        }
+    }
+
+    /// The sign of v_i × v_j (positions relative to the robot).
+    fn cross_ij(&self, i: usize, j: usize) -> Ordering {
+        match &self.fast {
+            Some(f) => cmp_products(f[i][0], f[j][1], f[i][1], f[j][0]),
+            None => cross(&self.vertices[i], &self.vertices[j]),
+        }
+    }
+
+    /// For v_i, v_j on one ray from the robot: whether v_j is the farther.
+    fn farther(&self, i: usize, j: usize) -> bool {
+        if let Some(f) = &self.fast {
+            // Same ray: compare one non-zero coordinate's magnitude.
+            let c = if f[i][0] != 0 { 0 } else { 1 };
+            return cmp_products(f[j][c].abs(), f[i][2], f[i][c].abs(), f[j][2])
+                == Ordering::Greater;
+        }
+        let v = &self.vertices;
+        dot(&sub(&v[j], &v[i]), &v[i]) == Ordering::Greater
+    }
+
+    /// The orientation of (v_h, v_i, v_j).
+    fn orient(&self, h: usize, i: usize, j: usize) -> Orientation {
+        if let Some(f) = &self.fast {
+            let d = |a: &[i128; 3], b: &[i128; 3]| {
+                Some((det2(b[0], a[2], a[0], b[2])?, det2(b[1], a[2], a[1], b[2])?))
+            };
+            if let (Some(u), Some(w)) = (d(&f[h], &f[i]), d(&f[i], &f[j])) {
+                return match cmp_products(u.0, w.1, u.1, w.0) {
+                    Ordering::Greater => Orientation::CounterClockwise,
+                    Ordering::Less => Orientation::Clockwise,
+                    Ordering::Equal => Orientation::Collinear,
+                };
+            }
+        }
+        let v = &self.vertices;
+        orientation_rat(&v[h], &v[i], &v[j])
+    }
+
+    /// v_a against v_b by x, then y.
+    fn lex(&self, a: usize, b: usize) -> Ordering {
+        if let Some(f) = &self.fast {
+            let (p, q) = (&f[a], &f[b]);
+            return cmp_products(p[0], q[2], q[0], p[2])
+                .then_with(|| cmp_products(p[1], q[2], q[1], p[2]));
+        }
+        let (a, b) = (&self.vertices[a], &self.vertices[b]);
+        let x = (Integer::from(a.hx() * b.hw()) - Integer::from(b.hx() * a.hw())).cmp0();
+        x.then_with(|| (Integer::from(a.hy() * b.hw()) - Integer::from(b.hy() * a.hw())).cmp0())
+    }
+
+    /// The label of the line through v_i and v_j relative to v_o, as
+    /// [`label_through`] gives it, in `i128` when every step fits (`None`
+    /// otherwise). The line is a map edge's, so its primitive normal and
+    /// its offset from the map vertex v_o are small integers even when v_i
+    /// and v_j are spurious vertices with large coordinates.
+    fn label_fast(&self, i: usize, j: usize, o: usize) -> Option<LineLabel> {
+        let f = self.fast.as_ref()?;
+        let (p, q, r) = (&f[i], &f[j], &f[o]);
+        // The direction q − p times p_w·q_w.
+        let dx = det2(q[0], p[2], p[0], q[2])?;
+        let dy = det2(q[1], p[2], p[1], q[2])?;
+        let g = wai_exact::gcd_u128(dx.unsigned_abs(), dy.unsigned_abs());
+        let g = i128::try_from(g).ok().filter(|&g| g > 0)?;
+        let (mut a, mut b) = (dy / g, -dx / g);
+        if a < 0 || (a == 0 && b < 0) {
+            a = -a;
+            b = -b;
+        }
+        // c = a·(p − o)_x + b·(p − o)_y, an integer.
+        let ex = det2(p[0], r[2], r[0], p[2])?;
+        let ey = det2(p[1], r[2], r[1], p[2])?;
+        let den = p[2].checked_mul(r[2])?;
+        let num = a.checked_mul(ex)?.checked_add(b.checked_mul(ey)?)?;
+        if num % den != 0 {
+            return None;
+        }
+        Some(LineLabel {
+            a: Integer::from(a),
+            b: Integer::from(b),
+            c: Integer::from(num / den),
+        })
+    }
+
+    /// v_i − v_o if it is an integer vector.
+    fn offset(&self, i: usize, o: usize) -> Option<(i128, i128)> {
+        if let Some(f) = &self.fast {
+            let (p, q) = (&f[i], &f[o]);
+            if let (Some(nx), Some(ny), Some(den)) = (
+                det2(p[0], q[2], q[0], p[2]),
+                det2(p[1], q[2], q[1], p[2]),
+                p[2].checked_mul(q[2]),
+            ) {
+                // i64 division where it fits: i128 division is a slow
+                // library call.
+                if let (Ok(nx), Ok(ny), Ok(den)) =
+                    (i64::try_from(nx), i64::try_from(ny), i64::try_from(den))
+                {
+                    return (nx % den == 0 && ny % den == 0)
+                        .then(|| (i128::from(nx / den), i128::from(ny / den)));
+                }
+                return (nx % den == 0 && ny % den == 0).then(|| (nx / den, ny / den));
+            }
+        }
+        sub(&self.vertices[i], &self.vertices[o])
+            .to_point()
+            .map(|p| (p.x, p.y))
     }
 
     /// V_p of a map viewpoint `p`, as the robot at `p` sees it: every vertex
     /// minus `p`.
     pub fn from_visibility(vp: &wai_visibility::VisibilityPolygon) -> RobotView {
         let p = vp.viewpoint();
-        RobotView {
-            vertices: vp.vertices().iter().map(|u| sub(&u.point, p)).collect(),
-            notes: Vec::new(),
-        }
+        RobotView::build(
+            vp.vertices().iter().map(|u| sub(&u.point, p)).collect(),
+            Vec::new(),
+        )
     }
 
     /// The vertices, counter-clockwise, relative to the robot.
@@ -246,30 +372,27 @@ impl RobotView {
 
     /// Whether edge `i` is spurious (Def 3.4): collinear with the robot.
     pub fn is_spurious_edge(&self, i: usize) -> bool {
-        let m = self.vertices.len();
-        cross(&self.vertices[i], &self.vertices[(i + 1) % m]) == Ordering::Equal
+        self.cross_ij(i, (i + 1) % self.vertices.len()) == Ordering::Equal
     }
 
     /// Which vertices are spurious (Def 3.4): the farther ends of spurious
     /// edges.
     pub fn spurious_vertices(&self) -> Vec<bool> {
-        let v = &self.vertices;
-        let m = v.len();
+        self.classify().1
+    }
+
+    /// Which edges and which vertices are spurious (Def 3.4).
+    fn classify(&self) -> (Vec<bool>, Vec<bool>) {
+        let m = self.vertices.len();
+        let edges: Vec<bool> = (0..m).map(|i| self.is_spurious_edge(i)).collect();
         let mut s = vec![false; m];
         for i in 0..m {
-            let j = (i + 1) % m;
-            if self.is_spurious_edge(i) {
-                // On one ray: the farther one has the larger dot with itself
-                // along the ray, i.e. (v_j − v_i) · v_i > 0 means j is farther.
-                let far = if dot(&sub(&v[j], &v[i]), &v[i]) == Ordering::Greater {
-                    j
-                } else {
-                    i
-                };
-                s[far] = true;
+            if edges[i] {
+                let j = (i + 1) % m;
+                s[if self.farther(i, j) { j } else { i }] = true;
             }
         }
-        s
+        (edges, s)
     }
 
     /// V* from V (Def 3.7): v0 is the leftmost, then lowest, non-spurious
@@ -279,30 +402,31 @@ impl RobotView {
     pub fn skeleton(&self) -> Result<ViewSkeleton, NoSkeleton> {
         let v = &self.vertices;
         let m = v.len();
-        let spurious = self.spurious_vertices();
+        let (spurious_edge, spurious) = self.classify();
         let kept: Vec<usize> = (0..m).filter(|&i| !spurious[i]).collect();
         if kept.is_empty() {
             return Err(NoSkeleton::NoVertex);
         }
-        let reflex: Vec<usize> = kept
-            .iter()
-            .copied()
-            .filter(|&i| {
-                orientation_rat(&v[(i + m - 1) % m], &v[i], &v[(i + 1) % m])
-                    == Orientation::Clockwise
-            })
-            .collect();
-        let pool = if reflex.is_empty() { &kept } else { &reflex };
-        let lex = |a: &RatPoint, b: &RatPoint| {
-            let x = (Integer::from(a.hx() * b.hw()) - Integer::from(b.hx() * a.hw())).cmp0();
-            x.then_with(|| (Integer::from(a.hy() * b.hw()) - Integer::from(b.hy() * a.hw())).cmp0())
-        };
-        let o0 = *pool
-            .iter()
-            .min_by(|&&a, &&b| lex(&v[a], &v[b]))
-            .expect("non-empty");
+        // v0: the lexicographically least kept vertex that is reflex in V,
+        // else the least kept vertex. Reflexivity is tested only for a
+        // vertex that would beat the best so far.
+        let mut best: Option<usize> = None;
+        for &i in &kept {
+            if best.is_some_and(|b| self.lex(i, b) != Ordering::Less) {
+                continue;
+            }
+            if self.orient((i + m - 1) % m, i, (i + 1) % m) == Orientation::Clockwise {
+                best = Some(i);
+            }
+        }
+        let o0 = best.unwrap_or_else(|| {
+            *kept
+                .iter()
+                .min_by(|&&a, &&b| self.lex(a, b))
+                .expect("non-empty")
+        });
         let start = kept.iter().position(|&i| i == o0).expect("kept");
-        let mut order = kept.clone();
+        let mut order = kept;
         order.rotate_left(start);
         let v0 = &v[o0];
         let k = order.len();
@@ -310,26 +434,27 @@ impl RobotView {
         let mut labels = Vec::with_capacity(k);
         for s in 0..k {
             let (i, j) = (order[s], order[(s + 1) % k]);
-            let off = sub(&v[i], v0).to_point().ok_or(NoSkeleton::OffGrid(i))?;
-            offsets.push((off.x, off.y));
-            let path: Vec<usize> = {
-                let mut p = vec![i];
-                let mut e = (i + 1) % m;
-                while e != j {
-                    p.push(e);
-                    e = (e + 1) % m;
+            offsets.push(self.offset(i, o0).ok_or(NoSkeleton::OffGrid(i))?);
+            // The edges from i to j: one solid edge, maybe with a
+            // spurious edge before and after it.
+            let len = (j + m - i) % m;
+            let len = if len == 0 { m } else { len };
+            let mut solid = None;
+            let mut count = 0;
+            for t in 0..len {
+                let e = (i + t) % m;
+                if !spurious_edge[e] {
+                    count += 1;
+                    solid = Some(e);
                 }
-                p
-            };
-            let solid: Vec<usize> = path
-                .iter()
-                .copied()
-                .filter(|&e| !self.is_spurious_edge(e))
-                .collect();
-            match (path.len(), solid.as_slice()) {
-                (1, [_]) => labels.push(None),
-                (_, [e]) => labels.push(Some(label_through(&v[*e], &v[(*e + 1) % m], v0))),
-                (_, other) => return Err(NoSkeleton::BadPath(i, j, other.len())),
+            }
+            match (len, solid) {
+                (1, Some(_)) if count == 1 => labels.push(None),
+                (_, Some(e)) if count == 1 => labels.push(Some(
+                    self.label_fast(e, (e + 1) % m, o0)
+                        .unwrap_or_else(|| label_through(&v[e], &v[(e + 1) % m], v0)),
+                )),
+                _ => return Err(NoSkeleton::BadPath(i, j, count)),
             }
         }
         Ok(ViewSkeleton {

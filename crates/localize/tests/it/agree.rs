@@ -71,6 +71,11 @@ pub fn check_map(map: &Map, random: usize, seed: u64) -> Tally {
             "{:?}: skeleton from V alone at {p}",
             map.name()
         );
+        assert_eq!(
+            wai_visibility::reconstruct(&sk.key, &sk.robot),
+            view.from_origin(sk.origin_index),
+            "Thm 3.2 at {p}"
+        );
         let answer = loc.localize(&view);
         assert!(
             answer.nowhere.is_none(),
@@ -225,6 +230,12 @@ fn rebuilt_skeletons_around_the_wrong_point_answer_as_the_brute_force() {
                 let Ok(view) = RobotView::new(pts) else {
                     continue;
                 };
+                if let Ok(sk) = view.skeleton() {
+                    assert_eq!(
+                        wai_visibility::reconstruct(&sk.key, &sk.robot),
+                        view.from_origin(sk.origin_index)
+                    );
+                }
                 let answer = loc.localize(&view);
                 assert_eq!(
                     answer.positions(),
@@ -241,4 +252,23 @@ fn rebuilt_skeletons_around_the_wrong_point_answer_as_the_brute_force() {
     }
     eprintln!("{checked} rebuilt views, {no_cell} in no cell");
     assert!(checked > 100 && no_cell > 10, "{checked} {no_cell}");
+}
+
+/// The same checks on maps scaled by 2^60: coordinates beyond the fast
+/// paths' reach, so every predicate takes GMP.
+#[test]
+fn scaled_maps_take_the_exact_paths_and_agree() {
+    for map in [
+        wai_gen::random("special-orthogonal", 12, 1).unwrap(),
+        wai_gen::family("corridor-niches", &[2]).unwrap(),
+    ] {
+        let big: Vec<wai_exact::Point> = map
+            .vertices()
+            .iter()
+            .map(|p| wai_exact::Point::new(p.x << 60, p.y << 60))
+            .collect();
+        let scaled = Map::from_ring(big).unwrap().0;
+        let t = check_map(&scaled, 10, 5);
+        assert!(t.queries > 50);
+    }
 }

@@ -1,4 +1,5 @@
 //! Integration tests of the localizer.
 
 mod agree;
+mod fast;
 mod view;
