@@ -51,6 +51,7 @@ pub mod c4_10;
 pub mod c4_15;
 pub mod c4_16;
 pub mod c4_20;
+pub mod corpus;
 pub mod d3_5;
 pub mod driver;
 pub mod family;

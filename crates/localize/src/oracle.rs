@@ -2,7 +2,9 @@
 //!
 //! [`brute_force`]: every placement of the robot that sends the skeleton
 //! origin v0 to a reflex map vertex (v0 is reflex in V, and a vertex
-//! reflex in V that is not spurious is a reflex map vertex, Lemma 3.1),
+//! reflex in V that is not spurious is a reflex map vertex, Lemma 3.1; a
+//! V with no reflex vertex is a whole convex map, whose every vertex is
+//! tried),
 //! kept when the visibility polygon computed there equals V translated,
 //! exactly. It needs no decomposition and no cells: only V's skeleton
 //! origin and the visibility algorithm, which is tested against its own
@@ -20,7 +22,15 @@ pub fn brute_force(index: &VisibilityIndex<'_>, v: &RobotView) -> Vec<RatPoint> 
     };
     let map = index.map();
     let mut found = Vec::new();
-    for &u in map.reflex_vertices() {
+    // A convex map (r = 0, outside the thesis's assumption) has v0 at its
+    // leftmost, then lowest, vertex: try every vertex then.
+    let all: Vec<usize> = (0..map.n()).collect();
+    let candidates = if map.r() == 0 {
+        &all
+    } else {
+        map.reflex_vertices()
+    };
+    for &u in candidates {
         let at = map.vertices()[u];
         let w = sk.robot.hw();
         let q = RatPoint::new(

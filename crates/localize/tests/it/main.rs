@@ -2,4 +2,5 @@
 
 mod agree;
 mod fast;
+mod file;
 mod view;
