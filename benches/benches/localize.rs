@@ -1,8 +1,8 @@
 //! The reference localizer (issue 9), ids `localize/{stage}/{map}`:
 //! preprocessing (Alg 3.14: decomposition and one overlay per class),
-//! the query (Alg 3.13) over a fixed set of simulated views, and the
-//! brute-force oracle on the same views in the same run as the reference
-//! point. Query throughput is in queries per second: the median time per
+//! the query (Alg 3.13) over a fixed set of simulated views (alone, and
+//! with V's input check), and the brute-force and one-shot oracles on
+//! the same views in the same run as the reference points. Query throughput is in queries per second: the median time per
 //! query is the iteration median divided by the number of views.
 
 // The allocator of every binary of the workspace (see Cargo.toml).
@@ -91,11 +91,30 @@ fn bench(c: &mut Criterion) {
                     .sum::<usize>()
             })
         });
+        // The same with V's input check (as `wai localize --polygon` does),
+        // from a copy of its vertices.
+        g.bench_with_input(BenchmarkId::new("check-and-query", &id), &vs, |b, vs| {
+            b.iter(|| {
+                vs.iter()
+                    .map(|v| {
+                        let checked = RobotView::new(v.vertices().to_vec()).expect("a true V");
+                        loc.localize(&checked).placements.len()
+                    })
+                    .sum::<usize>()
+            })
+        });
         let index = VisibilityIndex::new(map);
         g.bench_with_input(BenchmarkId::new("brute-force", &id), &vs, |b, vs| {
             b.iter(|| {
                 vs.iter()
                     .map(|v| oracle::brute_force(&index, v).len())
+                    .sum::<usize>()
+            })
+        });
+        g.bench_with_input(BenchmarkId::new("one-shot", &id), &vs, |b, vs| {
+            b.iter(|| {
+                vs.iter()
+                    .map(|v| oracle::one_shot(&index, v).0.len())
                     .sum::<usize>()
             })
         });

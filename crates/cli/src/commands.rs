@@ -221,7 +221,47 @@ pub fn demo(out: &Path) -> Result<(), Failure> {
         svg_path.display(),
         vis_path.display()
     );
-    println!("(`wai vis MAP --at x,y` for any viewpoint, `wai decompose MAP` for any map; localization joins this job as a later issue lands)");
+    // Localization (Alg 3.13/3.14): the robot at (9, 2) sees V_p; where
+    // can it be? Then the same on a corridor with six identical niches,
+    // where one view has six answers.
+    let loc = wai_localize::Localizer::from_decomposition(&d);
+    let view = wai_localize::RobotView::from_visibility(&vp);
+    let answer = loc.localize(&view);
+    println!(
+        "\nlocalize V_p of (9, 2) on this map: {} position(s): {}",
+        answer.placements.len(),
+        answer
+            .placements
+            .iter()
+            .map(|a| crate::vis::show(map, &a.position))
+            .collect::<Vec<_>>()
+            .join(", ")
+    );
+    let corridor = wai_gen::family("corridor-niches", &[6])
+        .map_err(|e| Failure::invalid(format!("corridor-niches: {e}")))?;
+    let at = wai_exact::RatPoint::from_i128(10, -7, 2).expect("w = 2");
+    let vq = wai_visibility::VisibilityIndex::new(&corridor)
+        .visibility_polygon(&at)
+        .map_err(|e| Failure::invalid(format!("corridor-niches: {e}")))?;
+    let view = wai_localize::RobotView::from_visibility(&vq);
+    let answer = wai_localize::Localizer::new(&corridor).localize(&view);
+    let loc_path = out.join("corridor-niches-localize.svg");
+    write_file(
+        &loc_path,
+        &crate::localize::answers_svg(&corridor, &view, &answer),
+    )?;
+    println!(
+        "localize the view from (5, -3.5) on corridor-niches k=6: {} positions: {}",
+        answer.placements.len(),
+        answer
+            .placements
+            .iter()
+            .map(|a| crate::vis::show(&corridor, &a.position))
+            .collect::<Vec<_>>()
+            .join(", ")
+    );
+    println!("wrote {}", loc_path.display());
+    println!("(`wai vis MAP --at x,y` for any viewpoint, `wai decompose MAP` for any map, `wai localize MAP --at x,y | --polygon V.json` for any view)");
     Ok(())
 }
 

@@ -136,6 +136,42 @@ fn pt_json(map: &Map, p: &RatPoint) -> Value {
     Value::Array(vec![c(p.hx()), c(p.hy())])
 }
 
+/// The map, the polygon placed at every answer and the answers.
+pub(crate) fn answers_svg(map: &Map, view: &RobotView, answer: &wai_localize::Answer) -> String {
+    let mut c = Canvas::for_map(map, 800.0);
+    c.polygon(map.vertices(), "#eef3fb", "#1f3b73", 1.5);
+    for a in &answer.placements {
+        c.polygon_rat(
+            &view.placed_at(&a.position),
+            "rgba(255,165,0,0.25)",
+            "#d95f02",
+            1.0,
+        );
+    }
+    for a in &answer.placements {
+        c.dot_rat(
+            &a.position,
+            5.0,
+            "#d62728",
+            &format!(
+                "{} via map vertex {}",
+                show(map, &a.position),
+                a.origin_vertex
+            ),
+        );
+    }
+    let caption = format!(
+        "{} answers{}",
+        answer.placements.len(),
+        answer
+            .nowhere
+            .as_ref()
+            .map(|w| format!(": {w}"))
+            .unwrap_or_default()
+    );
+    c.finish(map.name().unwrap_or("localize"), &caption)
+}
+
 pub struct Options<'a> {
     pub at: Option<&'a str>,
     pub polygon: Option<&'a Path>,
@@ -168,39 +204,8 @@ pub fn localize(path: &Path, opts: &Options<'_>, format: Format) -> Result<(), F
     };
     let answer = loc.localize(&view);
     if let Some(out) = opts.svg {
-        let mut c = Canvas::for_map(map, 800.0);
-        c.polygon(map.vertices(), "#eef3fb", "#1f3b73", 1.5);
-        for a in &answer.placements {
-            c.polygon_rat(
-                &view.placed_at(&a.position),
-                "rgba(255,165,0,0.25)",
-                "#d95f02",
-                1.0,
-            );
-        }
-        for a in &answer.placements {
-            c.dot_rat(
-                &a.position,
-                5.0,
-                "#d62728",
-                &format!(
-                    "{} via map vertex {}",
-                    show(map, &a.position),
-                    a.origin_vertex
-                ),
-            );
-        }
-        let caption = format!(
-            "{} answers{}",
-            answer.placements.len(),
-            answer
-                .nowhere
-                .as_ref()
-                .map(|w| format!(": {w}"))
-                .unwrap_or_default()
-        );
-        let svg = c.finish(map.name().unwrap_or("localize"), &caption);
-        std::fs::write(out, svg).map_err(|e| Failure::io(format!("{}: {e}", out.display())))?;
+        std::fs::write(out, answers_svg(map, &view, &answer))
+            .map_err(|e| Failure::io(format!("{}: {e}", out.display())))?;
     }
     if opts.json {
         let answers: Vec<Value> = answer

@@ -95,16 +95,6 @@ fn half(p: &RatPoint) -> u8 {
     }
 }
 
-/// Whether the direction of `b` comes strictly before that of `a` in
-/// [0, 2π), for `a`, `b` not on one ray.
-fn angle_less(b: &RatPoint, a: &RatPoint) -> bool {
-    match half(b).cmp(&half(a)) {
-        Ordering::Less => true,
-        Ordering::Greater => false,
-        Ordering::Equal => cross(b, a) == Ordering::Greater,
-    }
-}
-
 fn sub(a: &RatPoint, b: &RatPoint) -> RatPoint {
     let (aw, bw) = (a.hw(), b.hw());
     RatPoint::new(
@@ -141,8 +131,8 @@ impl RobotView {
     /// Check and normalise V, its vertices in map units relative to the
     /// robot. A clockwise polygon is reversed and 180° vertices are dropped;
     /// both are recorded in [`RobotView::notes`].
-    pub fn new(mut v: Vec<RatPoint>) -> Result<RobotView, ViewError> {
-        let mut notes = Vec::new();
+    pub fn new(v: Vec<RatPoint>) -> Result<RobotView, ViewError> {
+        let notes = Vec::new();
         if v.len() < 3 {
             return Err(ViewError::TooFew(v.len()));
         }
@@ -156,37 +146,36 @@ impl RobotView {
                 return Err(ViewError::Repeated(i, (i + 1) % m));
             }
         }
-        // The sign of twice the signed area, for the orientation.
-        let area = {
-            let mut s = rug::Rational::new();
-            for i in 0..m {
-                let (a, b) = (&v[i], &v[(i + 1) % m]);
-                let num = Integer::from(a.hx() * b.hy()) - Integer::from(a.hy() * b.hx());
-                s += rug::Rational::from((num, Integer::from(a.hw() * b.hw())));
+        let mut view = RobotView::build(v, notes);
+        // Orientation: a counter-clockwise star-shaped polygon turns
+        // counter-clockwise around the robot (or runs along a ray) at every
+        // edge; a clockwise one the other way. Mixed turns are refused below.
+        let mut turns: Vec<Ordering> = (0..m).map(|i| view.cross_ij(i, (i + 1) % m)).collect();
+        if turns.iter().all(|t| *t == Ordering::Equal) {
+            return Err(ViewError::Degenerate);
+        }
+        if !turns.contains(&Ordering::Greater) {
+            view.vertices.reverse();
+            if let Some(f) = &mut view.fast {
+                f.reverse();
             }
-            s.cmp0()
-        };
-        match area {
-            Ordering::Equal => return Err(ViewError::Degenerate),
-            Ordering::Less => {
-                v.reverse();
-                notes.push("the polygon was clockwise; reversed".to_string());
-            }
-            Ordering::Greater => {}
+            view.notes
+                .push("the polygon was clockwise; reversed".to_string());
+            turns = (0..m).map(|i| view.cross_ij(i, (i + 1) % m)).collect();
         }
         // Star-shaped from o, and radially monotone.
         let mut wraps = 0usize;
-        for i in 0..m {
+        for (i, turn) in turns.iter().enumerate() {
             let j = (i + 1) % m;
-            match cross(&v[i], &v[j]) {
+            match turn {
                 Ordering::Less => return Err(ViewError::NotStarShaped(i, j)),
                 Ordering::Equal => {
-                    if dot(&v[i], &v[j]) != Ordering::Greater {
+                    if view.dot_ij(i, j) != Ordering::Greater {
                         return Err(ViewError::ThroughRobot(i, j));
                     }
                 }
                 Ordering::Greater => {
-                    if angle_less(&v[j], &v[i]) {
+                    if view.angle_before(j, i) {
                         wraps += 1;
                     }
                 }
@@ -198,10 +187,11 @@ impl RobotView {
         // Consecutive radial edges: a reversal is a spike; the same
         // direction is a 180° vertex. Consecutive collinear sweeping edges
         // are 180° vertices too.
+        let v = &view.vertices;
         let mut keep = vec![true; m];
         for i in 0..m {
             let (h, j) = ((i + m - 1) % m, (i + 1) % m);
-            if orientation_rat(&v[h], &v[i], &v[j]) == Orientation::Collinear {
+            if view.orient(h, i, j) == Orientation::Collinear {
                 let back = dot(&sub(&v[i], &v[h]), &sub(&v[j], &v[i])) != Ordering::Greater;
                 if back {
                     return Err(ViewError::Spike(h, i));
@@ -210,17 +200,23 @@ impl RobotView {
             }
         }
         let dropped = keep.iter().filter(|k| !**k).count();
-        if dropped > 0 {
-            notes.push(format!(
-                "{dropped} vertices with a straight (180°) angle removed"
-            ));
-            v = v
-                .into_iter()
-                .zip(&keep)
-                .filter(|(_, k)| **k)
-                .map(|(p, _)| p)
-                .collect();
+        if dropped == 0 {
+            return Ok(view);
         }
+        let RobotView {
+            vertices,
+            mut notes,
+            ..
+        } = view;
+        notes.push(format!(
+            "{dropped} vertices with a straight (180°) angle removed"
+        ));
+        let v = vertices
+            .into_iter()
+            .zip(&keep)
+            .filter(|(_, k)| **k)
+            .map(|(p, _)| p)
+            .collect();
         Ok(RobotView::build(v, notes))
     }
 
@@ -242,6 +238,26 @@ impl RobotView {
         match &self.fast {
             Some(f) => cmp_products(f[i][0], f[j][1], f[i][1], f[j][0]),
             None => cross(&self.vertices[i], &self.vertices[j]),
+        }
+    }
+
+    /// The sign of v_i · v_j.
+    fn dot_ij(&self, i: usize, j: usize) -> Ordering {
+        match &self.fast {
+            // Coordinates below 2^126: the negation is safe.
+            Some(f) => cmp_products(f[i][0], f[j][0], -f[i][1], f[j][1]),
+            None => dot(&self.vertices[i], &self.vertices[j]),
+        }
+    }
+
+    /// Whether the direction of v_b comes strictly before that of v_a in
+    /// [0, 2π), for v_a, v_b not on one ray.
+    fn angle_before(&self, b: usize, a: usize) -> bool {
+        let (pb, pa) = (&self.vertices[b], &self.vertices[a]);
+        match half(pb).cmp(&half(pa)) {
+            Ordering::Less => true,
+            Ordering::Greater => false,
+            Ordering::Equal => self.cross_ij(b, a) == Ordering::Greater,
         }
     }
 
@@ -334,8 +350,13 @@ impl RobotView {
                 if let (Ok(nx), Ok(ny), Ok(den)) =
                     (i64::try_from(nx), i64::try_from(ny), i64::try_from(den))
                 {
-                    return (nx % den == 0 && ny % den == 0)
-                        .then(|| (i128::from(nx / den), i128::from(ny / den)));
+                    if den == 1 {
+                        return Some((i128::from(nx), i128::from(ny)));
+                    }
+                    // One division each, checked by a product.
+                    let (qx, qy) = (nx / den, ny / den);
+                    return (qx * den == nx && qy * den == ny)
+                        .then(|| (i128::from(qx), i128::from(qy)));
                 }
                 return (nx % den == 0 && ny % den == 0).then(|| (nx / den, ny / den));
             }

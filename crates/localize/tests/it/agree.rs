@@ -18,6 +18,8 @@ pub struct Tally {
     pub answers: usize,
     pub max_answers: usize,
     pub on_lower: usize,
+    /// Placements the one-shot oracle decided by computing V_q.
+    pub one_shot_degenerate: usize,
 }
 
 /// Viewpoints: every cell's representative, every lower cell's, and
@@ -96,6 +98,14 @@ pub fn check_map(map: &Map, random: usize, seed: u64) -> Tally {
             "{:?}: localizer and brute force at {p}",
             map.name()
         );
+        let (one_shot, degenerate) = oracle::one_shot(&index, &view);
+        assert_eq!(
+            positions,
+            one_shot,
+            "{:?}: localizer and one-shot at {p}",
+            map.name()
+        );
+        t.one_shot_degenerate += degenerate;
         // Fast and exact point location agree where the fast one answers.
         let k = answer.class.expect("class");
         let o = loc.overlay(k);
@@ -135,6 +145,7 @@ fn localizer_agrees_with_brute_force_on_every_cell_and_random_points() {
         total.answers += t.answers;
         total.max_answers = total.max_answers.max(t.max_answers);
         total.on_lower += t.on_lower;
+        total.one_shot_degenerate += t.one_shot_degenerate;
     }
     eprintln!("{total:?}");
     assert!(total.queries > 1000);
@@ -237,6 +248,12 @@ fn rebuilt_skeletons_around_the_wrong_point_answer_as_the_brute_force() {
                     );
                 }
                 let answer = loc.localize(&view);
+                assert_eq!(
+                    answer.positions(),
+                    oracle::one_shot(&index, &view).0,
+                    "{:?}: one-shot, skeleton of cell {c1} around cell {c2}",
+                    map.name()
+                );
                 assert_eq!(
                     answer.positions(),
                     oracle::brute_force(&index, &view),
