@@ -14,19 +14,7 @@ use wai_embed::Embedder;
 use wai_visibility::VisibilityIndex;
 
 fn bench(c: &mut Criterion) {
-    let maps = [
-        ("banana", "n=76,r=54", wai_benches::maps::banana(20, 56)),
-        (
-            "random-orthogonal",
-            "n=76",
-            wai_gen::random("random-orthogonal", 76, 1).unwrap(),
-        ),
-        (
-            "corridor-niches",
-            "k=16",
-            wai_gen::family("corridor-niches", &[16]).unwrap(),
-        ),
-    ];
+    let maps = wai_benches::maps::thesis_size();
     let mut g = c.benchmark_group("embed");
     g.sample_size(10).measurement_time(Duration::from_secs(5));
     for (name, param, map) in &maps {

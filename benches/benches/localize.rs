@@ -10,10 +10,7 @@
 static ALLOCATOR: mimalloc::MiMalloc = mimalloc::MiMalloc;
 
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion, Throughput};
-use rand::{Rng, SeedableRng};
-use rand_chacha::ChaCha8Rng;
 use std::time::Duration;
-use wai_exact::{Containment, RatPoint};
 use wai_localize::{oracle, Localizer, RobotView};
 use wai_map::Map;
 use wai_visibility::VisibilityIndex;
@@ -21,45 +18,19 @@ use wai_visibility::VisibilityIndex;
 /// `count` views from random points with denominators up to 8.
 fn views(map: &Map, count: usize, seed: u64) -> Vec<RobotView> {
     let index = VisibilityIndex::new(map);
-    let (lo, hi) = map.bounding_box();
-    let mut rng = ChaCha8Rng::seed_from_u64(seed);
-    let mut out = Vec::new();
-    while out.len() < count {
-        let w: i128 = rng.random_range(1..=8);
-        let p = RatPoint::from_i128(
-            rng.random_range(lo.x * w..=hi.x * w),
-            rng.random_range(lo.y * w..=hi.y * w),
-            w,
-        )
-        .expect("w > 0");
-        if wai_exact::locate_rat(map.vertices(), &p) == Containment::Inside {
-            out.push(RobotView::from_visibility(
-                &index.visibility_polygon(&p).expect("inside"),
-            ));
-        }
-    }
-    out
+    wai_benches::viewpoints::small_denominator_points(map, count, seed)
+        .iter()
+        .map(|p| RobotView::from_visibility(&index.visibility_polygon(p).expect("inside")))
+        .collect()
 }
 
 fn bench(c: &mut Criterion) {
-    let maps = [
-        ("banana", "n=76,r=54", wai_benches::maps::banana(20, 56)),
-        (
-            "random-orthogonal",
-            "n=76",
-            wai_gen::random("random-orthogonal", 76, 1).unwrap(),
-        ),
-        (
-            "corridor-niches",
-            "k=16",
-            wai_gen::family("corridor-niches", &[16]).unwrap(),
-        ),
-        (
-            "random-orthogonal",
-            "n=500",
-            wai_gen::random("random-orthogonal", 500, 1).unwrap(),
-        ),
-    ];
+    let mut maps = wai_benches::maps::thesis_size();
+    maps.push((
+        "random-orthogonal",
+        "n=500",
+        wai_gen::random("random-orthogonal", 500, 1).unwrap(),
+    ));
     let mut g = c.benchmark_group("localize");
     g.sample_size(10).measurement_time(Duration::from_secs(5));
     for (name, param, map) in &maps {

@@ -28,3 +28,22 @@ pub fn banana(lower: i128, upper: i128) -> Map {
         .0
         .with_name(format!("banana-{lower}-{upper}"))
 }
+
+/// The maps the embed and localize benches share, as (name, parameter,
+/// map): the thesis-size banana (n = 76, r = 54), a random orthogonal map
+/// of the same n, and corridor-niches k = 16 (repeated identical rooms).
+pub fn thesis_size() -> Vec<(&'static str, &'static str, Map)> {
+    vec![
+        ("banana", "n=76,r=54", banana(20, 56)),
+        (
+            "random-orthogonal",
+            "n=76",
+            wai_gen::random("random-orthogonal", 76, 1).expect("a kind"),
+        ),
+        (
+            "corridor-niches",
+            "k=16",
+            wai_gen::family("corridor-niches", &[16]).expect("a family"),
+        ),
+    ]
+}

@@ -63,3 +63,28 @@ pub fn near_vertices(map: &Map) -> Vec<RatPoint> {
         })
         .collect()
 }
+
+/// Up to `count` points strictly inside `map` with random denominators
+/// from 1 to 8 (a robot's position as a user would give it), drawn from
+/// the bounding box with a seeded generator; fewer if 100 draws per point
+/// do not find them (a map much thinner than its box).
+pub fn small_denominator_points(map: &Map, count: usize, seed: u64) -> Vec<RatPoint> {
+    let mut rng = ChaCha8Rng::seed_from_u64(seed);
+    let (lo, hi) = map.bounding_box();
+    let mut out = Vec::new();
+    let mut tries = 0;
+    while out.len() < count && tries < 100 * count {
+        tries += 1;
+        let w: i128 = rng.random_range(1..=8);
+        let p = RatPoint::from_i128(
+            rng.random_range(lo.x * w..=hi.x * w),
+            rng.random_range(lo.y * w..=hi.y * w),
+            w,
+        )
+        .expect("w > 0");
+        if locate_rat(map.vertices(), &p) == Containment::Inside {
+            out.push(p);
+        }
+    }
+    out
+}

@@ -17,13 +17,11 @@
 #[global_allocator]
 static ALLOCATOR: mimalloc::MiMalloc = mimalloc::MiMalloc;
 
-use rand::{Rng, SeedableRng};
-use rand_chacha::ChaCha8Rng;
 use rayon::prelude::*;
 use std::collections::BTreeMap;
 use std::sync::atomic::{AtomicUsize, Ordering};
 use wai_cells::Decomposition;
-use wai_exact::{Containment, RatPoint};
+use wai_exact::RatPoint;
 use wai_localize::{oracle, Localizer, RobotView};
 use wai_map::Map;
 use wai_visibility::{Skeleton, VisibilityIndex};
@@ -85,25 +83,11 @@ fn viewpoints(
             .step_by(step)
             .map(|c| (2 - c.dimension(), d.lower_representative(c))),
     );
-    let map = d.map();
-    let (lo, hi) = map.bounding_box();
-    let mut rng = ChaCha8Rng::seed_from_u64(seed);
-    let mut tries = 0;
-    let mut added = 0;
-    while added < points && tries < 100 * points {
-        tries += 1;
-        let w: i128 = rng.random_range(1..=8);
-        let p = RatPoint::from_i128(
-            rng.random_range(lo.x * w..=hi.x * w),
-            rng.random_range(lo.y * w..=hi.y * w),
-            w,
-        )
-        .expect("w > 0");
-        if wai_exact::locate_rat(map.vertices(), &p) == Containment::Inside {
-            out.push((3, p));
-            added += 1;
-        }
-    }
+    out.extend(
+        wai_benches::viewpoints::small_denominator_points(d.map(), points, seed)
+            .into_iter()
+            .map(|p| (3, p)),
+    );
     out
 }
 

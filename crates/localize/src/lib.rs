@@ -32,3 +32,15 @@ pub fn cmp_points(a: &RatPoint, b: &RatPoint) -> Ordering {
     let x = (Integer::from(a.hx() * b.hw()) - Integer::from(b.hx() * a.hw())).cmp0();
     x.then_with(|| (Integer::from(a.hy() * b.hw()) - Integer::from(b.hy() * a.hw())).cmp0())
 }
+
+/// a − b, exactly.
+pub(crate) fn sub(a: &RatPoint, b: &RatPoint) -> RatPoint {
+    use rug::Integer;
+    let (aw, bw) = (a.hw(), b.hw());
+    RatPoint::new(
+        Integer::from(a.hx() * bw) - Integer::from(b.hx() * aw),
+        Integer::from(a.hy() * bw) - Integer::from(b.hy() * aw),
+        Integer::from(aw * bw),
+    )
+    .expect("positive denominators")
+}

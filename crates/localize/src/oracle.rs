@@ -14,6 +14,7 @@
 //! placed there (Guibas et al.'s one-shot query), without a visibility
 //! polygon except in degenerate placements.
 
+use crate::sub;
 use crate::view::RobotView;
 use rug::Integer;
 use std::cmp::Ordering;
@@ -267,16 +268,6 @@ pub fn one_shot(index: &VisibilityIndex<'_>, v: &RobotView) -> (Vec<RatPoint>, u
     }
     found.sort_by(crate::cmp_points);
     (found, degenerate)
-}
-
-fn sub(a: &RatPoint, b: &RatPoint) -> RatPoint {
-    let (aw, bw) = (a.hw(), b.hw());
-    RatPoint::new(
-        Integer::from(a.hx() * bw) - Integer::from(b.hx() * aw),
-        Integer::from(a.hy() * bw) - Integer::from(b.hy() * aw),
-        Integer::from(aw * bw),
-    )
-    .expect("positive denominators")
 }
 
 fn add_point(p: &RatPoint, o: Point) -> RatPoint {

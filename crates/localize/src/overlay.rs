@@ -19,6 +19,7 @@
 //! compare both paths.
 
 use crate::fast::cmp_products;
+use crate::sub;
 use rug::{Integer, Rational};
 use std::cmp::Ordering;
 use std::collections::HashMap;
@@ -119,16 +120,6 @@ type FastParts = (Vec<(i128, i128)>, Vec<[i128; 3]>);
 
 fn x_of(p: &RatPoint) -> Rational {
     Rational::from((p.hx().clone(), p.hw().clone()))
-}
-
-fn sub(a: &RatPoint, b: &RatPoint) -> RatPoint {
-    let (aw, bw) = (a.hw(), b.hw());
-    RatPoint::new(
-        Integer::from(a.hx() * bw) - Integer::from(b.hx() * aw),
-        Integer::from(a.hy() * bw) - Integer::from(b.hy() * aw),
-        Integer::from(aw * bw),
-    )
-    .expect("positive denominators")
 }
 
 fn dot_sign(a: &RatPoint, b: &RatPoint) -> Ordering {

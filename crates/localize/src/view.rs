@@ -10,6 +10,7 @@
 //! with the map-side skeleton of the same viewpoint.
 
 use crate::fast::{cmp_products, det2};
+use crate::sub;
 use rug::Integer;
 use std::cmp::Ordering;
 use wai_exact::{orientation_rat, Orientation, RatPoint};
@@ -95,16 +96,6 @@ fn half(p: &RatPoint) -> u8 {
     }
 }
 
-fn sub(a: &RatPoint, b: &RatPoint) -> RatPoint {
-    let (aw, bw) = (a.hw(), b.hw());
-    RatPoint::new(
-        Integer::from(a.hx() * bw) - Integer::from(b.hx() * aw),
-        Integer::from(a.hy() * bw) - Integer::from(b.hy() * aw),
-        Integer::from(aw * bw),
-    )
-    .expect("positive denominators")
-}
-
 fn neg(a: &RatPoint) -> RatPoint {
     RatPoint::new(-a.hx().clone(), -a.hy().clone(), a.hw().clone()).expect("w > 0")
 }
@@ -116,15 +107,9 @@ pub(crate) fn label_through(p: &RatPoint, q: &RatPoint, o: &RatPoint) -> LineLab
     // The homogeneous line p × q: A·x + B·y + C·w = 0.
     let a = Integer::from(p.hy() * q.hw()) - Integer::from(p.hw() * q.hy());
     let b = Integer::from(p.hw() * q.hx()) - Integer::from(p.hx() * q.hw());
+    // a·x + b·y = c with c = −C.
     let c = Integer::from(p.hy() * q.hx()) - Integer::from(p.hx() * q.hy());
-    let g = Integer::from(a.gcd_ref(&b)).gcd(&c);
-    let (mut a, mut b, mut c) = (a / &g, b / &g, c / &g);
-    if a < 0 || (a == 0 && b < 0) {
-        a = -a;
-        b = -b;
-        c = -c;
-    }
-    LineLabel { a, b, c }
+    LineLabel::normalized(a, b, c)
 }
 
 impl RobotView {

@@ -23,6 +23,13 @@ impl LineLabel {
         let a = Integer::from(q.y) - p.y;
         let b = Integer::from(p.x) - q.x;
         let c = Integer::from(&a * (p.x - origin.x)) + Integer::from(&b * (p.y - origin.y));
+        LineLabel::normalized(a, b, c)
+    }
+
+    /// The label of the line `a·x + b·y = c` (a, b not both 0): divided by
+    /// the gcd of the three, with the sign that makes `a > 0`, or `a = 0`
+    /// and `b > 0`.
+    pub fn normalized(a: Integer, b: Integer, c: Integer) -> LineLabel {
         let g = Integer::from(a.gcd_ref(&b)).gcd(&c);
         let (mut a, mut b, mut c) = (a / &g, b / &g, c / &g);
         if a < 0 || (a == 0 && b < 0) {

@@ -3,7 +3,7 @@
 //! polygons.
 
 use super::{text, wai};
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 use wai_cells::Decomposition;
 use wai_localize::{Localizer, RobotView};
 use wai_visibility::VisibilityIndex;
@@ -12,6 +12,26 @@ fn tmp(name: &str) -> PathBuf {
     let d = std::env::temp_dir().join(format!("wai-cli-localize-{}", std::process::id()));
     std::fs::create_dir_all(&d).unwrap();
     d.join(name)
+}
+
+/// corridor-niches with `k` niches, written to a temporary file.
+fn niches_file(name: &str, k: u32) -> PathBuf {
+    let file = tmp(name);
+    let map = wai_gen::family("corridor-niches", &[k]).unwrap();
+    std::fs::write(&file, wai_map::json::to_json(&map)).unwrap();
+    file
+}
+
+/// `wai localize MAP --polygon POLY` and `extra` arguments.
+fn localize_polygon(map: &Path, poly: &Path, extra: &[&str]) -> std::process::Output {
+    let mut args = vec![
+        "localize",
+        map.to_str().unwrap(),
+        "--polygon",
+        poly.to_str().unwrap(),
+    ];
+    args.extend_from_slice(extra);
+    wai(&args, b"")
 }
 
 fn json(out: &std::process::Output) -> serde_json::Value {
@@ -84,21 +104,10 @@ fn repeated_rooms_answer_with_every_room_also_from_a_preprocessed_file() {
 
 #[test]
 fn a_polygon_nothing_sees_gets_the_empty_answer_and_the_reason() {
-    let map = wai_gen::family("corridor-niches", &[2]).unwrap();
-    let file = tmp("niches2.json");
-    std::fs::write(&file, wai_map::json::to_json(&map)).unwrap();
+    let file = niches_file("niches2.json", 2);
     let poly = tmp("square.json");
     std::fs::write(&poly, r#"[["-1","-1"],["1","-1"],["1","1"],["-1","1"]]"#).unwrap();
-    let out = wai(
-        &[
-            "localize",
-            file.to_str().unwrap(),
-            "--polygon",
-            poly.to_str().unwrap(),
-            "--json",
-        ],
-        b"",
-    );
+    let out = localize_polygon(&file, &poly, &["--json"]);
     let v = json(&out);
     assert_eq!(v["answers"].as_array().unwrap().len(), 0);
     assert!(
@@ -108,15 +117,7 @@ fn a_polygon_nothing_sees_gets_the_empty_answer_and_the_reason() {
             .contains("no cell of the map has"),
         "{v}"
     );
-    let out = wai(
-        &[
-            "localize",
-            file.to_str().unwrap(),
-            "--polygon",
-            poly.to_str().unwrap(),
-        ],
-        b"",
-    );
+    let out = localize_polygon(&file, &poly, &[]);
     assert!(
         text(&out.stdout).starts_with("no position: "),
         "{}",
@@ -126,9 +127,7 @@ fn a_polygon_nothing_sees_gets_the_empty_answer_and_the_reason() {
 
 #[test]
 fn bad_polygons_get_a_clear_error_and_a_nonzero_exit() {
-    let map = wai_gen::family("corridor-niches", &[2]).unwrap();
-    let file = tmp("niches3.json");
-    std::fs::write(&file, wai_map::json::to_json(&map)).unwrap();
+    let file = niches_file("niches3.json", 2);
     let cases: [(&str, &str, &str); 5] = [
         (
             "c.json",
@@ -155,15 +154,7 @@ fn bad_polygons_get_a_clear_error_and_a_nonzero_exit() {
     for (name, body, needle) in cases {
         let poly = tmp(name);
         std::fs::write(&poly, body).unwrap();
-        let out = wai(
-            &[
-                "localize",
-                file.to_str().unwrap(),
-                "--polygon",
-                poly.to_str().unwrap(),
-            ],
-            b"",
-        );
+        let out = localize_polygon(&file, &poly, &[]);
         let err = text(&out.stderr);
         assert_eq!(out.status.code(), Some(1), "{name}: {err}");
         assert!(err.contains(needle), "{name}: {err}");
