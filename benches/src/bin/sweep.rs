@@ -1,7 +1,9 @@
 //! The scaling sweep: grow each thesis family and random and orthogonal
 //! maps, decompose each exactly, and write CSV plus SVG plots — cells
-//! against r, max |EC| against n + r², decomposition time against N — with
-//! fitted log–log slopes, the commit and the date on every plot.
+//! against r, max |EC| against n + r², decomposition time against N, the
+//! localizer's overlay time and size against N(n + r²) and its median
+//! query time against m and A — with fitted log–log slopes, the commit and
+//! the date on every plot.
 //!
 //! `cargo run --release -p wai-benches --bin sweep -- [--out DIR] [--quick]`
 
@@ -19,7 +21,9 @@ use std::io::Write;
 use std::path::PathBuf;
 use std::time::Instant;
 use wai_cells::Decomposition;
+use wai_localize::{Localizer, RobotView};
 use wai_map::Map;
+use wai_visibility::VisibilityIndex;
 
 /// One decomposed map.
 struct Row {
@@ -34,6 +38,47 @@ struct Row {
     max_ec: usize,
     largest_class_cells: usize,
     seconds: f64,
+    /// The localizer's overlays (Alg 3.14 steps 18–23), after the
+    /// decomposition: seconds, and size (cells placed plus trapezoid label
+    /// entries, the structure's memory in units).
+    overlay_seconds: f64,
+    overlay_size: usize,
+    /// Median query time (Alg 3.13) over random views, microseconds; the
+    /// views' mean vertex count m and mean answer count A.
+    query_us: f64,
+    mean_m: f64,
+    mean_a: f64,
+}
+
+/// Views from `count` random points (denominators 1 to 8) and the median
+/// over them of the mean time of `reps` queries, with the mean m and A.
+fn query_times(map: &Map, loc: &Localizer, count: usize, reps: u32) -> (f64, f64, f64) {
+    let index = VisibilityIndex::new(map);
+    let views: Vec<RobotView> = wai_benches::viewpoints::small_denominator_points(map, count, 1)
+        .iter()
+        .filter_map(|p| index.visibility_polygon(p).ok())
+        .map(|vp| RobotView::from_visibility(&vp))
+        .collect();
+    if views.is_empty() {
+        return (0.0, 0.0, 0.0);
+    }
+    let mut times: Vec<f64> = Vec::with_capacity(views.len());
+    let mut answers = 0usize;
+    for v in &views {
+        let t = Instant::now();
+        for _ in 0..reps {
+            answers += std::hint::black_box(loc.localize(v)).placements.len();
+        }
+        times.push(t.elapsed().as_secs_f64() * 1e6 / f64::from(reps));
+    }
+    times.sort_by(f64::total_cmp);
+    let k = views.len() as f64;
+    let m = views.iter().map(|v| v.vertices().len()).sum::<usize>() as f64 / k;
+    (
+        times[times.len() / 2],
+        m,
+        answers as f64 / (k * f64::from(reps)),
+    )
 }
 
 fn series(quick: bool) -> Vec<(String, Vec<(u32, Map)>)> {
@@ -238,6 +283,21 @@ fn main() {
             let d = Decomposition::new(map);
             let seconds = t.elapsed().as_secs_f64();
             let c = d.counts();
+            let t = Instant::now();
+            let loc = Localizer::from_decomposition(&d);
+            let overlay_seconds = t.elapsed().as_secs_f64();
+            let overlay_size = (0..loc.classes())
+                .map(|k| {
+                    let o = loc.overlay(k);
+                    o.items.len()
+                        + o.slabs
+                            .iter()
+                            .flat_map(|s| &s.labels)
+                            .map(Vec::len)
+                            .sum::<usize>()
+                })
+                .sum();
+            let (query_us, mean_m, mean_a) = query_times(map, &loc, 50, 20);
             rows.push(Row {
                 series: name.clone(),
                 param: *param,
@@ -250,17 +310,22 @@ fn main() {
                 max_ec: c.max_class_complexity,
                 largest_class_cells: d.classes().iter().map(Vec::len).max().unwrap_or(0),
                 seconds,
+                overlay_seconds,
+                overlay_size,
+                query_us,
+                mean_m,
+                mean_a,
             });
         }
     }
     eprintln!();
     let csv = out.join("sweep.csv");
     let mut f = std::fs::File::create(&csv).expect("csv file");
-    writeln!(f, "series,param,n,r,rays,cells,total_complexity,classes,max_class_complexity,largest_class_cells,seconds").unwrap();
+    writeln!(f, "series,param,n,r,rays,cells,total_complexity,classes,max_class_complexity,largest_class_cells,seconds,overlay_seconds,overlay_size,query_us,mean_m,mean_a").unwrap();
     for r in &rows {
         writeln!(
             f,
-            "{},{},{},{},{},{},{},{},{},{},{:.6}",
+            "{},{},{},{},{},{},{},{},{},{},{:.6},{:.6},{},{:.3},{:.1},{:.2}",
             r.series,
             r.param,
             r.n,
@@ -271,7 +336,12 @@ fn main() {
             r.classes,
             r.max_ec,
             r.largest_class_cells,
-            r.seconds
+            r.seconds,
+            r.overlay_seconds,
+            r.overlay_size,
+            r.query_us,
+            r.mean_m,
+            r.mean_a
         )
         .unwrap();
     }
@@ -323,6 +393,34 @@ fn main() {
             "N (total complexity)",
             "seconds",
             by(&|r: &Row| (r.total as f64, r.seconds)),
+        ),
+        (
+            "overlay_time_vs_bound.svg",
+            "localizer overlays: time against N(n + r²) (C5.18)",
+            "N(n + r²)",
+            "seconds",
+            by(&|r: &Row| ((r.total * (r.n + r.r * r.r)) as f64, r.overlay_seconds)),
+        ),
+        (
+            "overlay_size_vs_bound.svg",
+            "localizer overlays: cells placed + trapezoid labels against N(n + r²) (C5.18)",
+            "N(n + r²)",
+            "size (entries)",
+            by(&|r: &Row| ((r.total * (r.n + r.r * r.r)) as f64, r.overlay_size as f64)),
+        ),
+        (
+            "query_vs_m.svg",
+            "localization query: median time against the views' mean m (Thm 3.12: O(m + log n + A))",
+            "mean m (vertices of V)",
+            "median query µs",
+            by(&|r: &Row| (r.mean_m, r.query_us)),
+        ),
+        (
+            "query_vs_a.svg",
+            "localization query: median time against the mean answer count A",
+            "mean A",
+            "median query µs",
+            by(&|r: &Row| (r.mean_a, r.query_us)),
         ),
     ];
     println!("wrote {}", csv.display());
