@@ -12,17 +12,7 @@ static ALLOCATOR: mimalloc::MiMalloc = mimalloc::MiMalloc;
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion, Throughput};
 use std::time::Duration;
 use wai_localize::{oracle, Localizer, RobotView};
-use wai_map::Map;
 use wai_visibility::VisibilityIndex;
-
-/// `count` views from random points with denominators up to 8.
-fn views(map: &Map, count: usize, seed: u64) -> Vec<RobotView> {
-    let index = VisibilityIndex::new(map);
-    wai_benches::viewpoints::small_denominator_points(map, count, seed)
-        .iter()
-        .map(|p| RobotView::from_visibility(&index.visibility_polygon(p).expect("inside")))
-        .collect()
-}
 
 fn bench(c: &mut Criterion) {
     let mut maps = wai_benches::maps::thesis_size();
@@ -36,11 +26,8 @@ fn bench(c: &mut Criterion) {
     for (name, param, map) in &maps {
         let id = format!("{name}/{param}");
         let loc = Localizer::new(map);
-        let items: usize = (0..loc.classes()).map(|k| loc.overlay(k).items.len()).sum();
-        let traps: usize = (0..loc.classes())
-            .map(|k| loc.overlay(k).trapezoids())
-            .sum();
-        let vs = views(map, 200, 1);
+        let (items, traps) = (loc.cells(), loc.trapezoids());
+        let vs = wai_benches::viewpoints::robot_views(map, 200, 1);
         let m: usize = vs.iter().map(|v| v.vertices().len()).sum::<usize>() / vs.len();
         let a: usize = vs.iter().map(|v| loc.localize(v).placements.len()).sum();
         eprintln!(

@@ -88,3 +88,17 @@ pub fn small_denominator_points(map: &Map, count: usize, seed: u64) -> Vec<RatPo
     }
     out
 }
+
+/// What the robot sees from [`small_denominator_points`]: V_p relative to
+/// p, the localizer's input.
+pub fn robot_views(map: &Map, count: usize, seed: u64) -> Vec<wai_localize::RobotView> {
+    let index = wai_visibility::VisibilityIndex::new(map);
+    small_denominator_points(map, count, seed)
+        .iter()
+        .map(|p| {
+            wai_localize::RobotView::from_visibility(
+                &index.visibility_polygon(p).expect("strictly inside"),
+            )
+        })
+        .collect()
+}

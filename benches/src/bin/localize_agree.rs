@@ -22,12 +22,12 @@ use std::collections::BTreeMap;
 use std::sync::atomic::{AtomicUsize, Ordering};
 use wai_cells::Decomposition;
 use wai_exact::RatPoint;
-use wai_localize::{oracle, Localizer, RobotView};
+use wai_localize::{oracle, Localizer};
 use wai_map::Map;
-use wai_visibility::{Skeleton, VisibilityIndex};
+use wai_visibility::VisibilityIndex;
 
 const USAGE: &str = "\
-localize_agree: the exact localizer against the brute-force oracle
+localize_agree: the exact localizer against the brute-force and one-shot oracles
 
 usage: localize_agree [--random N] [--cells K] [--points P] [--max-n N]
   --random N  seeded random maps beyond the corpus (default 2000): every
@@ -97,50 +97,18 @@ fn check(map: &Map, cells: usize, points: usize, seed: u64) -> Result<Tally, Str
     let index = VisibilityIndex::new(map);
     let mut t = Tally::default();
     for (kind, p) in viewpoints(&d, cells, points, seed) {
-        let fail = |what: String| {
+        let c = oracle::cross_check(&loc, &index, &p).map_err(|e| {
             format!(
-                "{}: at {p}: {what}\n{}",
+                "{}: at {p}: {e}\n{}",
                 map.name().unwrap_or("map"),
                 wai_map::json::to_json(map)
             )
-        };
-        let vp = index
-            .visibility_polygon(&p)
-            .map_err(|e| fail(e.to_string()))?;
-        let view = RobotView::from_visibility(&vp);
-        let sk = view.skeleton().map_err(|e| fail(e.to_string()))?;
-        let map_sk = Skeleton::of(map, &vp).map_err(|e| fail(e.to_string()))?;
-        if sk.key != map_sk.key() {
-            return Err(fail("V's skeleton differs from the map-side one".into()));
-        }
-        let answer = loc.localize(&view);
-        let positions = answer.positions();
-        if !positions.contains(&p) {
-            return Err(fail(format!(
-                "the answer misses the viewpoint: {:?}",
-                answer.nowhere
-            )));
-        }
-        let brute = oracle::brute_force(&index, &view);
-        if positions != brute {
-            return Err(fail(format!(
-                "localizer {} answers, brute force {}",
-                positions.len(),
-                brute.len()
-            )));
-        }
-        let (one_shot, degenerate) = oracle::one_shot(&index, &view);
-        if positions != one_shot {
-            return Err(fail(format!(
-                "localizer {} answers, one-shot {}",
-                positions.len(),
-                one_shot.len()
-            )));
-        }
-        t.one_shot_degenerate += degenerate;
+        })?;
+        let positions = c.answer.placements.len();
+        t.one_shot_degenerate += c.one_shot_degenerate;
         t.queries += 1;
         t.by_kind[kind as usize] += 1;
-        *t.answers.entry(positions.len()).or_default() += 1;
+        *t.answers.entry(positions).or_default() += 1;
     }
     Ok(t)
 }

@@ -21,9 +21,8 @@ use std::io::Write;
 use std::path::PathBuf;
 use std::time::Instant;
 use wai_cells::Decomposition;
-use wai_localize::{Localizer, RobotView};
+use wai_localize::Localizer;
 use wai_map::Map;
-use wai_visibility::VisibilityIndex;
 
 /// One decomposed map.
 struct Row {
@@ -53,12 +52,7 @@ struct Row {
 /// Views from `count` random points (denominators 1 to 8) and the median
 /// over them of the mean time of `reps` queries, with the mean m and A.
 fn query_times(map: &Map, loc: &Localizer, count: usize, reps: u32) -> (f64, f64, f64) {
-    let index = VisibilityIndex::new(map);
-    let views: Vec<RobotView> = wai_benches::viewpoints::small_denominator_points(map, count, 1)
-        .iter()
-        .filter_map(|p| index.visibility_polygon(p).ok())
-        .map(|vp| RobotView::from_visibility(&vp))
-        .collect();
+    let views = wai_benches::viewpoints::robot_views(map, count, 1);
     if views.is_empty() {
         return (0.0, 0.0, 0.0);
     }

@@ -68,16 +68,20 @@ fn looks_like_geojson(bytes: &[u8]) -> bool {
 
 /// Read and validate a map, printing normalisation notes on stderr.
 pub fn load(path: &Path, format: Format) -> Result<Loaded, Failure> {
-    let bytes = read_bytes(path)?;
+    load_bytes(path, &read_bytes(path)?, format)
+}
+
+/// [`load`] for bytes already read from `path` (named in messages).
+pub fn load_bytes(path: &Path, bytes: &[u8], format: Format) -> Result<Loaded, Failure> {
     let geo = match format {
-        Format::Auto => looks_like_geojson(&bytes),
+        Format::Auto => looks_like_geojson(bytes),
         Format::Json => false,
         Format::Geojson => true,
     };
     let parsed = if geo {
-        from_geojson(&bytes)
+        from_geojson(bytes)
     } else {
-        from_json(&bytes)
+        from_json(bytes)
     };
     let loaded = parsed.map_err(|errors| {
         let shown = path.display();

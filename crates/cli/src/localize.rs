@@ -1,7 +1,7 @@
 //! `wai preprocess` and `wai localize`: the exact reference localizer
 //! (Alg 3.14 and 3.13).
 
-use crate::input::{load, read_bytes, Format};
+use crate::input::{load, load_bytes, read_bytes, Format};
 use crate::vis::{parse_viewpoint, show};
 use crate::Failure;
 use rug::{Integer, Rational};
@@ -21,39 +21,34 @@ fn is_preprocessed(bytes: &[u8]) -> bool {
         .is_some_and(|f| f == wai_localize::file::FORMAT)
 }
 
-/// A localizer from a map file (preprocessed now) or a preprocessed file.
+/// A localizer from a map file (preprocessed now) or a preprocessed file,
+/// read once (standard input too).
 fn localizer(path: &Path, format: Format) -> Result<Localizer, Failure> {
     let bytes = read_bytes(path)?;
     if is_preprocessed(&bytes) {
         return wai_localize::file::from_json(&bytes)
             .map_err(|e| Failure::invalid(format!("{}: {e}", path.display())));
     }
-    let loaded = load(path, format)?;
-    eprintln!(
-        "preprocessing {} (n = {}, r = {}) …",
-        path.display(),
-        loaded.map.n(),
-        loaded.map.r()
-    );
-    Ok(Localizer::new(&loaded.map))
+    Ok(preprocessed(path, &load_bytes(path, &bytes, format)?.map))
 }
 
-pub fn preprocess(path: &Path, out: &Path, format: Format) -> Result<(), Failure> {
-    let loaded = load(path, format)?;
-    let map = &loaded.map;
+/// Alg 3.14 on `map`, read from `path`, saying so on stderr.
+fn preprocessed(path: &Path, map: &Map) -> Localizer {
     eprintln!(
         "preprocessing {} (n = {}, r = {}) …",
         path.display(),
         map.n(),
         map.r()
     );
-    let loc = Localizer::new(map);
+    Localizer::new(map)
+}
+
+pub fn preprocess(path: &Path, out: &Path, format: Format) -> Result<(), Failure> {
+    let loaded = load(path, format)?;
+    let loc = preprocessed(path, &loaded.map);
     let text = wai_localize::file::to_json(&loc);
     std::fs::write(out, &text).map_err(|e| Failure::io(format!("{}: {e}", out.display())))?;
-    let cells: usize = (0..loc.classes()).map(|k| loc.overlay(k).items.len()).sum();
-    let traps: usize = (0..loc.classes())
-        .map(|k| loc.overlay(k).trapezoids())
-        .sum();
+    let (cells, traps) = (loc.cells(), loc.trapezoids());
     println!(
         "{}: {} classes, {cells} cells of every dimension, {traps} trapezoids; {} bytes written to {}",
         path.display(),
@@ -71,22 +66,14 @@ fn read_polygon(path: &Path, map: &Map) -> Result<RobotView, Failure> {
     let bytes = read_bytes(path)?;
     let root: Value = serde_json::from_slice(&bytes)
         .map_err(|e| Failure::invalid(format!("{shown}: not JSON: {e}")))?;
-    let ring = match &root {
-        Value::Array(a) => a,
-        Value::Object(o) => match o.get("vertices") {
-            Some(Value::Array(a)) => a,
-            _ => {
-                return Err(Failure::invalid(format!(
-                    "{shown}: expected an array of [x, y] pairs or an object with \"vertices\""
-                )))
-            }
-        },
-        _ => {
-            return Err(Failure::invalid(format!(
+    let ring = root
+        .as_array()
+        .or_else(|| root.get("vertices").and_then(Value::as_array))
+        .ok_or_else(|| {
+            Failure::invalid(format!(
                 "{shown}: expected an array of [x, y] pairs or an object with \"vertices\""
-            )))
-        }
-    };
+            ))
+        })?;
     let mut pts = Vec::with_capacity(ring.len());
     for (i, v) in ring.iter().enumerate() {
         let pair = match v {

@@ -33,6 +33,40 @@ pub fn cmp_points(a: &RatPoint, b: &RatPoint) -> Ordering {
     x.then_with(|| (Integer::from(a.hy() * b.hw()) - Integer::from(b.hy() * a.hw())).cmp0())
 }
 
+/// `z` as an `i128` below 2^126 in magnitude (so that negation,
+/// `unsigned_abs` and the products of [`fast`] are safe), if it is one.
+pub(crate) fn small_i128(z: &rug::Integer) -> Option<i128> {
+    z.to_i128().filter(|c| c.unsigned_abs() < 1u128 << 126)
+}
+
+/// A rational point as a homogeneous `i128` triple, each coordinate
+/// [`small_i128`], if it is one.
+pub(crate) fn small_triple(p: &RatPoint) -> Option<[i128; 3]> {
+    Some([
+        small_i128(p.hx())?,
+        small_i128(p.hy())?,
+        small_i128(p.hw())?,
+    ])
+}
+
+/// The sign of a · b (position vectors).
+pub(crate) fn dot_sign(a: &RatPoint, b: &RatPoint) -> Ordering {
+    use rug::Integer;
+    (Integer::from(a.hx() * b.hx()) + Integer::from(a.hy() * b.hy())).cmp0()
+}
+
+/// p + o for an integer point o (`sign` 1) or p − o (`sign` −1), exactly.
+pub(crate) fn shifted(p: &RatPoint, o: wai_exact::Point, sign: i128) -> RatPoint {
+    use rug::Integer;
+    let w = p.hw();
+    RatPoint::new(
+        p.hx() + Integer::from(w * (sign * o.x)),
+        p.hy() + Integer::from(w * (sign * o.y)),
+        w.clone(),
+    )
+    .expect("w > 0")
+}
+
 /// a − b, exactly.
 pub(crate) fn sub(a: &RatPoint, b: &RatPoint) -> RatPoint {
     use rug::Integer;

@@ -1,11 +1,11 @@
 //! The preprocessed localizer (Alg 3.14) and its query (Alg 3.13).
 
 use crate::overlay::{CellSite, ClassOverlay, Item, Shape};
+use crate::shifted;
 use crate::view::{NoSkeleton, RobotView};
-use rug::Integer;
 use rustc_hash::FxHashMap;
 use wai_cells::{Decomposition, LowerSite};
-use wai_exact::{Point, RatPoint};
+use wai_exact::RatPoint;
 use wai_map::Map;
 use wai_visibility::SkeletonKey;
 
@@ -69,20 +69,6 @@ pub struct Localizer {
     pub(crate) overlays: Vec<ClassOverlay>,
 }
 
-fn translate(p: &RatPoint, o: Point) -> RatPoint {
-    let w = p.hw();
-    RatPoint::new(
-        p.hx() - Integer::from(w * o.x),
-        p.hy() - Integer::from(w * o.y),
-        w.clone(),
-    )
-    .expect("w > 0")
-}
-
-fn add(p: &RatPoint, o: Point) -> RatPoint {
-    translate(p, Point::new(-o.x, -o.y))
-}
-
 impl Localizer {
     /// Preprocess `map`: decompose it, then overlay each class.
     pub fn new(map: &Map) -> Localizer {
@@ -106,7 +92,7 @@ impl Localizer {
                     shape: Shape::Polygon(
                         arr.face_points(f)
                             .iter()
-                            .map(|p| translate(p, ov))
+                            .map(|p| shifted(p, ov, -1))
                             .collect(),
                     ),
                 });
@@ -116,10 +102,10 @@ impl Localizer {
             let ov = map.vertices()[c.origin];
             let shape = match c.site {
                 LowerSite::Edge(e) => Shape::Segment(
-                    translate(arr.point(arr.half_edge(2 * e).origin), ov),
-                    translate(arr.point(arr.dest(2 * e)), ov),
+                    shifted(arr.point(arr.half_edge(2 * e).origin), ov, -1),
+                    shifted(arr.point(arr.dest(2 * e)), ov, -1),
                 ),
-                LowerSite::Vertex(v) => Shape::Point(translate(arr.point(v), ov)),
+                LowerSite::Vertex(v) => Shape::Point(shifted(arr.point(v), ov, -1)),
             };
             items[c.class].push(Item {
                 origin: c.origin,
@@ -153,6 +139,16 @@ impl Localizer {
     /// The number of classes (Def 3.10).
     pub fn classes(&self) -> usize {
         self.keys.len()
+    }
+
+    /// Cells of every dimension placed in the overlays.
+    pub fn cells(&self) -> usize {
+        self.overlays.iter().map(|o| o.items.len()).sum()
+    }
+
+    /// Trapezoids over all overlays: the size of the point location.
+    pub fn trapezoids(&self) -> usize {
+        self.overlays.iter().map(ClassOverlay::trapezoids).sum()
     }
 
     /// The overlay of class `k`.
@@ -191,7 +187,7 @@ impl Localizer {
             .map(|&i| {
                 let it = &overlay.items[i as usize];
                 Placement {
-                    position: add(&sk.robot, self.map.vertices()[it.origin]),
+                    position: shifted(&sk.robot, self.map.vertices()[it.origin], 1),
                     origin_vertex: it.origin,
                     cell: it.site,
                 }

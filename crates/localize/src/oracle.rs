@@ -14,13 +14,14 @@
 //! placed there (Guibas et al.'s one-shot query), without a visibility
 //! polygon except in degenerate placements.
 
-use crate::sub;
-use crate::view::RobotView;
+use crate::view::{RobotView, ViewSkeleton};
+use crate::{dot_sign, shifted, sub};
+use crate::{Answer, Localizer};
 use rug::Integer;
 use std::cmp::Ordering;
 use std::collections::HashMap;
 use wai_exact::{orientation_rat, sees, Containment, Orientation, Point, RatPoint};
-use wai_visibility::VisibilityIndex;
+use wai_visibility::{Skeleton, VisibilityIndex};
 
 /// All positions q with V_q = V + q, ascending: O(r) visibility queries.
 pub fn brute_force(index: &VisibilityIndex<'_>, v: &RobotView) -> Vec<RatPoint> {
@@ -29,23 +30,8 @@ pub fn brute_force(index: &VisibilityIndex<'_>, v: &RobotView) -> Vec<RatPoint> 
     };
     let map = index.map();
     let mut found = Vec::new();
-    // A convex map (r = 0, outside the thesis's assumption) has v0 at its
-    // leftmost, then lowest, vertex: try every vertex then.
-    let all: Vec<usize> = (0..map.n()).collect();
-    let candidates = if map.r() == 0 {
-        &all
-    } else {
-        map.reflex_vertices()
-    };
-    for &u in candidates {
-        let at = map.vertices()[u];
-        let w = sk.robot.hw();
-        let q = RatPoint::new(
-            sk.robot.hx() + Integer::from(w * at.x),
-            sk.robot.hy() + Integer::from(w * at.y),
-            w.clone(),
-        )
-        .expect("w > 0");
+    for u in v0_images(map) {
+        let q = shifted(&sk.robot, map.vertices()[u], 1);
         if wai_exact::locate_rat(map.vertices(), &q) != Containment::Inside {
             continue;
         }
@@ -58,6 +44,77 @@ pub fn brute_force(index: &VisibilityIndex<'_>, v: &RobotView) -> Vec<RatPoint> 
     }
     found.sort_by(crate::cmp_points);
     found
+}
+
+/// What [`cross_check`] found at one viewpoint.
+#[derive(Clone, Debug)]
+pub struct CrossCheck {
+    pub view: RobotView,
+    pub skeleton: ViewSkeleton,
+    pub answer: Answer,
+    /// Placements the one-shot oracle decided by computing V_q.
+    pub one_shot_degenerate: usize,
+}
+
+/// Localize the view of map point `p` by the localizer and both oracles:
+/// the skeleton formed from V alone must be the map-side one (Def 3.7),
+/// the answer must contain `p`, and the three answer sets must be equal.
+/// `Err` says what differs.
+pub fn cross_check(
+    loc: &Localizer,
+    index: &VisibilityIndex<'_>,
+    p: &RatPoint,
+) -> Result<CrossCheck, String> {
+    let vp = index.visibility_polygon(p).map_err(|e| e.to_string())?;
+    let view = RobotView::from_visibility(&vp);
+    let skeleton = view.skeleton().map_err(|e| e.to_string())?;
+    let map_key = Skeleton::of(index.map(), &vp)
+        .map_err(|e| format!("map-side skeleton: {e}"))?
+        .key();
+    if skeleton.key != map_key {
+        return Err("V's skeleton differs from the map-side one".into());
+    }
+    let answer = loc.localize(&view);
+    let positions = answer.positions();
+    if !positions.contains(p) {
+        return Err(format!(
+            "the answer misses the viewpoint: {:?}",
+            answer.nowhere
+        ));
+    }
+    let brute = brute_force(index, &view);
+    if positions != brute {
+        return Err(format!(
+            "localizer {} answers, brute force {}",
+            positions.len(),
+            brute.len()
+        ));
+    }
+    let (one_shot, one_shot_degenerate) = one_shot(index, &view);
+    if positions != one_shot {
+        return Err(format!(
+            "localizer {} answers, one-shot {}",
+            positions.len(),
+            one_shot.len()
+        ));
+    }
+    Ok(CrossCheck {
+        view,
+        skeleton,
+        answer,
+        one_shot_degenerate,
+    })
+}
+
+/// The map vertices v0 can land on: the reflex ones; for a convex map
+/// (r = 0, outside the thesis's assumption, where v0 is the leftmost, then
+/// lowest, vertex) every one.
+fn v0_images(map: &wai_map::Map) -> Vec<usize> {
+    if map.r() == 0 {
+        (0..map.n()).collect()
+    } else {
+        map.reflex_vertices().to_vec()
+    }
 }
 
 /// Two cyclic vertex sequences equal up to the starting vertex.
@@ -156,22 +213,15 @@ pub fn one_shot(index: &VisibilityIndex<'_>, v: &RobotView) -> (Vec<RatPoint>, u
     let at: HashMap<Point, usize> = ring.iter().enumerate().map(|(i, &p)| (p, i)).collect();
     let verts = v.vertices();
     let m = verts.len();
-    let spurious = v.spurious_vertices();
-    let radial: Vec<bool> = (0..m).map(|i| v.is_spurious_edge(i)).collect();
+    let (radial, spurious) = v.classify();
     // Offsets of V's vertices from v0, exact.
     let v0 = &verts[sk.origin_index];
     let rel: Vec<RatPoint> = verts.iter().map(|p| sub(p, v0)).collect();
-    let all: Vec<usize> = (0..n).collect();
-    let candidates = if map.r() == 0 {
-        &all
-    } else {
-        map.reflex_vertices()
-    };
     let mut found = Vec::new();
     let mut degenerate = 0;
-    'placement: for &u in candidates {
+    'placement: for u in v0_images(map) {
         let uo = ring[u];
-        let place = |p: &RatPoint| add_point(p, uo);
+        let place = |p: &RatPoint| shifted(p, uo, 1);
         let q = place(&sk.robot);
         // 1. Non-spurious vertices on map vertices.
         let mut idx = vec![usize::MAX; m];
@@ -270,16 +320,6 @@ pub fn one_shot(index: &VisibilityIndex<'_>, v: &RobotView) -> (Vec<RatPoint>, u
     (found, degenerate)
 }
 
-fn add_point(p: &RatPoint, o: Point) -> RatPoint {
-    let w = p.hw();
-    RatPoint::new(
-        p.hx() + Integer::from(w * o.x),
-        p.hy() + Integer::from(w * o.y),
-        w.clone(),
-    )
-    .expect("w > 0")
-}
-
 /// s − a, scaled by s's positive w.
 fn direction(a: &Point, s: &RatPoint) -> (Integer, Integer) {
     let w = s.hw();
@@ -307,11 +347,8 @@ fn on_edge(ring: &[Point], e: usize, p: &RatPoint) -> bool {
     }
     let d1 = sub(p, &a);
     let d2 = sub(&b, p);
-    let dot = |x: &RatPoint, y: &RatPoint| {
-        (Integer::from(x.hx() * y.hx()) + Integer::from(x.hy() * y.hy())).cmp0()
-    };
     let e = sub(&b, &a);
-    dot(&d1, &e) != Ordering::Less && dot(&d2, &e) != Ordering::Less
+    dot_sign(&d1, &e) != Ordering::Less && dot_sign(&d2, &e) != Ordering::Less
 }
 
 /// Whether s1 → s2 runs the way of map edge `e`.

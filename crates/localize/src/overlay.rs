@@ -19,7 +19,7 @@
 //! compare both paths.
 
 use crate::fast::cmp_products;
-use crate::sub;
+use crate::{dot_sign, small_i128, small_triple, sub};
 use rug::{Integer, Rational};
 use std::cmp::Ordering;
 use std::collections::HashMap;
@@ -120,10 +120,6 @@ type FastParts = (Vec<(i128, i128)>, Vec<[i128; 3]>);
 
 fn x_of(p: &RatPoint) -> Rational {
     Rational::from((p.hx().clone(), p.hw().clone()))
-}
-
-fn dot_sign(a: &RatPoint, b: &RatPoint) -> Ordering {
-    (Integer::from(a.hx() * b.hx()) + Integer::from(a.hy() * b.hy())).cmp0()
 }
 
 impl Item {
@@ -285,14 +281,13 @@ impl ClassOverlay {
         lines: Vec<Line>,
         slabs: Vec<Slab>,
     ) -> ClassOverlay {
-        let small = |z: &Integer| z.to_i128().filter(|c| c.unsigned_abs() < 1u128 << 126);
         let fx: Option<Vec<(i128, i128)>> = xs
             .iter()
-            .map(|x| Some((small(x.numer())?, small(x.denom())?)))
+            .map(|x| Some((small_i128(x.numer())?, small_i128(x.denom())?)))
             .collect();
         let fl: Option<Vec<[i128; 3]>> = lines
             .iter()
-            .map(|l| Some([small(&l.a)?, small(&l.b)?, small(&l.c)?]))
+            .map(|l| Some([small_i128(&l.a)?, small_i128(&l.b)?, small_i128(&l.c)?]))
             .collect();
         ClassOverlay {
             items,
@@ -340,8 +335,7 @@ impl ClassOverlay {
     /// The point-location path: the label of the open trapezoid holding
     /// `p`, or `None` when `p` lies on a slab line or a piece.
     pub fn locate_fast(&self, p: &RatPoint) -> Option<&[u32]> {
-        let small = |z: &Integer| z.to_i128().filter(|c| c.unsigned_abs() < 1u128 << 126);
-        let q = (|| Some([small(p.hx())?, small(p.hy())?, small(p.hw())?]))();
+        let q = small_triple(p);
         let s = match self.slab_of(p, q) {
             Ok(_) => return None,
             Err(0) => return Some(&[]),

@@ -10,7 +10,7 @@
 //! with the map-side skeleton of the same viewpoint.
 
 use crate::fast::{cmp_products, det2};
-use crate::sub;
+use crate::{dot_sign, small_triple, sub};
 use rug::Integer;
 use std::cmp::Ordering;
 use wai_exact::{orientation_rat, Orientation, RatPoint};
@@ -81,11 +81,6 @@ fn origin() -> RatPoint {
 /// The sign of the cross product a × b (of positions relative to o).
 fn cross(a: &RatPoint, b: &RatPoint) -> Ordering {
     (Integer::from(a.hx() * b.hy()) - Integer::from(a.hy() * b.hx())).cmp0()
-}
-
-/// The sign of the dot product a · b.
-fn dot(a: &RatPoint, b: &RatPoint) -> Ordering {
-    (Integer::from(a.hx() * b.hx()) + Integer::from(a.hy() * b.hy())).cmp0()
 }
 
 /// 0 for directions in [0, π), 1 for [π, 2π).
@@ -177,7 +172,7 @@ impl RobotView {
         for i in 0..m {
             let (h, j) = ((i + m - 1) % m, (i + 1) % m);
             if view.orient(h, i, j) == Orientation::Collinear {
-                let back = dot(&sub(&v[i], &v[h]), &sub(&v[j], &v[i])) != Ordering::Greater;
+                let back = dot_sign(&sub(&v[i], &v[h]), &sub(&v[j], &v[i])) != Ordering::Greater;
                 if back {
                     return Err(ViewError::Spike(h, i));
                 }
@@ -206,11 +201,7 @@ impl RobotView {
     }
 
     fn build(vertices: Vec<RatPoint>, notes: Vec<String>) -> RobotView {
-        let small = |z: &Integer| z.to_i128().filter(|c| c.unsigned_abs() < 1u128 << 126);
-        let fast = vertices
-            .iter()
-            .map(|p| Some([small(p.hx())?, small(p.hy())?, small(p.hw())?]))
-            .collect();
+        let fast = vertices.iter().map(small_triple).collect();
         RobotView {
             vertices,
             fast,
@@ -231,7 +222,7 @@ impl RobotView {
         match &self.fast {
             // Coordinates below 2^126: the negation is safe.
             Some(f) => cmp_products(f[i][0], f[j][0], -f[i][1], f[j][1]),
-            None => dot(&self.vertices[i], &self.vertices[j]),
+            None => dot_sign(&self.vertices[i], &self.vertices[j]),
         }
     }
 
@@ -255,7 +246,7 @@ impl RobotView {
                 == Ordering::Greater;
         }
         let v = &self.vertices;
-        dot(&sub(&v[j], &v[i]), &v[i]) == Ordering::Greater
+        dot_sign(&sub(&v[j], &v[i]), &v[i]) == Ordering::Greater
     }
 
     /// The orientation of (v_h, v_i, v_j).
@@ -283,9 +274,7 @@ impl RobotView {
             return cmp_products(p[0], q[2], q[0], p[2])
                 .then_with(|| cmp_products(p[1], q[2], q[1], p[2]));
         }
-        let (a, b) = (&self.vertices[a], &self.vertices[b]);
-        let x = (Integer::from(a.hx() * b.hw()) - Integer::from(b.hx() * a.hw())).cmp0();
-        x.then_with(|| (Integer::from(a.hy() * b.hw()) - Integer::from(b.hy() * a.hw())).cmp0())
+        crate::cmp_points(&self.vertices[a], &self.vertices[b])
     }
 
     /// The label of the line through v_i and v_j relative to v_o, as
@@ -381,14 +370,9 @@ impl RobotView {
         self.cross_ij(i, (i + 1) % self.vertices.len()) == Ordering::Equal
     }
 
-    /// Which vertices are spurious (Def 3.4): the farther ends of spurious
-    /// edges.
-    pub fn spurious_vertices(&self) -> Vec<bool> {
-        self.classify().1
-    }
-
-    /// Which edges and which vertices are spurious (Def 3.4).
-    fn classify(&self) -> (Vec<bool>, Vec<bool>) {
+    /// Which edges and which vertices are spurious (Def 3.4): the edges
+    /// collinear with the robot, and the farther ends of those edges.
+    pub fn classify(&self) -> (Vec<bool>, Vec<bool>) {
         let m = self.vertices.len();
         let edges: Vec<bool> = (0..m).map(|i| self.is_spurious_edge(i)).collect();
         let mut s = vec![false; m];

@@ -97,6 +97,12 @@ fn repeated_rooms_answer_with_every_room_also_from_a_preprocessed_file() {
         b"",
     ));
     assert_eq!(direct, again, "the preprocessed file answers the same");
+    // The map on standard input, read once.
+    let piped = json(&wai(
+        &["localize", "-", "--at", &at, "--json"],
+        wai_map::json::to_json(&map).as_bytes(),
+    ));
+    assert_eq!(direct, piped, "a map on standard input answers the same");
     assert!(std::fs::read_to_string(&svg)
         .unwrap()
         .contains(&format!("{best} answers")));
