@@ -72,7 +72,7 @@ fn bench(c: &mut Criterion) {
         g.bench_with_input(BenchmarkId::new("one-shot", &id), &vs, |b, vs| {
             b.iter(|| {
                 vs.iter()
-                    .map(|v| oracle::one_shot(&index, v).0.len())
+                    .map(|v| oracle::one_shot(index.map(), v).positions.len())
                     .sum::<usize>()
             })
         });

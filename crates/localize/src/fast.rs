@@ -30,15 +30,17 @@ pub fn mul_wide(x: u128, y: u128) -> (u128, u128) {
 }
 
 /// The sign of a·b − c·d, exactly, for any `i128`s.
+#[inline]
 pub fn cmp_products(a: i128, b: i128, c: i128, d: i128) -> Ordering {
-    // Below 2^63 each product is below 2^126 and the difference fits.
-    const SMALL: u128 = 1 << 63;
-    if a.unsigned_abs() < SMALL
-        && b.unsigned_abs() < SMALL
-        && c.unsigned_abs() < SMALL
-        && d.unsigned_abs() < SMALL
-    {
-        return (a * b - c * d).cmp(&0);
+    // In i64 each product is below 2^126 and the difference fits; the
+    // products of sign-extended i64s are single widening multiplications.
+    if let (Ok(a), Ok(b), Ok(c), Ok(d)) = (
+        i64::try_from(a),
+        i64::try_from(b),
+        i64::try_from(c),
+        i64::try_from(d),
+    ) {
+        return (i128::from(a) * i128::from(b)).cmp(&(i128::from(c) * i128::from(d)));
     }
     let sign = |x: i128, y: i128| x.signum() * y.signum();
     let (s1, s2) = (sign(a, b), sign(c, d));
@@ -58,6 +60,72 @@ pub fn cmp_products(a: i128, b: i128, c: i128, d: i128) -> Ordering {
 }
 
 /// a·b − c·d if it fits an `i128`.
+#[inline]
 pub fn det2(a: i128, b: i128, c: i128, d: i128) -> Option<i128> {
+    // In i64 each product is below 2^126 and the difference fits: single
+    // widening multiplications, without the overflow checks (a library
+    // call for `i128`).
+    if let (Ok(a), Ok(b), Ok(c), Ok(d)) = (
+        i64::try_from(a),
+        i64::try_from(b),
+        i64::try_from(c),
+        i64::try_from(d),
+    ) {
+        return Some(i128::from(a) * i128::from(b) - i128::from(c) * i128::from(d));
+    }
     a.checked_mul(b)?.checked_sub(c.checked_mul(d)?)
+}
+
+/// Exact division by a fixed positive divisor without a division
+/// instruction: multiply by the divisor's inverse modulo 2^64, which gives
+/// the quotient exactly when the division is exact and, by Granlund and
+/// Montgomery's test, a value above `(2^64 − 1)/d` otherwise. Skeletons
+/// divide every offset by the robot's denominator; a hardware division
+/// costs tens of cycles.
+#[derive(Clone, Copy, Debug)]
+pub struct ExactDivisor {
+    /// The power of two in the divisor.
+    shift: u32,
+    /// The inverse of its odd part modulo 2^64.
+    inverse: u64,
+    /// ⌊(2^64 − 1) / odd part⌋.
+    limit: u64,
+}
+
+impl ExactDivisor {
+    /// A divisor `d > 0`.
+    pub fn new(d: u64) -> Option<ExactDivisor> {
+        if d == 0 {
+            return None;
+        }
+        let shift = d.trailing_zeros();
+        let odd = d >> shift;
+        // Newton's iteration doubles the correct low bits; an odd number
+        // is its own inverse modulo 8 (3 bits), so five steps give 96.
+        let mut inverse = odd;
+        for _ in 0..5 {
+            inverse = inverse.wrapping_mul(2u64.wrapping_sub(odd.wrapping_mul(inverse)));
+        }
+        debug_assert_eq!(odd.wrapping_mul(inverse), 1);
+        Some(ExactDivisor {
+            shift,
+            inverse,
+            limit: u64::MAX / odd,
+        })
+    }
+
+    /// n / d if d divides n.
+    #[inline]
+    pub fn divide(&self, n: i64) -> Option<i128> {
+        let a = n.unsigned_abs();
+        if a & ((1u64 << self.shift) - 1) != 0 {
+            return None;
+        }
+        let q = (a >> self.shift).wrapping_mul(self.inverse);
+        if q > self.limit {
+            return None;
+        }
+        let q = i128::from(q);
+        Some(if n < 0 { -q } else { q })
+    }
 }

@@ -9,7 +9,8 @@
 //! - [`Localizer`]: the preprocessing (one overlay per equivalence class of
 //!   its cells of every dimension, translated to the skeleton origin, with
 //!   slab point location) and the query.
-//! - [`oracle`]: an independent brute force to compare with.
+//! - [`oracle`]: an independent brute force and Guibas et al.'s one-shot
+//!   query (with [`ray_exits`], its directional sweep) to compare with.
 //! - [`file`]: save and load a preprocessed map (versioned JSON).
 
 pub mod fast;
@@ -17,6 +18,7 @@ pub mod file;
 mod localizer;
 pub mod oracle;
 pub mod overlay;
+pub mod ray_exits;
 mod view;
 
 pub use localizer::{Answer, Localizer, Nowhere, Placement};

@@ -11,16 +11,18 @@
 //! reference.
 //!
 //! [`one_shot`]: the same placements verified by local conditions on V
-//! placed there (Guibas et al.'s one-shot query), without a visibility
-//! polygon except in degenerate placements.
+//! placed there and by the exits of rays along V's spurious edges (Guibas
+//! et al.'s one-shot query), without any visibility polygon.
 
+use crate::ray_exits::{Exit, RayExits, Side};
 use crate::view::{RobotView, ViewSkeleton};
 use crate::{dot_sign, shifted, sub};
 use crate::{Answer, Localizer};
 use rug::Integer;
 use std::cmp::Ordering;
 use std::collections::HashMap;
-use wai_exact::{orientation_rat, sees, Containment, Orientation, Point, RatPoint};
+use wai_exact::{orientation_rat, Containment, Orientation, Point, RatPoint};
+use wai_map::Map;
 use wai_visibility::{Skeleton, VisibilityIndex};
 
 /// All positions q with V_q = V + q, ascending: O(r) visibility queries.
@@ -52,8 +54,8 @@ pub struct CrossCheck {
     pub view: RobotView,
     pub skeleton: ViewSkeleton,
     pub answer: Answer,
-    /// Placements the one-shot oracle decided by computing V_q.
-    pub one_shot_degenerate: usize,
+    /// Directions the one-shot oracle swept for ray exits.
+    pub one_shot_sweeps: usize,
 }
 
 /// Localize the view of map point `p` by the localizer and both oracles:
@@ -90,19 +92,19 @@ pub fn cross_check(
             brute.len()
         ));
     }
-    let (one_shot, one_shot_degenerate) = one_shot(index, &view);
-    if positions != one_shot {
+    let one_shot = one_shot(index.map(), &view);
+    if positions != one_shot.positions {
         return Err(format!(
             "localizer {} answers, one-shot {}",
             positions.len(),
-            one_shot.len()
+            one_shot.positions.len()
         ));
     }
     Ok(CrossCheck {
         view,
         skeleton,
         answer,
-        one_shot_degenerate,
+        one_shot_sweeps: one_shot.sweeps,
     })
 }
 
@@ -177,52 +179,86 @@ fn cone(ring: &[Point], a: usize, d: &(Integer, Integer)) -> Cone {
     }
 }
 
-/// The one-shot localization without preprocessing (after Guibas, Motwani
-/// and Raghavan, thesis sec. 3.3): the O(r) placements that send v0 to a
-/// reflex vertex, each verified by local conditions on V + q instead of
-/// computing V_q. With P = V + q:
+/// What [`one_shot`] found.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct OneShot {
+    /// Every position q with V_q = V + q, ascending.
+    pub positions: Vec<RatPoint>,
+    /// Directions for which the ray exits of the map were swept.
+    pub sweeps: usize,
+}
+
+/// The one-shot localization without preprocessing of Guibas, Motwani and
+/// Raghavan (thesis sec. 3.2): the O(r) placements that send v0 to a
+/// reflex vertex, each verified in O(m) by local conditions on V + q
+/// instead of computing V_q. With P = V + q:
 ///
 /// 1. every non-spurious vertex of P is a map vertex (a hash lookup);
 /// 2. every full edge of P is a map edge, and every half or partial edge
 ///    lies on one map edge, running the same way;
-/// 3. at every non-spurious vertex the ray from q continues into the map
-///    exactly when P has a spurious edge there (a local test at the map
-///    vertex), and every spurious edge of P runs through the interior of
-///    the map to its far end (one exact segment test, O(n)).
+/// 3. at a non-spurious vertex a of P with no spurious edge beyond it, the
+///    ray from q leaves the map at a on both sides (a local test at the
+///    map vertex);
+/// 4. every spurious edge of P runs from its map vertex a exactly to the
+///    exit of the ray from a in its direction, on the side where P lies
+///    ([`RayExits`]).
 ///
 /// Then ∂P lies in M, so P ⊆ M (M has no holes) and q sees all of P; and
-/// every ray from q leaves M where it leaves P, so V_q = P. A placement
-/// where a ray from q runs along a map edge, grazes a vertex on a spurious
-/// edge or ends at a map vertex (the degenerate cases, where the local
-/// tests do not decide) is decided by computing V_q exactly instead, and
-/// counted in the second value returned.
+/// every ray from q in a direction through no vertex of P leaves M's
+/// interior where it leaves P, so V_q = P (both are closures of what q
+/// sees). Conversely V_q = P satisfies all four. Rays that run along walls,
+/// graze vertices or end at a map vertex need no special case: the
+/// one-sided exits say where the region beside each ray ends.
 ///
-/// Cost: O(n) to hash the vertices, then per placement O(m) lookups and
-/// one O(n) segment test per spurious edge: O(n + r·(m + s·n)) for s
-/// spurious edges. Guibas et al. replace the segment tests by a
-/// trapezoidal decomposition of the map along the spurious edges'
-/// directions, built in O(mn), for O(mn) in all; that structure is not
-/// built here.
-pub fn one_shot(index: &VisibilityIndex<'_>, v: &RobotView) -> (Vec<RatPoint>, usize) {
-    let Ok(sk) = v.skeleton() else {
-        return (Vec::new(), 0);
+/// Cost: O(n) to hash the vertices; per placement O(m) lookups and tests;
+/// and, for each direction of a spurious edge of V, one sweep of the map
+/// in O(n log n) (Guibas et al.'s trapezoidalization along that direction,
+/// O(n) with a linear-time triangulation). A sweep is made only when a
+/// placement reaches test 4, and once per direction: O(n + r·m + s·n log n)
+/// for s spurious edges, O(mn log n) at worst.
+pub fn one_shot(map: &Map, v: &RobotView) -> OneShot {
+    let mut out = OneShot {
+        positions: Vec::new(),
+        sweeps: 0,
     };
-    let map = index.map();
+    let Ok(sk) = v.skeleton() else {
+        return out;
+    };
     let ring = map.vertices();
     let n = ring.len();
     let at: HashMap<Point, usize> = ring.iter().enumerate().map(|(i, &p)| (p, i)).collect();
     let verts = v.vertices();
     let m = verts.len();
     let (radial, spurious) = v.classify();
+    // Each spurious vertex ends one spurious edge (a checked V has no
+    // spike and no 180° vertex): its near end, and the index of the ray
+    // (direction, and the side of it where V lies) among the distinct
+    // ones. V lies left of an edge run counter-clockwise: left of the ray
+    // when the edge runs outwards.
+    let mut near_of = vec![usize::MAX; m];
+    let mut ray_of = vec![usize::MAX; m];
+    let mut rays: Vec<((Integer, Integer), Side)> = Vec::new();
+    for i in (0..m).filter(|&i| radial[i]) {
+        let j = (i + 1) % m;
+        let (near, far, side) = if spurious[j] {
+            (i, j, Side::Left)
+        } else {
+            (j, i, Side::Right)
+        };
+        near_of[far] = near;
+        let ray = (primitive(&verts[near]), side);
+        ray_of[far] = rays.iter().position(|e| *e == ray).unwrap_or_else(|| {
+            rays.push(ray);
+            rays.len() - 1
+        });
+    }
+    let mut tables: Vec<Option<RayExits>> = vec![None; rays.len()];
     // Offsets of V's vertices from v0, exact.
     let v0 = &verts[sk.origin_index];
     let rel: Vec<RatPoint> = verts.iter().map(|p| sub(p, v0)).collect();
-    let mut found = Vec::new();
-    let mut degenerate = 0;
     'placement: for u in v0_images(map) {
         let uo = ring[u];
         let place = |p: &RatPoint| shifted(p, uo, 1);
-        let q = place(&sk.robot);
         // 1. Non-spurious vertices on map vertices.
         let mut idx = vec![usize::MAX; m];
         for i in 0..m {
@@ -236,106 +272,91 @@ pub fn one_shot(index: &VisibilityIndex<'_>, v: &RobotView) -> (Vec<RatPoint>, u
                 }
             }
         }
-        let mut unsure = false;
+        // 2. Full and half edges (partial ones after 4).
         for i in 0..m {
             let j = (i + 1) % m;
             if radial[i] {
-                // 3. A spurious edge: near end kept, far end spurious.
-                let (near, far) = if spurious[j] { (i, j) } else { (j, i) };
-                let (a, s) = (idx[near], place(&rel[far]));
-                let d = direction(&ring[a], &s);
-                match cone(ring, a, &d) {
-                    Cone::Inside => {}
-                    Cone::Outside => continue 'placement,
-                    Cone::Along => unsure = true,
-                }
-                if s.to_point().is_some_and(|p| at.contains_key(&p)) {
-                    unsure = true; // ends at a map vertex
-                } else if !sees(ring, &RatPoint::from(ring[a]), &s).is_visible() {
-                    // Crossing the boundary rejects; grazing or running
-                    // along it is decided exactly below.
-                    unsure = true;
-                }
                 continue;
             }
-            // 2. A solid edge.
-            match (spurious[i], spurious[j]) {
-                (false, false) => {
-                    if idx[j] != (idx[i] + 1) % n {
-                        continue 'placement;
-                    }
-                }
-                (false, true) => {
-                    let a = idx[i];
-                    if !on_edge(ring, a, &place(&rel[j])) {
-                        continue 'placement;
-                    }
-                }
-                (true, false) => {
-                    let b = idx[j];
-                    if !on_edge(ring, (b + n - 1) % n, &place(&rel[i])) {
-                        continue 'placement;
-                    }
-                }
-                (true, true) => {
-                    let (s1, s2) = (place(&rel[i]), place(&rel[j]));
-                    let on_one = (0..n).any(|e| {
-                        on_edge(ring, e, &s1)
-                            && on_edge(ring, e, &s2)
-                            && same_way(ring, e, &s1, &s2)
-                    });
-                    if !on_one {
-                        continue 'placement;
-                    }
-                }
-            }
-        }
-        // 3. Rays through non-spurious vertices without a spurious edge
-        // stop there.
-        for i in 0..m {
-            let blocking = (radial[i] && spurious[(i + 1) % m])
-                || (radial[(i + m - 1) % m] && spurious[(i + m - 1) % m]);
-            if spurious[i] || blocking {
-                continue;
-            }
-            let a = idx[i];
-            match cone(ring, a, &direction_from(&q, &ring[a])) {
-                Cone::Outside => {}
-                Cone::Inside => continue 'placement,
-                Cone::Along => unsure = true,
-            }
-        }
-        if unsure {
-            degenerate += 1;
-            let ok = index
-                .visibility_polygon(&q)
-                .is_ok_and(|vq| same_ring(&vq.points(), &v.placed_at(&q)));
+            let ok = match (spurious[i], spurious[j]) {
+                (false, false) => idx[j] == (idx[i] + 1) % n,
+                (false, true) => on_edge(ring, idx[i], &place(&rel[j])),
+                (true, false) => on_edge(ring, (idx[j] + n - 1) % n, &place(&rel[i])),
+                (true, true) => true,
+            };
             if !ok {
                 continue 'placement;
             }
         }
-        found.push(q);
+        // 3. Rays that must stop at their non-spurious vertex.
+        for i in 0..m {
+            let beyond = (radial[i] && spurious[(i + 1) % m])
+                || (radial[(i + m - 1) % m] && spurious[(i + m - 1) % m]);
+            if spurious[i] || beyond {
+                continue;
+            }
+            let d = (verts[i].hx().clone(), verts[i].hy().clone());
+            if cone(ring, idx[i], &d) != Cone::Outside {
+                continue 'placement;
+            }
+        }
+        // 4. Spurious edges end where their rays leave the map.
+        let mut exit_at = vec![Exit::Vertex(usize::MAX); m];
+        for far in 0..m {
+            if !spurious[far] {
+                continue;
+            }
+            let k = ray_of[far];
+            let table = tables[k].get_or_insert_with(|| {
+                out.sweeps += 1;
+                let ((dx, dy), side) = &rays[k];
+                RayExits::new(ring, (dx, dy), *side)
+            });
+            let exit = table.exit(idx[near_of[far]]);
+            let s = place(&rel[far]);
+            let ok = match exit {
+                Exit::Vertex(b) => s.to_point() == Some(ring[b]),
+                // s lies on the ray beyond its map vertex, which meets the
+                // line of the edge once.
+                Exit::Edge(e) => {
+                    let (a, b) = (RatPoint::from(ring[e]), RatPoint::from(ring[(e + 1) % n]));
+                    orientation_rat(&a, &b, &s) == Orientation::Collinear
+                }
+            };
+            if !ok {
+                continue 'placement;
+            }
+            exit_at[far] = exit;
+        }
+        // 2 (cont.). A partial edge lies on the map edge its first end
+        // exits on (at a vertex exit, one of the two edges there).
+        for i in 0..m {
+            let j = (i + 1) % m;
+            if radial[i] || !(spurious[i] && spurious[j]) {
+                continue;
+            }
+            let edges = match exit_at[i] {
+                Exit::Edge(e) => [e, e],
+                Exit::Vertex(b) => [b, (b + n - 1) % n],
+            };
+            let (s1, s2) = (place(&rel[i]), place(&rel[j]));
+            let on_one = edges.iter().any(|&e| {
+                on_edge(ring, e, &s1) && on_edge(ring, e, &s2) && same_way(ring, e, &s1, &s2)
+            });
+            if !on_one {
+                continue 'placement;
+            }
+        }
+        out.positions.push(shifted(&sk.robot, uo, 1));
     }
-    found.sort_by(crate::cmp_points);
-    (found, degenerate)
+    out.positions.sort_by(crate::cmp_points);
+    out
 }
 
-/// s − a, scaled by s's positive w.
-fn direction(a: &Point, s: &RatPoint) -> (Integer, Integer) {
-    let w = s.hw();
-    (
-        s.hx() - Integer::from(w * a.x),
-        s.hy() - Integer::from(w * a.y),
-    )
-}
-
-/// a − q (the ray from q beyond a), scaled by q's positive w.
-fn direction_from(q: &RatPoint, a: &Point) -> (Integer, Integer) {
-    let w = q.hw();
-    (
-        Integer::from(w * a.x) - q.hx(),
-        Integer::from(w * a.y) - q.hy(),
-    )
+/// The direction of `p` from the origin as a primitive integer vector.
+fn primitive(p: &RatPoint) -> (Integer, Integer) {
+    let g = Integer::from(p.hx().gcd_ref(p.hy()));
+    (Integer::from(p.hx() / &g), Integer::from(p.hy() / &g))
 }
 
 /// Whether `p` lies on the closed map edge `e`.

@@ -9,7 +9,7 @@
 //! kinds and the skeleton follow (Defs 3.5–3.7). Tests compare the result
 //! with the map-side skeleton of the same viewpoint.
 
-use crate::fast::{cmp_products, det2};
+use crate::fast::{cmp_products, det2, ExactDivisor};
 use crate::{dot_sign, small_triple, sub};
 use rug::Integer;
 use std::cmp::Ordering;
@@ -210,6 +210,7 @@ impl RobotView {
     }
 
     /// The sign of v_i × v_j (positions relative to the robot).
+    #[inline]
     fn cross_ij(&self, i: usize, j: usize) -> Ordering {
         match &self.fast {
             Some(f) => cmp_products(f[i][0], f[j][1], f[i][1], f[j][0]),
@@ -218,6 +219,7 @@ impl RobotView {
     }
 
     /// The sign of v_i · v_j.
+    #[inline]
     fn dot_ij(&self, i: usize, j: usize) -> Ordering {
         match &self.fast {
             // Coordinates below 2^126: the negation is safe.
@@ -238,6 +240,7 @@ impl RobotView {
     }
 
     /// For v_i, v_j on one ray from the robot: whether v_j is the farther.
+    #[inline]
     fn farther(&self, i: usize, j: usize) -> bool {
         if let Some(f) = &self.fast {
             // Same ray: compare one non-zero coordinate's magnitude.
@@ -250,8 +253,20 @@ impl RobotView {
     }
 
     /// The orientation of (v_h, v_i, v_j).
+    #[inline]
     fn orient(&self, h: usize, i: usize, j: usize) -> Orientation {
         if let Some(f) = &self.fast {
+            let (a, b, c) = (&f[h], &f[i], &f[j]);
+            if a[2] == b[2] && b[2] == c[2] {
+                // One denominator (the usual case: map vertices minus the
+                // robot): the numerators' orientation. Coordinates below
+                // 2^126, so the differences fit.
+                return match cmp_products(b[0] - a[0], c[1] - b[1], b[1] - a[1], c[0] - b[0]) {
+                    Ordering::Greater => Orientation::CounterClockwise,
+                    Ordering::Less => Orientation::Clockwise,
+                    Ordering::Equal => Orientation::Collinear,
+                };
+            }
             let d = |a: &[i128; 3], b: &[i128; 3]| {
                 Some((det2(b[0], a[2], a[0], b[2])?, det2(b[1], a[2], a[1], b[2])?))
             };
@@ -268,9 +283,13 @@ impl RobotView {
     }
 
     /// v_a against v_b by x, then y.
+    #[inline]
     fn lex(&self, a: usize, b: usize) -> Ordering {
         if let Some(f) = &self.fast {
             let (p, q) = (&f[a], &f[b]);
+            if p[2] == q[2] {
+                return (p[0], p[1]).cmp(&(q[0], q[1]));
+            }
             return cmp_products(p[0], q[2], q[0], p[2])
                 .then_with(|| cmp_products(p[1], q[2], q[1], p[2]));
         }
@@ -310,10 +329,22 @@ impl RobotView {
         })
     }
 
-    /// v_i − v_o if it is an integer vector.
-    fn offset(&self, i: usize, o: usize) -> Option<(i128, i128)> {
+    /// v_i − v_o if it is an integer vector; `div` divides by v_o's
+    /// denominator.
+    fn offset(&self, i: usize, o: usize, div: Option<&ExactDivisor>) -> Option<(i128, i128)> {
         if let Some(f) = &self.fast {
             let (p, q) = (&f[i], &f[o]);
+            if p[2] == q[2] {
+                // One denominator w: (p − q)/w, the differences fitting.
+                let (nx, ny, w) = (p[0] - q[0], p[1] - q[1], p[2]);
+                if w == 1 {
+                    return Some((nx, ny));
+                }
+                if let (Some(div), Ok(nx), Ok(ny)) = (div, i64::try_from(nx), i64::try_from(ny)) {
+                    return Some((div.divide(nx)?, div.divide(ny)?));
+                }
+                return (nx % w == 0 && ny % w == 0).then(|| (nx / w, ny / w));
+            }
             if let (Some(nx), Some(ny), Some(den)) = (
                 det2(p[0], q[2], q[0], p[2]),
                 det2(p[1], q[2], q[1], p[2]),
@@ -422,9 +453,17 @@ impl RobotView {
         let k = order.len();
         let mut offsets = Vec::with_capacity(k);
         let mut labels = Vec::with_capacity(k);
+        let div = self
+            .fast
+            .as_ref()
+            .and_then(|f| u64::try_from(f[o0][2]).ok())
+            .and_then(ExactDivisor::new);
         for s in 0..k {
             let (i, j) = (order[s], order[(s + 1) % k]);
-            offsets.push(self.offset(i, o0).ok_or(NoSkeleton::OffGrid(i))?);
+            offsets.push(
+                self.offset(i, o0, div.as_ref())
+                    .ok_or(NoSkeleton::OffGrid(i))?,
+            );
             // The edges from i to j: one solid edge, maybe with a
             // spurious edge before and after it.
             let len = (j + m - i) % m;

@@ -3,4 +3,5 @@
 mod agree;
 mod fast;
 mod file;
+mod ray_exits;
 mod view;
