@@ -13,10 +13,11 @@
 //! searches and that list.
 //!
 //! A query on a slab line or on a piece (a point on a ray, a 1- or 0-cell,
-//! a cell edge) takes the exact path: every cell of the class is tested for
-//! containment. That is O(|EC|) instead of O(log |EC|), only on a set of
-//! measure zero; the answers are the same by construction and the tests
-//! compare both paths.
+//! a cell edge) locates the four points p + (±ε, ±δ) around it
+//! symbolically: the 2-cells holding p are those holding all four. The
+//! 1- and 0-cells holding p are found by the pieces through it, its slab
+//! line and its point, and tested exactly. The tests compare every path
+//! with testing every cell of the class (`locate_exact`).
 
 use crate::fast::cmp_products;
 use crate::{dot_sign, small_i128, small_triple, sub};
@@ -112,6 +113,21 @@ pub struct ClassOverlay {
     pub slabs: Vec<Slab>,
     /// `xs` and `lines` as `i128`s when they all fit: the fast path.
     fast: Option<FastParts>,
+    /// The 1- and 0-cells by where they lie, for points on slab lines and
+    /// pieces. Derived from `items` and `lines`.
+    lower: LowerIndex,
+}
+
+/// The 1- and 0-cells of a class by their supporting line, their x (a
+/// vertical segment) or their point.
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
+struct LowerIndex {
+    /// Non-vertical segments by line id.
+    on_line: Vec<Vec<u32>>,
+    /// Vertical segments by their x.
+    vertical: HashMap<Rational, Vec<u32>>,
+    /// 0-cells by their point.
+    points: HashMap<RatPoint, Vec<u32>>,
 }
 
 /// The slab boundaries as (numerator, denominator) and the lines as
@@ -289,12 +305,37 @@ impl ClassOverlay {
             .iter()
             .map(|l| Some([small_i128(&l.a)?, small_i128(&l.b)?, small_i128(&l.c)?]))
             .collect();
+        let mut lower = LowerIndex {
+            on_line: vec![Vec::new(); lines.len()],
+            ..LowerIndex::default()
+        };
+        let line_ids: HashMap<&Line, u32> = lines
+            .iter()
+            .enumerate()
+            .map(|(i, l)| (l, i as u32))
+            .collect();
+        for (i, it) in items.iter().enumerate() {
+            let i = i as u32;
+            match &it.shape {
+                Shape::Polygon(_) => {}
+                Shape::Point(p) => lower.points.entry(p.clone()).or_default().push(i),
+                Shape::Segment(a, b) => {
+                    let x = x_of(a);
+                    if x == x_of(b) {
+                        lower.vertical.entry(x).or_default().push(i);
+                    } else if let Some(&l) = line_ids.get(&Line::through(a, b)) {
+                        lower.on_line[l as usize].push(i);
+                    }
+                }
+            }
+        }
         ClassOverlay {
             items,
             xs,
             lines,
             slabs,
             fast: fx.zip(fl),
+            lower,
         }
     }
 
@@ -328,7 +369,7 @@ impl ClassOverlay {
     pub fn locate(&self, p: &RatPoint) -> Vec<u32> {
         match self.locate_fast(p) {
             Some(found) => found.to_vec(),
-            None => self.locate_exact(p),
+            None => self.locate_degenerate(p),
         }
     }
 
@@ -354,6 +395,94 @@ impl ClassOverlay {
             }
         }
         Some(&slab.labels[lo])
+    }
+
+    /// A point on a slab line or a piece. The 2-cells (open and convex)
+    /// holding it are those holding the four points p + (±ε, ±δ), δ ≪ ε
+    /// infinitesimal, around it: each lies strictly inside a trapezoid, so
+    /// four symbolic point locations and the intersection of their labels
+    /// give them. The 1- and 0-cells holding it lie on a piece through it,
+    /// on its slab line, or at it, and are tested exactly.
+    fn locate_degenerate(&self, p: &RatPoint) -> Vec<u32> {
+        let q = small_triple(p);
+        let (left, right) = match self.slab_of(p, q) {
+            // On slab line i: the slabs on either side.
+            Ok(i) => (i.checked_sub(1), Some(i).filter(|&s| s < self.slabs.len())),
+            Err(i) if i == 0 || i == self.xs.len() => return Vec::new(),
+            Err(i) => (Some(i - 1), Some(i - 1)),
+        };
+        let mut found: Option<Vec<u32>> = None;
+        for (sx, slab) in [(Ordering::Greater, right), (Ordering::Less, left)] {
+            for sy in [Ordering::Greater, Ordering::Less] {
+                let label: &[u32] = match slab {
+                    Some(s) => self.label_beside(s, p, q, sx, sy),
+                    None => &[],
+                };
+                found = Some(match found {
+                    None => label.to_vec(),
+                    Some(f) => f
+                        .into_iter()
+                        .filter(|i| label.binary_search(i).is_ok())
+                        .collect(),
+                });
+            }
+        }
+        let mut found = found.unwrap_or_default();
+        let exact = |found: &mut Vec<u32>, ids: &[u32]| {
+            found.extend(ids.iter().filter(|&&i| self.items[i as usize].contains(p)));
+        };
+        if let Some(ids) = self.lower.points.get(p) {
+            found.extend(ids);
+        }
+        if let Ok(i) = self.slab_of(p, q) {
+            if let Some(ids) = self.lower.vertical.get(&self.xs[i]) {
+                exact(&mut found, ids);
+            }
+        }
+        // The pieces through p, in the slabs it touches: a contiguous run
+        // in each, the pieces being ordered there.
+        let mut seen: Vec<u32> = Vec::new();
+        for s in [left, right].into_iter().flatten() {
+            let pieces = &self.slabs[s].pieces;
+            let lo = pieces.partition_point(|&l| self.side(l, p, q) == Ordering::Greater);
+            let hi = pieces.partition_point(|&l| self.side(l, p, q) != Ordering::Less);
+            for &l in &pieces[lo..hi.max(lo)] {
+                if !seen.contains(&l) {
+                    seen.push(l);
+                    exact(&mut found, &self.lower.on_line[l as usize]);
+                }
+            }
+        }
+        found.sort_unstable();
+        found.dedup();
+        found
+    }
+
+    /// The label of the trapezoid of slab `s` holding p + (sx·ε, sy·δ),
+    /// δ ≪ ε infinitesimal (p in the slab's closure).
+    fn label_beside(
+        &self,
+        s: usize,
+        p: &RatPoint,
+        q: Option<[i128; 3]>,
+        sx: Ordering,
+        sy: Ordering,
+    ) -> &[u32] {
+        let slab = &self.slabs[s];
+        // The side of a (non-vertical, b > 0) line a·x + b·y = c: its sign
+        // at p, else the sign of a·sx·ε + b·sy·δ.
+        let side = |l: u32| match self.side(l, p, q) {
+            Ordering::Equal => match self.lines[l as usize].a.cmp0() {
+                Ordering::Equal => sy,
+                a if sx == Ordering::Greater => a,
+                a => a.reverse(),
+            },
+            o => o,
+        };
+        let k = slab
+            .pieces
+            .partition_point(|&l| side(l) == Ordering::Greater);
+        &slab.labels[k]
     }
 
     /// Every item tested for containment: the exact path for points on

@@ -81,12 +81,15 @@ pub fn check_map(map: &Map, random: usize, seed: u64) -> Tally {
         );
         let positions = answer.positions();
         t.one_shot_sweeps += c.one_shot_sweeps;
-        // Fast and exact point location agree where the fast one answers.
+        // Point location equals testing every cell (the fast path where it
+        // answers, the degenerate path on slab lines and pieces).
         let k = answer.class.expect("class");
         let o = loc.overlay(k);
+        let exact = o.locate_exact(&sk.robot);
         if let Some(fast) = o.locate_fast(&sk.robot) {
-            assert_eq!(fast, o.locate_exact(&sk.robot).as_slice());
+            assert_eq!(fast, exact.as_slice());
         }
+        assert_eq!(o.locate(&sk.robot), exact, "{:?}: at {p}", map.name());
         t.queries += 1;
         t.answers += positions.len();
         t.max_answers = t.max_answers.max(positions.len());
@@ -263,4 +266,80 @@ fn scaled_maps_take_the_exact_paths_and_agree() {
         let t = check_map(&scaled, 10, 5);
         assert!(t.queries > 50);
     }
+}
+
+/// The degenerate point location (on slab lines and pieces) against
+/// testing every cell, at the points where it is needed: every cell
+/// vertex, the midpoint and a third of every cell edge, every 0-cell, and
+/// every point where a piece meets a slab line (vertices and crossings).
+#[test]
+fn degenerate_point_location_equals_testing_every_cell() {
+    use rug::{Integer, Rational};
+    use wai_localize::overlay::Shape;
+    let mut checked = 0;
+    let mut degenerate = 0;
+    for map in maps() {
+        let loc = Localizer::new(&map);
+        for k in 0..loc.classes() {
+            let o = loc.overlay(k);
+            let mut pts: Vec<RatPoint> = Vec::new();
+            let along = |a: &RatPoint, b: &RatPoint, t: i64, of: i64| {
+                // a + (b − a)·t/of
+                let (aw, bw) = (a.hw(), b.hw());
+                let w = Integer::from(aw * bw) * of;
+                let x = Integer::from(a.hx() * bw) * (of - t) + Integer::from(b.hx() * aw) * t;
+                let y = Integer::from(a.hy() * bw) * (of - t) + Integer::from(b.hy() * aw) * t;
+                RatPoint::new(x, y, w).unwrap()
+            };
+            for it in &o.items {
+                match &it.shape {
+                    Shape::Polygon(ring) => {
+                        for (i, a) in ring.iter().enumerate() {
+                            let b = &ring[(i + 1) % ring.len()];
+                            pts.push(a.clone());
+                            pts.push(along(a, b, 1, 2));
+                            pts.push(along(a, b, 1, 3));
+                        }
+                    }
+                    Shape::Segment(a, b) => {
+                        pts.extend([a.clone(), b.clone(), along(a, b, 1, 2), along(a, b, 1, 3)]);
+                    }
+                    Shape::Point(a) => pts.push(a.clone()),
+                }
+            }
+            for (i, x) in o.xs.iter().enumerate() {
+                for s in [i.checked_sub(1), Some(i)].into_iter().flatten() {
+                    let Some(slab) = o.slabs.get(s) else { continue };
+                    for &l in &slab.pieces {
+                        let l = &o.lines[l as usize];
+                        let y = (Rational::from(&l.c) - Rational::from(&l.a) * x)
+                            / Rational::from(&l.b);
+                        let w = Integer::from(x.denom() * y.denom());
+                        pts.push(
+                            RatPoint::new(
+                                Integer::from(x.numer() * y.denom()),
+                                Integer::from(y.numer() * x.denom()),
+                                w,
+                            )
+                            .unwrap(),
+                        );
+                    }
+                }
+            }
+            for p in &pts {
+                if o.locate_fast(p).is_none() {
+                    degenerate += 1;
+                }
+                assert_eq!(
+                    o.locate(p),
+                    o.locate_exact(p),
+                    "{:?}: class {k} at {p}",
+                    map.name()
+                );
+                checked += 1;
+            }
+        }
+    }
+    eprintln!("{checked} points located, {degenerate} on slab lines or pieces");
+    assert!(degenerate > 10_000, "{degenerate}");
 }
