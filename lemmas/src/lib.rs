@@ -23,7 +23,8 @@
 //!   [`l3_7`], [`l3_7t`], [`t3_9a`], [`t3_9b`], [`t3_10`], [`l4_1`],
 //!   [`l4_5`], [`l4_6`], [`l4_7`], [`l4_8`], [`l4_9`], [`c4_10`], [`c4_15`],
 //!   [`c4_16`], [`l4_17`], [`l4_18`], [`t4_19`], [`c4_20`], [`t4_2`],
-//!   [`t4_3`], [`t5_17`] so far; the rest of chapter 5 to come.
+//!   [`t4_3`], [`l5_3`], [`l5_4`], [`t5_12`], [`t5_17`] so far; the rest of
+//!   chapter 5 to come.
 //!   Each module
 //!   - opens with a doc comment that states the claim in our own words and
 //!     cites the thesis (`/// Claim T4.2 (Theorem 4.2).`),
@@ -69,6 +70,8 @@ pub mod l4_6;
 pub mod l4_7;
 pub mod l4_8;
 pub mod l4_9;
+pub mod l5_3;
+pub mod l5_4;
 pub mod ratio;
 pub mod sample;
 pub mod study;
@@ -81,6 +84,7 @@ pub mod t3_9b;
 pub mod t4_19;
 pub mod t4_2;
 pub mod t4_3;
+pub mod t5_12;
 pub mod t5_17;
 
 pub use driver::{run, Checker, ClaimTally, FoundViolation, Report, Summary, Violation};
@@ -486,13 +490,15 @@ pub static CLAIMS: &[Claim] = &[
         ExactTight,
         "Lemma 5.3, Fig 5.4",
         "There are at most s*t single candidate edges, so O(min{n, r^2}), and Omega(r^2) is reached.",
-    ),
+    )
+    .checked(l5_3::checker),
     c(
         "L5.4",
         Exact,
         "Lemma 5.4",
         "The number of gaps and the number of multiple candidate edges are within a factor 2 of each other.",
-    ),
+    )
+    .checked(l5_4::checker),
     c(
         "L5.5",
         Exact,
@@ -528,7 +534,8 @@ pub static CLAIMS: &[Claim] = &[
         Bound,
         "Theorem 5.12",
         "A skeleton has O(r) multiple candidate edges.",
-    ),
+    )
+    .checked(t5_12::checker),
     c(
         "L5.13",
         Exact,

@@ -15,8 +15,8 @@ use std::rc::Rc;
 use wai_cells::{Arrangement, Decomposition, VisibilityRay};
 use wai_embed::{
     crossing, interiors_overlap, kernels_overlap, sight_fans, witness_regions, witness_views,
-    Bounds, Crossing, Embedder, Embedding, Intersection, Mutual, SightFan, Sightlines,
-    SkeletonRing, Witnesses,
+    Bounds, CandidateSets, Crossing, Embedder, Embedding, Intersection, Mutual, SightFan,
+    Sightlines, SkeletonRing, Witnesses,
 };
 use wai_map::Map;
 use wai_visibility::{ConvexRegion, VisibilityIndex, VisibilityPolygon};
@@ -47,6 +47,8 @@ pub struct Study<'m> {
     views: OnceCell<Vec<Vec<Views>>>,
     /// By class and embedding: the valid candidate edges, read off `views`.
     valid: OnceCell<Vec<Vec<Vec<Vec<usize>>>>>,
+    /// By class: C_{i,j} over its valid embeddings (Defs 5.4, 5.5).
+    candidate_sets: OnceCell<Vec<CandidateSets>>,
     /// By class and embedding: the sight fans of its witness cells, each
     /// embedding's built when first asked for.
     fans: OnceCell<Vec<Vec<OnceCell<Vec<SightFan>>>>>,
@@ -132,6 +134,7 @@ impl<'m> Study<'m> {
             pairs: OnceCell::new(),
             views: OnceCell::new(),
             valid: OnceCell::new(),
+            candidate_sets: OnceCell::new(),
             fans: OnceCell::new(),
             crossings: RefCell::new(HashMap::new()),
         }
@@ -425,6 +428,32 @@ impl<'m> Study<'m> {
                 })
                 .collect()
         })[class][embedding]
+    }
+
+    /// By class: the sets C_{i,j} of valid candidate edges over the valid
+    /// embeddings of its skeleton, with its single and multiple candidate
+    /// edges (Def 5.4) and gaps (Def 5.5).
+    pub fn candidate_sets(&self) -> &[CandidateSets] {
+        self.candidate_sets.get_or_init(|| {
+            let keys = self.decomposition().skeletons();
+            (0..keys.len())
+                .map(|class| {
+                    let artificial: Vec<usize> = keys[class]
+                        .labels
+                        .iter()
+                        .enumerate()
+                        .filter_map(|(i, l)| l.as_ref().map(|_| i))
+                        .collect();
+                    let valid: Vec<(usize, Vec<Vec<usize>>)> = self.witnesses()[class]
+                        .iter()
+                        .enumerate()
+                        .filter(|(_, w)| w.is_valid())
+                        .map(|(j, _)| (j, self.valid_candidates(class, j).to_vec()))
+                        .collect();
+                    CandidateSets::new(self.map, artificial, valid)
+                })
+                .collect()
+        })
     }
 
     /// V_p of each of [`sample::viewpoints`]`(map, limit)`, by the

@@ -17,6 +17,7 @@
 //! No floating point: positions along edges are GMP rationals, every sign
 //! an exact integer predicate.
 
+mod candidate_sets;
 mod crossing;
 mod embedding;
 pub mod intersection;
@@ -27,6 +28,7 @@ mod sight;
 mod transversal;
 mod witness;
 
+pub use candidate_sets::CandidateSets;
 pub use crossing::{crossing, Crossing, SightFan};
 pub use embedding::{embeddings, Embedder, Embedding};
 pub use intersection::{EdgeType, Intersection, SkeletonRing};
