@@ -23,7 +23,7 @@
 //!   [`l3_7`], [`l3_7t`], [`t3_9a`], [`t3_9b`], [`t3_10`], [`l4_1`],
 //!   [`l4_5`], [`l4_6`], [`l4_7`], [`l4_8`], [`l4_9`], [`c4_10`], [`c4_15`],
 //!   [`c4_16`], [`l4_17`], [`l4_18`], [`t4_19`], [`c4_20`], [`t4_2`],
-//!   [`t4_3`], [`l5_3`], [`l5_4`], [`t5_12`], [`t5_17`] so far; the rest of
+//!   [`t4_3`], [`o5_3`], [`l5_3`], [`l5_4`], [`t5_12`], [`t5_17`] so far; the rest of
 //!   chapter 5 to come.
 //!   Each module
 //!   - opens with a doc comment that states the claim in our own words and
@@ -72,6 +72,7 @@ pub mod l4_8;
 pub mod l4_9;
 pub mod l5_3;
 pub mod l5_4;
+pub mod o5_3;
 pub mod ratio;
 pub mod sample;
 pub mod study;
@@ -472,7 +473,8 @@ pub static CLAIMS: &[Claim] = &[
         Exact,
         "Observation 5.3",
         "Every edge of every cell of an equivalence class is a kernel edge or a wedge edge.",
-    ),
+    )
+    .checked(o5_3::checker),
     c(
         "L5.1",
         Bound,

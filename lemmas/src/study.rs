@@ -13,6 +13,7 @@ use std::collections::{BTreeMap, HashMap};
 use std::rc::Rc;
 
 use wai_cells::{Arrangement, Decomposition, VisibilityRay};
+use wai_embed::wedge::{classify_cell_edges, CellEdgeKind};
 use wai_embed::{
     crossing, interiors_overlap, kernels_overlap, sight_fans, witness_regions, witness_views,
     Bounds, CandidateSets, Crossing, Embedder, Embedding, Intersection, Mutual, SightFan,
@@ -49,6 +50,8 @@ pub struct Study<'m> {
     valid: OnceCell<Vec<Vec<Vec<Vec<usize>>>>>,
     /// By class: C_{i,j} over its valid embeddings (Defs 5.4, 5.5).
     candidate_sets: OnceCell<Vec<CandidateSets>>,
+    /// By class, by cell: its edges as Def 5.2 classifies them.
+    cell_edges: OnceCell<Vec<Vec<CellEdges>>>,
     /// By class and embedding: the sight fans of its witness cells, each
     /// embedding's built when first asked for.
     fans: OnceCell<Vec<Vec<OnceCell<Vec<SightFan>>>>>,
@@ -110,6 +113,17 @@ pub struct OverlappingPair {
     pub sight: Mutual,
 }
 
+/// The edges of one 2-cell of a class, classified by Def 5.2 in the
+/// embedding the cell lies in.
+#[derive(Debug, Clone)]
+pub struct CellEdges {
+    pub cell: wai_cells::FaceId,
+    /// Its embedding: the index in [`Study::embeddings`] of the class.
+    pub embedding: usize,
+    /// By edge of the cell (from vertex k to k + 1 of its face points).
+    pub kinds: Vec<CellEdgeKind>,
+}
+
 /// An embedding of a class's skeleton (Def 3.11) and its kernel
 /// h(ker V*) (Def 3.12), in map coordinates.
 #[derive(Debug, Clone)]
@@ -135,6 +149,7 @@ impl<'m> Study<'m> {
             views: OnceCell::new(),
             valid: OnceCell::new(),
             candidate_sets: OnceCell::new(),
+            cell_edges: OnceCell::new(),
             fans: OnceCell::new(),
             crossings: RefCell::new(HashMap::new()),
         }
@@ -451,6 +466,46 @@ impl<'m> Study<'m> {
                         .map(|(j, _)| (j, self.valid_candidates(class, j).to_vec()))
                         .collect();
                     CandidateSets::new(self.map, artificial, valid)
+                })
+                .collect()
+        })
+    }
+
+    /// By class, by 2-cell: the cell's edges as kernel or wedge edges
+    /// (Def 5.2) of the embedding it lies in (the one whose origin is the
+    /// cell's skeleton origin), the wedges those of its valid candidate
+    /// edges.
+    pub fn cell_edges(&self) -> &[Vec<CellEdges>] {
+        self.cell_edges.get_or_init(|| {
+            let d = self.decomposition();
+            let arr = self.arrangement();
+            d.classes()
+                .iter()
+                .enumerate()
+                .map(|(class, cells)| {
+                    let hs = &self.embeddings()[class];
+                    cells
+                        .iter()
+                        .map(|&f| {
+                            let o = d.origin_of(f);
+                            let j = hs
+                                .iter()
+                                .position(|h| h.embedding.origin == o)
+                                .expect("a cell's skeleton is embedded at its own origin");
+                            let kinds = classify_cell_edges(
+                                self.map,
+                                &hs[j].embedding,
+                                &hs[j].kernel,
+                                self.valid_candidates(class, j),
+                                &arr.face_points(f),
+                            );
+                            CellEdges {
+                                cell: f,
+                                embedding: j,
+                                kinds,
+                            }
+                        })
+                        .collect()
                 })
                 .collect()
         })

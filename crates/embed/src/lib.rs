@@ -26,6 +26,7 @@ mod overlay;
 pub mod piece;
 mod sight;
 mod transversal;
+pub mod wedge;
 mod witness;
 
 pub use candidate_sets::CandidateSets;
