@@ -15,7 +15,8 @@
 //! - [`sample`]: the viewpoints and visibility polygons the chapter 3
 //!   checkers examine, and Def 3.4 read off a polygon's geometry. Like
 //!   `driver`, not a claim's module; nor are [`ratio`] (the bound checkers'
-//!   ratios), [`study`] (the structures built once per map) and [`family`]
+//!   ratios), [`study`] (the structures built once per map), [`wedge_counts`]
+//!   (kernel and wedge edges counted per class and embedding) and [`family`]
 //!   (which maps are a thesis family, for the `tight` checkers).
 //! - One module per claim, named after the claim's id in lower case with `.`
 //!   replaced by `_` ([`Claim::module_name`]): [`l3_1a`], [`l3_1b`],
@@ -23,7 +24,8 @@
 //!   [`l3_7`], [`l3_7t`], [`t3_9a`], [`t3_9b`], [`t3_10`], [`l4_1`],
 //!   [`l4_5`], [`l4_6`], [`l4_7`], [`l4_8`], [`l4_9`], [`c4_10`], [`c4_15`],
 //!   [`c4_16`], [`l4_17`], [`l4_18`], [`t4_19`], [`c4_20`], [`t4_2`],
-//!   [`t4_3`], [`o5_3`], [`l5_3`], [`l5_4`], [`t5_12`], [`t5_17`] so far; the rest of
+//!   [`t4_3`], [`o5_3`], [`l5_1`], [`l5_2`], [`l5_3`], [`l5_4`], [`t5_12`],
+//!   [`t5_16`], [`t5_17`] so far; the rest of
 //!   chapter 5 to come.
 //!   Each module
 //!   - opens with a doc comment that states the claim in our own words and
@@ -70,6 +72,8 @@ pub mod l4_6;
 pub mod l4_7;
 pub mod l4_8;
 pub mod l4_9;
+pub mod l5_1;
+pub mod l5_2;
 pub mod l5_3;
 pub mod l5_4;
 pub mod o5_3;
@@ -86,7 +90,9 @@ pub mod t4_19;
 pub mod t4_2;
 pub mod t4_3;
 pub mod t5_12;
+pub mod t5_16;
 pub mod t5_17;
+pub mod wedge_counts;
 
 pub use driver::{run, Checker, ClaimTally, FoundViolation, Report, Summary, Violation};
 pub use study::Study;
@@ -480,13 +486,15 @@ pub static CLAIMS: &[Claim] = &[
         Bound,
         "Lemma 5.1",
         "An equivalence class has O(n + r^2 + W) kernel edges, W its wedge edges.",
-    ),
+    )
+    .checked(l5_1::checker),
     c(
         "L5.2",
         Bound,
         "Lemma 5.2",
         "Wedge edges in one embedding are O(r + (sum of (c_ij - 1))^2 - sum of (c_ij - 1)^2).",
-    ),
+    )
+    .checked(l5_2::checker),
     c(
         "L5.3",
         ExactTight,
@@ -561,7 +569,8 @@ pub static CLAIMS: &[Claim] = &[
         Bound,
         "Theorem 5.16",
         "An equivalence class has O(r^2) wedge edges.",
-    ),
+    )
+    .checked(t5_16::checker),
     c(
         "T5.17",
         Bound,

@@ -1,0 +1,98 @@
+//! Claim L5.2 (Lemma 5.2): the wedge edges of the cells in one embedding
+//! h_j number O(r + (Σ_i (c_{i,j} − 1))² − Σ_i (c_{i,j} − 1)²). Measured:
+//! the ratio W_j over that expression, its maximum over the valid
+//! embeddings of every class of a map.
+//!
+//! ## Trust
+//! Exact counts: W_j from the classification of every cell edge (Def 5.2)
+//! of the cells whose origin is h_j(v0), c_{i,j} from
+//! [`crate::Study::candidate_sets`]. A bound is never decided by one map
+//! (see [`crate::ratio`]).
+
+use rug::Rational;
+use serde_json::json;
+
+use crate::driver::{Checker, Report};
+use crate::wedge_counts::{counts, ratio, ratio_report};
+use crate::Study;
+
+const ID: &str = "L5.2";
+
+/// The ceiling, 8× the largest ratio seen: 2 (random-simple-2opt n = 11)
+/// over the 1,502 maps of [`crate::l5_1::ceiling`].
+pub fn ceiling() -> Rational {
+    Rational::from(16)
+}
+
+/// Checks L5.2.
+#[derive(Debug, Clone, Copy, Default)]
+pub struct WedgeEdgesPerEmbedding;
+
+/// The registry's constructor.
+pub fn checker() -> Box<dyn Checker> {
+    Box::new(WedgeEdgesPerEmbedding)
+}
+
+/// r + (Σ (c − 1))² − Σ (c − 1)² for the c_{i,j} of one embedding.
+pub fn bound(r: usize, cs: &[usize]) -> u128 {
+    let excess: Vec<u128> = cs.iter().map(|&c| c.saturating_sub(1) as u128).collect();
+    let sum: u128 = excess.iter().sum();
+    let squares: u128 = excess.iter().map(|x| x * x).sum();
+    r as u128 + sum * sum - squares
+}
+
+/// The report and the ratio.
+pub fn check_with_ratio(study: &Study<'_>, ceiling: &Rational) -> (Report, Rational) {
+    let map = study.map();
+    let sets = study.candidate_sets();
+    let mut largest: Option<(Rational, serde_json::Value)> = None;
+    for (class, c) in counts(study.cell_edges()).iter().enumerate() {
+        for (&j, &w) in &c.wedge_by_embedding {
+            let Some(pos) = sets[class].embeddings.iter().position(|&e| e == j) else {
+                continue; // cells lie in valid embeddings only
+            };
+            let cij: Vec<usize> = sets[class].sets[pos].iter().map(Vec::len).collect();
+            let b = bound(map.r(), &cij);
+            let value = ratio(w, b);
+            if largest.as_ref().is_none_or(|l| value > l.0) {
+                largest = Some((
+                    value,
+                    json!({ "class": class, "embedding": j, "wedge": w, "c": cij, "bound": b.to_string() }),
+                ));
+            }
+        }
+    }
+    ratio_report(ID, map, largest, ceiling)
+}
+
+impl Checker for WedgeEdgesPerEmbedding {
+    fn id(&self) -> &'static str {
+        ID
+    }
+    fn check_study(&self, study: &Study<'_>) -> Report {
+        check_with_ratio(study, &ceiling()).0
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_bound_of_the_lemma() {
+        // c = (3, 2, 1): excesses 2, 1, 0; (2 + 1)² − (4 + 1) = 4; plus r.
+        assert_eq!(bound(5, &[3, 2, 1]), 9);
+        assert_eq!(bound(0, &[1, 1]), 0);
+    }
+
+    #[test]
+    fn measures_and_fails_against_a_low_ceiling() {
+        let map = wai_gen::family("convex-niches", &[2]).unwrap();
+        let study = Study::new(&map);
+        let (report, ratio) = check_with_ratio(&study, &ceiling());
+        assert_eq!((report.examined, report.violations.len()), (1, 0));
+        assert!(ratio > 0);
+        let (report, _) = check_with_ratio(&study, &(ratio.clone() / 2));
+        assert_eq!(report.violations.len(), 1);
+    }
+}
