@@ -13,7 +13,7 @@ use rug::Rational;
 use serde_json::json;
 
 use crate::driver::{Checker, Report};
-use crate::wedge_counts::{counts, ratio, ratio_report};
+use crate::wedge_counts::{counts, ratio, ratio_report, EdgeBound};
 use crate::Study;
 
 const ID: &str = "L5.2";
@@ -25,12 +25,15 @@ pub fn ceiling() -> Rational {
 }
 
 /// Checks L5.2.
-#[derive(Debug, Clone, Copy, Default)]
-pub struct WedgeEdgesPerEmbedding;
+pub const CHECKER: EdgeBound = EdgeBound {
+    id: ID,
+    check_with_ratio,
+    ceiling,
+};
 
 /// The registry's constructor.
 pub fn checker() -> Box<dyn Checker> {
-    Box::new(WedgeEdgesPerEmbedding)
+    Box::new(CHECKER)
 }
 
 /// r + (Σ (c − 1))² − Σ (c − 1)² for the c_{i,j} of one embedding.
@@ -65,15 +68,6 @@ pub fn check_with_ratio(study: &Study<'_>, ceiling: &Rational) -> (Report, Ratio
     ratio_report(ID, map, largest, ceiling)
 }
 
-impl Checker for WedgeEdgesPerEmbedding {
-    fn id(&self) -> &'static str {
-        ID
-    }
-    fn check_study(&self, study: &Study<'_>) -> Report {
-        check_with_ratio(study, &ceiling()).0
-    }
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -86,13 +80,7 @@ mod tests {
     }
 
     #[test]
-    fn measures_and_fails_against_a_low_ceiling() {
-        let map = wai_gen::family("convex-niches", &[2]).unwrap();
-        let study = Study::new(&map);
-        let (report, ratio) = check_with_ratio(&study, &ceiling());
-        assert_eq!((report.examined, report.violations.len()), (1, 0));
-        assert!(ratio > 0);
-        let (report, _) = check_with_ratio(&study, &(ratio.clone() / 2));
-        assert_eq!(report.violations.len(), 1);
+    fn measures_and_can_fail() {
+        crate::wedge_counts::assert_measures_and_can_fail(&CHECKER);
     }
 }

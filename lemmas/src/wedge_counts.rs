@@ -8,9 +8,47 @@ use rug::Rational;
 use serde_json::json;
 use wai_embed::wedge::CellEdgeKind;
 
-use crate::driver::{Report, Violation};
+use crate::driver::{Checker, Report, Violation};
 use crate::ratio::over;
-use crate::sample;
+use crate::{sample, Study};
+
+/// A bound claim measured on the Def 5.2 counts: its id, the measurement
+/// (report and largest ratio against a given ceiling) and its ceiling.
+#[derive(Debug, Clone, Copy)]
+pub struct EdgeBound {
+    pub id: &'static str,
+    pub check_with_ratio: fn(&Study<'_>, &Rational) -> (Report, Rational),
+    pub ceiling: fn() -> Rational,
+}
+
+impl Checker for EdgeBound {
+    fn id(&self) -> &'static str {
+        self.id
+    }
+    fn check_study(&self, study: &Study<'_>) -> Report {
+        (self.check_with_ratio)(study, &(self.ceiling)()).0
+    }
+}
+
+/// The test every [`EdgeBound`] passes: on `convex-niches` k = 2 it
+/// examines the map once with a positive ratio under its ceiling, and
+/// reports a violation against a ceiling of half that ratio.
+#[cfg(test)]
+pub(crate) fn assert_measures_and_can_fail(bound: &EdgeBound) {
+    let map = wai_gen::family("convex-niches", &[2]).unwrap();
+    let study = Study::new(&map);
+    let (report, ratio) = (bound.check_with_ratio)(&study, &(bound.ceiling)());
+    assert_eq!(
+        (report.examined, report.violations.len()),
+        (1, 0),
+        "{}",
+        bound.id
+    );
+    assert!(ratio > 0, "{}", bound.id);
+    let (report, _) = (bound.check_with_ratio)(&study, &(ratio / 2));
+    assert_eq!(report.violations.len(), 1, "{}", bound.id);
+    assert!(report.violations[0].what.contains("above the ceiling"));
+}
 
 /// Kernel edges K and wedge edges W of one class, and W_j by embedding
 /// index (of the class's embeddings).
