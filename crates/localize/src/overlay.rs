@@ -405,7 +405,8 @@ impl ClassOverlay {
     /// on its slab line, or at it, and are tested exactly.
     fn locate_degenerate(&self, p: &RatPoint) -> Vec<u32> {
         let q = small_triple(p);
-        let (left, right) = match self.slab_of(p, q) {
+        let at = self.slab_of(p, q);
+        let (left, right) = match at {
             // On slab line i: the slabs on either side.
             Ok(i) => (i.checked_sub(1), Some(i).filter(|&s| s < self.slabs.len())),
             Err(i) if i == 0 || i == self.xs.len() => return Vec::new(),
@@ -434,7 +435,7 @@ impl ClassOverlay {
         if let Some(ids) = self.lower.points.get(p) {
             found.extend(ids);
         }
-        if let Ok(i) = self.slab_of(p, q) {
+        if let Ok(i) = at {
             if let Some(ids) = self.lower.vertical.get(&self.xs[i]) {
                 exact(&mut found, ids);
             }

@@ -9,7 +9,7 @@
 //! kinds and the skeleton follow (Defs 3.5–3.7). Tests compare the result
 //! with the map-side skeleton of the same viewpoint.
 
-use crate::fast::{cmp_products, det2, ExactDivisor};
+use crate::fast::{cmp_products, det2};
 use crate::{dot_sign, small_triple, sub};
 use rug::Integer;
 use std::cmp::Ordering;
@@ -105,6 +105,17 @@ pub(crate) fn label_through(p: &RatPoint, q: &RatPoint, o: &RatPoint) -> LineLab
     // a·x + b·y = c with c = −C.
     let c = Integer::from(p.hy() * q.hx()) - Integer::from(p.hx() * q.hy());
     LineLabel::normalized(a, b, c)
+}
+
+/// (nx/den, ny/den) if den divides both: in i64 where the values fit
+/// (`i128` division is a slow library call), one division each, checked by
+/// a product.
+fn exact_quotients(nx: i128, ny: i128, den: i128) -> Option<(i128, i128)> {
+    if let (Ok(nx), Ok(ny), Ok(den)) = (i64::try_from(nx), i64::try_from(ny), i64::try_from(den)) {
+        let (qx, qy) = (nx / den, ny / den);
+        return (qx * den == nx && qy * den == ny).then(|| (i128::from(qx), i128::from(qy)));
+    }
+    (nx % den == 0 && ny % den == 0).then(|| (nx / den, ny / den))
 }
 
 impl RobotView {
@@ -329,9 +340,8 @@ impl RobotView {
         })
     }
 
-    /// v_i − v_o if it is an integer vector; `div` divides by v_o's
-    /// denominator.
-    fn offset(&self, i: usize, o: usize, div: Option<&ExactDivisor>) -> Option<(i128, i128)> {
+    /// v_i − v_o if it is an integer vector.
+    fn offset(&self, i: usize, o: usize) -> Option<(i128, i128)> {
         if let Some(f) = &self.fast {
             let (p, q) = (&f[i], &f[o]);
             if p[2] == q[2] {
@@ -340,30 +350,14 @@ impl RobotView {
                 if w == 1 {
                     return Some((nx, ny));
                 }
-                if let (Some(div), Ok(nx), Ok(ny)) = (div, i64::try_from(nx), i64::try_from(ny)) {
-                    return Some((div.divide(nx)?, div.divide(ny)?));
-                }
-                return (nx % w == 0 && ny % w == 0).then(|| (nx / w, ny / w));
+                return exact_quotients(nx, ny, w);
             }
             if let (Some(nx), Some(ny), Some(den)) = (
                 det2(p[0], q[2], q[0], p[2]),
                 det2(p[1], q[2], q[1], p[2]),
                 p[2].checked_mul(q[2]),
             ) {
-                // i64 division where it fits: i128 division is a slow
-                // library call.
-                if let (Ok(nx), Ok(ny), Ok(den)) =
-                    (i64::try_from(nx), i64::try_from(ny), i64::try_from(den))
-                {
-                    if den == 1 {
-                        return Some((i128::from(nx), i128::from(ny)));
-                    }
-                    // One division each, checked by a product.
-                    let (qx, qy) = (nx / den, ny / den);
-                    return (qx * den == nx && qy * den == ny)
-                        .then(|| (i128::from(qx), i128::from(qy)));
-                }
-                return (nx % den == 0 && ny % den == 0).then(|| (nx / den, ny / den));
+                return exact_quotients(nx, ny, den);
             }
         }
         sub(&self.vertices[i], &self.vertices[o])
@@ -453,17 +447,9 @@ impl RobotView {
         let k = order.len();
         let mut offsets = Vec::with_capacity(k);
         let mut labels = Vec::with_capacity(k);
-        let div = self
-            .fast
-            .as_ref()
-            .and_then(|f| u64::try_from(f[o0][2]).ok())
-            .and_then(ExactDivisor::new);
         for s in 0..k {
             let (i, j) = (order[s], order[(s + 1) % k]);
-            offsets.push(
-                self.offset(i, o0, div.as_ref())
-                    .ok_or(NoSkeleton::OffGrid(i))?,
-            );
+            offsets.push(self.offset(i, o0).ok_or(NoSkeleton::OffGrid(i))?);
             // The edges from i to j: one solid edge, maybe with a
             // spurious edge before and after it.
             let len = (j + m - i) % m;
