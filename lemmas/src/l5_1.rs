@@ -11,7 +11,8 @@ use rug::Rational;
 use serde_json::json;
 
 use crate::driver::{Checker, Report};
-use crate::wedge_counts::{counts, ratio, ratio_report, EdgeBound};
+use crate::ratio::over;
+use crate::wedge_counts::{counts, ratio_report, EdgeBound};
 use crate::Study;
 
 const ID: &str = "L5.1";
@@ -46,7 +47,7 @@ pub fn check_with_ratio(study: &Study<'_>, ceiling: &Rational) -> (Report, Ratio
         .filter(|(_, c)| c.kernel + c.wedge > 0)
         .map(|(k, c)| {
             (
-                ratio(c.kernel, n + r * r + c.wedge as u128),
+                over(c.kernel, n + r * r + c.wedge as u128),
                 json!({ "class": k, "kernel": c.kernel, "wedge": c.wedge }),
             )
         })

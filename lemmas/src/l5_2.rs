@@ -13,7 +13,8 @@ use rug::Rational;
 use serde_json::json;
 
 use crate::driver::{Checker, Report};
-use crate::wedge_counts::{counts, ratio, ratio_report, EdgeBound};
+use crate::ratio::over;
+use crate::wedge_counts::{counts, ratio_report, EdgeBound};
 use crate::Study;
 
 const ID: &str = "L5.2";
@@ -56,7 +57,7 @@ pub fn check_with_ratio(study: &Study<'_>, ceiling: &Rational) -> (Report, Ratio
             };
             let cij: Vec<usize> = sets[class].sets[pos].iter().map(Vec::len).collect();
             let b = bound(map.r(), &cij);
-            let value = ratio(w, b);
+            let value = over(w, b);
             if largest.as_ref().is_none_or(|l| value > l.0) {
                 largest = Some((
                     value,

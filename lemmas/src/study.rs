@@ -13,7 +13,7 @@ use std::collections::{BTreeMap, HashMap};
 use std::rc::Rc;
 
 use wai_cells::{Arrangement, Decomposition, VisibilityRay};
-use wai_embed::wedge::{classify_cell_edges, CellEdgeKind};
+use wai_embed::wedge::{classify_cell_edges, embedding_wedge_lines, CellEdgeKind};
 use wai_embed::{
     crossing, interiors_overlap, kernels_overlap, sight_fans, witness_regions, witness_views,
     Bounds, CandidateSets, Crossing, Embedder, Embedding, Intersection, Mutual, SightFan,
@@ -484,6 +484,8 @@ impl<'m> Study<'m> {
                 .enumerate()
                 .map(|(class, cells)| {
                     let hs = &self.embeddings()[class];
+                    let mut lines: BTreeMap<usize, Vec<(wai_exact::Point, wai_exact::Point)>> =
+                        BTreeMap::new();
                     cells
                         .iter()
                         .map(|&f| {
@@ -492,13 +494,15 @@ impl<'m> Study<'m> {
                                 .iter()
                                 .position(|h| h.embedding.origin == o)
                                 .expect("a cell's skeleton is embedded at its own origin");
-                            let kinds = classify_cell_edges(
-                                self.map,
-                                &hs[j].embedding,
-                                &hs[j].kernel,
-                                self.valid_candidates(class, j),
-                                &arr.face_points(f),
-                            );
+                            let lines = lines.entry(j).or_insert_with(|| {
+                                embedding_wedge_lines(
+                                    self.map,
+                                    &hs[j].embedding,
+                                    self.valid_candidates(class, j),
+                                )
+                            });
+                            let kinds =
+                                classify_cell_edges(&hs[j].kernel, lines, &arr.face_points(f));
                             CellEdges {
                                 cell: f,
                                 embedding: j,

@@ -11,7 +11,8 @@ use rug::Rational;
 use serde_json::json;
 
 use crate::driver::{Checker, Report};
-use crate::wedge_counts::{counts, ratio, ratio_report, EdgeBound};
+use crate::ratio::over;
+use crate::wedge_counts::{counts, ratio_report, EdgeBound};
 use crate::Study;
 
 const ID: &str = "T5.16";
@@ -42,7 +43,7 @@ pub fn check_with_ratio(study: &Study<'_>, ceiling: &Rational) -> (Report, Ratio
         .iter()
         .enumerate()
         .filter(|(_, c)| c.kernel + c.wedge > 0)
-        .map(|(k, c)| (ratio(c.wedge, r2), json!({ "class": k, "wedge": c.wedge })))
+        .map(|(k, c)| (over(c.wedge, r2), json!({ "class": k, "wedge": c.wedge })))
         .max_by(|a, b| a.0.cmp(&b.0));
     ratio_report(ID, map, largest, ceiling)
 }

@@ -9,7 +9,6 @@ use serde_json::json;
 use wai_embed::wedge::CellEdgeKind;
 
 use crate::driver::{Checker, Report, Violation};
-use crate::ratio::over;
 use crate::{sample, Study};
 
 /// A bound claim measured on the Def 5.2 counts: its id, the measurement
@@ -112,9 +111,4 @@ pub fn ratio_report(
         )
     }));
     (report, ratio)
-}
-
-/// `a / b` as a ratio (b at least 1).
-pub fn ratio(a: usize, b: u128) -> Rational {
-    over(a, b)
 }

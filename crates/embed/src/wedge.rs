@@ -67,17 +67,15 @@ fn on_line(p: Point, q: Point, x: &RatPoint) -> bool {
     orientation_rat(&RatPoint::from(p), &RatPoint::from(q), x) == Orientation::Collinear
 }
 
-/// Def 5.2 for every edge of `cell` (its vertices counter-clockwise, edge
-/// k from vertex k to k + 1) in embedding `h` with kernel `kernel`, the
-/// wedges being those of the valid candidate edges `valid` (by skeleton
-/// edge, as `crate::valid_candidate_edges` gives them).
-pub fn classify_cell_edges(
+/// The bounding lines of every visibility wedge of embedding `h`: those of
+/// each artificial edge with each of its valid candidate edges `valid` (by
+/// skeleton edge, as `crate::valid_candidate_edges` gives them). One list
+/// per embedding serves all its cells.
+pub fn embedding_wedge_lines(
     map: &Map,
     h: &Embedding,
-    kernel: &ConvexRegion,
     valid: &[Vec<usize>],
-    cell: &[RatPoint],
-) -> Vec<CellEdgeKind> {
+) -> Vec<(Point, Point)> {
     let v = map.vertices();
     let n = v.len();
     let k = h.vertices.len();
@@ -88,6 +86,17 @@ pub fn classify_cell_edges(
             lines.extend(wedge_lines(ab, (v[e], v[(e + 1) % n])));
         }
     }
+    lines
+}
+
+/// Def 5.2 for every edge of `cell` (its vertices counter-clockwise, edge
+/// k from vertex k to k + 1) in an embedding with kernel `kernel` and
+/// wedge lines `lines` ([`embedding_wedge_lines`]).
+pub fn classify_cell_edges(
+    kernel: &ConvexRegion,
+    lines: &[(Point, Point)],
+    cell: &[RatPoint],
+) -> Vec<CellEdgeKind> {
     let kv = kernel.vertices();
     let m = cell.len();
     (0..m)
