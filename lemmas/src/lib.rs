@@ -57,6 +57,7 @@ pub mod c4_20;
 pub mod corpus;
 pub mod d3_5;
 pub mod driver;
+pub mod edge_pairs;
 pub mod family;
 pub mod l3_1a;
 pub mod l3_1b;
@@ -90,6 +91,7 @@ pub mod t4_19;
 pub mod t4_2;
 pub mod t4_3;
 pub mod t5_12;
+pub mod t5_15;
 pub mod t5_16;
 pub mod t5_17;
 pub mod wedge_counts;
@@ -563,7 +565,8 @@ pub static CLAIMS: &[Claim] = &[
         Exact,
         "Theorem 5.15",
         "A valid candidate edge and a valid multiple candidate edge of different artificial edges share at most 6 embeddings.",
-    ),
+    )
+    .checked(t5_15::checker),
     c(
         "T5.16",
         Bound,

@@ -1,0 +1,84 @@
+//! Pairs of map edges that are candidate edges of *different* artificial
+//! edges in one embedding: the premise shared by Lemma 5.13, Lemma 5.14
+//! and Theorem 5.15 (sec. 5.5).
+//!
+//! For map edges e, f and a valid embedding h_j of a skeleton, (e, f) is
+//! such a pair in h_j when e ∈ C_{i,j} and f ∈ C_{ĩ,j} for artificial
+//! edges a_i ≠ a_ĩ. By Lemma 4.17 the sets of one embedding are disjoint,
+//! so each of e and f has at most one artificial edge in h_j (a violation
+//! of that is L4.17's to report; here the first set holding an edge is
+//! taken).
+
+use std::collections::BTreeMap;
+
+use wai_embed::CandidateSets;
+
+/// One embedding in which a pair of map edges are candidate edges of
+/// different artificial edges.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Shared {
+    /// The embedding's position j in [`CandidateSets::embeddings`].
+    pub j: usize,
+    /// The position i of e's artificial edge in [`CandidateSets::artificial`].
+    pub i: usize,
+    /// The same of f's, ĩ ≠ i.
+    pub i_tilde: usize,
+    /// Whether f is a multiple candidate edge *in that set*: |C_{ĩ,j}| > 1.
+    /// Theorem 5.15's proof and eq. (5.9) use multiplicity in this sense
+    /// (f shares C_{ĩ,j} with another candidate edge f_u).
+    pub f_multiple: bool,
+}
+
+/// By ordered pair (e, f) of map edges, e ≠ f: every valid embedding in
+/// which e and f are candidate edges of different artificial edges, in
+/// increasing j.
+pub fn shared_embeddings(c: &CandidateSets) -> BTreeMap<(usize, usize), Vec<Shared>> {
+    let mut out: BTreeMap<(usize, usize), Vec<Shared>> = BTreeMap::new();
+    for (j, by_edge) in c.sets.iter().enumerate() {
+        // Map edge -> the first artificial edge holding it (Lemma 4.17).
+        let mut owner: BTreeMap<usize, usize> = BTreeMap::new();
+        for (i, set) in by_edge.iter().enumerate() {
+            for &e in set {
+                owner.entry(e).or_insert(i);
+            }
+        }
+        for (&e, &i) in &owner {
+            for (&f, &i_tilde) in &owner {
+                if i != i_tilde {
+                    out.entry((e, f)).or_default().push(Shared {
+                        j,
+                        i,
+                        i_tilde,
+                        f_multiple: by_edge[i_tilde].len() > 1,
+                    });
+                }
+            }
+        }
+    }
+    out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn pairs_of_different_artificial_edges_only() {
+        // Two embeddings; in the first a_0 holds {1, 2} and a_1 holds {3};
+        // in the second a_0 holds {1} and a_1 holds {3, 4}.
+        let c = CandidateSets::from_sets(
+            vec![0, 1],
+            vec![0, 1],
+            vec![vec![vec![1, 2], vec![3]], vec![vec![1], vec![3, 4]]],
+        );
+        let pairs = shared_embeddings(&c);
+        // 1 and 2 share a_0 in the first embedding: never a pair.
+        assert!(!pairs.contains_key(&(1, 2)));
+        let p13 = &pairs[&(1, 3)];
+        assert_eq!(p13.len(), 2);
+        assert_eq!((p13[0].f_multiple, p13[1].f_multiple), (false, true));
+        let p31 = &pairs[&(3, 1)];
+        assert_eq!((p31[0].f_multiple, p31[1].f_multiple), (true, false));
+        assert_eq!(pairs[&(4, 1)].len(), 1);
+    }
+}
