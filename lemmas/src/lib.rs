@@ -74,9 +74,16 @@ pub mod l4_7;
 pub mod l4_8;
 pub mod l4_9;
 pub mod l5_1;
+pub mod l5_13;
+pub mod l5_14;
 pub mod l5_2;
 pub mod l5_3;
 pub mod l5_4;
+pub mod l5_5;
+pub mod l5_6;
+pub mod l5_7;
+pub mod l5_8;
+pub mod l5_9;
 pub mod o5_3;
 pub mod ratio;
 pub mod sample;
@@ -516,31 +523,36 @@ pub static CLAIMS: &[Claim] = &[
         Exact,
         "Lemma 5.5",
         "Nested or interweaved gaps belong to different embeddings.",
-    ),
+    )
+    .checked(l5_5::checker),
     c(
         "L5.6",
         Exact,
         "Lemma 5.6",
         "The embeddings of two interweaved gaps do not overlap.",
-    ),
+    )
+    .checked(l5_6::checker),
     c(
         "L5.7",
         Exact,
         "Lemma 5.7",
         "All interweaved gap pairs of two embeddings use the same pair of artificial edges.",
-    ),
+    )
+    .checked(l5_7::checker),
     c(
         "L5.8",
         Exact,
         "Lemma 5.8",
         "The interweavement graph has no cycle.",
-    ),
+    )
+    .checked(l5_8::checker),
     c(
         "L5.9",
         Exact,
         "Lemma 5.9",
         "The interweavement graph is a forest with embedding nodes as leaves, special nodes of degree >= 2, and at most twice as many edges as embedding nodes.",
-    ),
+    )
+    .checked(l5_9::checker),
     c(
         "T5.12",
         Bound,
@@ -553,13 +565,15 @@ pub static CLAIMS: &[Claim] = &[
         Exact,
         "Lemma 5.13",
         "If map edges e, f are candidate edges of different artificial edges in k >= 2 embeddings, all sight lines to e cross one common embedded artificial edge, and likewise for f.",
-    ),
+    )
+    .checked(l5_13::checker),
     c(
         "L5.14",
         Exact,
         "Lemma 5.14",
         "With k >= 4 such embeddings, at least ceil(k/3) of them pairwise overlap.",
-    ),
+    )
+    .checked(l5_14::checker),
     c(
         "T5.15",
         Exact,

@@ -15,9 +15,10 @@ use std::rc::Rc;
 use wai_cells::{Arrangement, Decomposition, VisibilityRay};
 use wai_embed::wedge::{classify_cell_edges, embedding_wedge_lines, CellEdgeKind};
 use wai_embed::{
-    crossing, interiors_overlap, kernels_overlap, sight_fans, witness_regions, witness_views,
-    Bounds, CandidateSets, Crossing, Embedder, Embedding, Intersection, Mutual, SightFan,
-    Sightlines, SkeletonRing, Witnesses,
+    crossing, gap_chains, interiors_overlap, kernels_overlap, sight_fans, witness_regions,
+    witness_views, Bounds, CandidateSets, Crossing, EmbeddedEdge, Embedder, Embedding, GapChain,
+    GapRelation, Intersection, Interweavement, Mutual, SightFan, Sightlines, SkeletonRing,
+    Witnesses,
 };
 use wai_map::Map;
 use wai_visibility::{ConvexRegion, VisibilityIndex, VisibilityPolygon};
@@ -52,6 +53,8 @@ pub struct Study<'m> {
     candidate_sets: OnceCell<Vec<CandidateSets>>,
     /// By class, by cell: its edges as Def 5.2 classifies them.
     cell_edges: OnceCell<Vec<Vec<CellEdges>>>,
+    /// By class: its gaps as boundary chains and the interweavement graph.
+    gaps: OnceCell<Vec<GapStructure>>,
     /// By class and embedding: the sight fans of its witness cells, each
     /// embedding's built when first asked for.
     fans: OnceCell<Vec<Vec<OnceCell<Vec<SightFan>>>>>,
@@ -124,6 +127,67 @@ pub struct CellEdges {
     pub kinds: Vec<CellEdgeKind>,
 }
 
+/// The gaps of one class's skeleton (Def 5.5) as boundary chains, the
+/// pairs of them Def 5.6 relates, which valid embeddings overlap, and the
+/// interweavement graph (Def 5.9) they make. Embeddings are named by their
+/// position j in the class's [`CandidateSets::embeddings`].
+#[derive(Debug, Clone, Default)]
+pub struct GapStructure {
+    /// One chain per (gap, set C_{i,j} it is consecutive in).
+    pub chains: Vec<GapChain>,
+    /// (a, b, relation) for chains a < b of different pairs of map edges
+    /// that are nested or interweaved.
+    pub related: Vec<(usize, usize, GapRelation)>,
+    /// The pairs j1 < j2 of valid embeddings whose skeleton polygons'
+    /// interiors overlap (Def 5.7's relation).
+    pub overlapping: Vec<(usize, usize)>,
+    pub graph: Interweavement,
+}
+
+impl GapStructure {
+    /// From the chains of a class's gaps, the overlapping pairs of its `t`
+    /// valid embeddings: relates every two chains of different pairs of
+    /// map edges and builds the graph.
+    pub fn new(chains: Vec<GapChain>, overlapping: Vec<(usize, usize)>, t: usize) -> GapStructure {
+        let mut related = Vec::new();
+        for a in 0..chains.len() {
+            for b in a + 1..chains.len() {
+                if chains[a].same_edges(&chains[b]) {
+                    continue;
+                }
+                let rel = chains[a].relation(&chains[b]);
+                if rel != GapRelation::Apart {
+                    related.push((a, b, rel));
+                }
+            }
+        }
+        let mut g = GapStructure {
+            chains,
+            related,
+            overlapping,
+            graph: Interweavement::default(),
+        };
+        g.graph = Interweavement::new(t, &g.overlapping, &g.interweaved());
+        g
+    }
+
+    /// The interweaved pairs ((j1, i1), (j2, i2)) of different embeddings.
+    pub fn interweaved(&self) -> Vec<(EmbeddedEdge, EmbeddedEdge)> {
+        self.related
+            .iter()
+            .filter(|r| r.2 == GapRelation::Interweaved)
+            .map(|&(a, b, _)| (&self.chains[a], &self.chains[b]))
+            .filter(|(g, h)| g.j != h.j)
+            .map(|(g, h)| ((g.j, g.i), (h.j, h.i)))
+            .collect()
+    }
+
+    /// Whether valid embeddings j1 and j2 overlap.
+    pub fn overlap(&self, j1: usize, j2: usize) -> bool {
+        self.overlapping.contains(&(j1.min(j2), j1.max(j2)))
+    }
+}
+
 /// An embedding of a class's skeleton (Def 3.11) and its kernel
 /// h(ker V*) (Def 3.12), in map coordinates.
 #[derive(Debug, Clone)]
@@ -150,6 +214,7 @@ impl<'m> Study<'m> {
             valid: OnceCell::new(),
             candidate_sets: OnceCell::new(),
             cell_edges: OnceCell::new(),
+            gaps: OnceCell::new(),
             fans: OnceCell::new(),
             crossings: RefCell::new(HashMap::new()),
         }
@@ -466,6 +531,29 @@ impl<'m> Study<'m> {
                         .map(|(j, _)| (j, self.valid_candidates(class, j).to_vec()))
                         .collect();
                     CandidateSets::new(self.map, artificial, valid)
+                })
+                .collect()
+        })
+    }
+
+    /// By class: the gaps as boundary chains, the nested and interweaved
+    /// pairs (Def 5.6), and the interweavement graph (Defs 5.7–5.9).
+    pub fn gap_structures(&self) -> &[GapStructure] {
+        self.gaps.get_or_init(|| {
+            let sets = self.candidate_sets();
+            let mut overlapping: Vec<Vec<(usize, usize)>> = vec![Vec::new(); sets.len()];
+            for p in self.embedding_pairs() {
+                if p.same_skeleton() && p.overlap() {
+                    let class = p.first.0;
+                    let j = |i: usize| sets[class].embeddings.binary_search(&i).expect("valid");
+                    let (a, b) = (j(p.first.1), j(p.second.1));
+                    overlapping[class].push((a.min(b), a.max(b)));
+                }
+            }
+            sets.iter()
+                .zip(overlapping)
+                .map(|(c, overlapping)| {
+                    GapStructure::new(gap_chains(self.map, &c.sets), overlapping, c.t())
                 })
                 .collect()
         })

@@ -211,6 +211,84 @@ impl SightFan {
         None
     }
 
+    /// Whether every line of sight of the fan meets the closed segment
+    /// [a, b] (Lemma 5.13's "crosses h(a)"): `Some(true)` when shown for all
+    /// of them, `Some(false)` with a line of sight that misses it, `None`
+    /// when neither test settles it.
+    ///
+    /// Every line of sight is [w, q] ∪ [q, p] with w in the cell, q on the
+    /// open window h(a) and p on (t1, t2). All of them meet [a, b] if it is
+    /// the window or holds it on its line; or if the line ab strictly
+    /// separates the window from (t1, t2) (or the cell from the window) and
+    /// cuts the hull of the two inside [a, b] — that hull holds every
+    /// part behind (before) the window, and its cut by the line is spanned
+    /// by the cuts of the segments between their vertices. A miss is
+    /// looked for on the lines from the cell's inner point through the
+    /// window at 1/4, 1/2 and 3/4, each a line of sight (module doc).
+    pub fn lines_meet_segment(&self, a: &Pt, b: &Pt) -> Option<bool> {
+        let (v1, v2) = (&self.v1, &self.v2);
+        let on_ab = |z: &Pt| segments_meet(z, z, a, b);
+        if turn(a, b, v1) == Ordering::Equal
+            && turn(a, b, v2) == Ordering::Equal
+            && on_ab(v1)
+            && on_ab(v2)
+        {
+            return Some(true);
+        }
+        let side = |z: &Pt| turn(a, b, z);
+        // Whether the line ab strictly separates the open convex sets with
+        // closures spanned by `p` and `q` (`p_in`, `q_in` inner points) and
+        // cuts their hull inside [a, b].
+        let cuts_inside = |p: &[Pt], p_in: &Pt, q: &[Pt], q_in: &Pt| -> bool {
+            let sp = side(p_in);
+            if sp == Ordering::Equal || side(q_in) != sp.reverse() {
+                return false;
+            }
+            if p.iter().any(|z| side(z) == sp.reverse()) || q.iter().any(|z| side(z) == sp) {
+                return false;
+            }
+            p.iter().all(|u| {
+                q.iter().all(|t| {
+                    let x = match (side(u), side(t)) {
+                        (Ordering::Equal, _) => u.clone(),
+                        (_, Ordering::Equal) => t.clone(),
+                        _ => line_cut(u, t, a, b),
+                    };
+                    on_ab(&x)
+                })
+            })
+        };
+        let window = [v1.clone(), v2.clone()];
+        let mid = v1.add(v2).scale(&Rational::from((1, 2)));
+        // (t1, t2): the segment part behind the window, if it has one.
+        let landing: Vec<Pt> = self
+            .beyond
+            .iter()
+            .find(|x| matches!(x, Piece::Segment(..)))
+            .map(Piece::vertices)
+            .unwrap_or_default();
+        let cell = self.witnesses.vertices();
+        let w0 = self.witnesses.inner_point();
+        if !landing.is_empty() {
+            let t_in = landing
+                .iter()
+                .fold(Pt::new(Rational::new(), Rational::new()), |s, z| s.add(z))
+                .scale(&Rational::from((1, landing.len())));
+            if cuts_inside(&window, &mid, &landing, &t_in) || cuts_inside(&cell, &w0, &window, &mid)
+            {
+                return Some(true);
+            }
+        }
+        for k in [1u32, 2, 3] {
+            let q = v1.along(&v2.sub(v1), &Rational::from((k, 4)));
+            let p = line_cut(&w0, &q, &self.c.0, &self.c.1);
+            if !segments_meet(&w0, &p, a, b) {
+                return Some(false);
+            }
+        }
+        None
+    }
+
     /// A witness `w` of the cell and a point `p` of the candidate edge
     /// whose line of sight through h(a) passes through `x`, a point of the
     /// fan. Re-checked against the map `ring`.
