@@ -67,6 +67,17 @@ pub struct Report {
     /// verdicts a second method cross-checked, how many instances met a
     /// stronger premise…); the driver sums them by name.
     pub counts: BTreeMap<&'static str, u64>,
+    /// The largest ratio measured on this map, for claims that measure
+    /// one (bounds; exact claims with a natural ratio such as k/6), with
+    /// where it was reached; the driver keeps the run's largest and its map.
+    pub largest: Option<Largest>,
+}
+
+/// A measured ratio and where on the map it was reached.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Largest {
+    pub ratio: rug::Rational,
+    pub at: serde_json::Value,
 }
 
 impl Report {
@@ -77,6 +88,14 @@ impl Report {
             examined: 0,
             violations: Vec::new(),
             counts: BTreeMap::new(),
+            largest: None,
+        }
+    }
+
+    /// Keeps `ratio` (reached `at`) if it is the largest so far.
+    pub fn measure(&mut self, ratio: rug::Rational, at: serde_json::Value) {
+        if self.largest.as_ref().is_none_or(|l| ratio > l.ratio) {
+            self.largest = Some(Largest { ratio, at });
         }
     }
 
@@ -92,10 +111,16 @@ impl Report {
     }
 
     /// Adds `key: value` to the data of every violation found so far (the
-    /// instance they belong to: a pair of embeddings, a class…).
+    /// instance they belong to: a pair of embeddings, a class…), and to
+    /// where the largest ratio was reached.
     pub fn tag(&mut self, key: &str, value: serde_json::Value) {
         for v in &mut self.violations {
             v.data[key] = value.clone();
+        }
+        if let Some(l) = &mut self.largest {
+            if l.at.is_object() {
+                l.at[key] = value.clone();
+            }
         }
     }
 
@@ -106,6 +131,9 @@ impl Report {
         self.violations.extend(other.violations);
         for (name, by) in other.counts {
             self.count(name, by);
+        }
+        if let Some(l) = other.largest {
+            self.measure(l.ratio, l.at);
         }
     }
 }
@@ -152,6 +180,18 @@ pub struct ClaimTally {
     pub violations: Vec<FoundViolation>,
     /// The checkers' further counts ([`Report::counts`]), summed.
     pub counts: BTreeMap<&'static str, u64>,
+    /// The largest ratio of the run ([`Report::largest`]) and its map.
+    pub largest: Option<FoundLargest>,
+}
+
+/// The largest ratio of a claim over a run, with its map.
+#[derive(Debug, Clone, PartialEq)]
+pub struct FoundLargest {
+    pub largest: Largest,
+    pub map_index: usize,
+    pub map_name: Option<String>,
+    /// The map in the format of `counterexamples/`, to replay it.
+    pub map_json: String,
 }
 
 /// The outcome of [`run`].
@@ -270,6 +310,7 @@ pub fn run<M: Borrow<Map>>(
                 examined: 0,
                 violations: Vec::new(),
                 counts: BTreeMap::new(),
+                largest: None,
             });
         }
     }
@@ -299,6 +340,20 @@ pub fn run<M: Borrow<Map>>(
             tally.examined += report.examined;
             for (name, by) in &report.counts {
                 *tally.counts.entry(name).or_default() += by;
+            }
+            if let Some(l) = report.largest {
+                if tally
+                    .largest
+                    .as_ref()
+                    .is_none_or(|t| l.ratio > t.largest.ratio)
+                {
+                    tally.largest = Some(FoundLargest {
+                        largest: l,
+                        map_index,
+                        map_name: map.name().map(str::to_owned),
+                        map_json: wai_map::json::to_json(map),
+                    });
+                }
             }
             if !report.violations.is_empty() {
                 let map_json = wai_map::json::to_json(map);
@@ -492,6 +547,7 @@ mod tests {
                 examined: 0,
                 violations: vec![Violation::new("planted")],
                 counts: BTreeMap::new(),
+                largest: None,
             }
         }
     }
@@ -500,5 +556,26 @@ mod tests {
     #[should_panic(expected = "examined only 0")]
     fn violations_without_examined_instances_are_a_bug() {
         run(&[&ViolatesUnexamined], [square()]);
+    }
+
+    #[test]
+    fn the_largest_ratio_of_a_run_is_kept_with_its_map() {
+        // T5.17's max |EC| / (n + r²): 2 on a convex map (one cell of
+        // complexity 2n), less on an L-shaped one.
+        let l = map(&[(0, 0), (6, 0), (6, 2), (2, 2), (2, 6), (0, 6)]).with_name("L");
+        let sq = square().with_name("square");
+        let summary = run(&[&crate::t5_17::CHECKER], [l, sq]);
+        let found = summary.tally("T5.17").and_then(|t| t.largest.as_ref());
+        let found = found.expect("T5.17 measures a ratio");
+        assert_eq!(found.largest.ratio, 2);
+        assert_eq!(
+            (found.map_index, found.map_name.as_deref()),
+            (1, Some("square"))
+        );
+        assert!(
+            found.map_json.contains("\"outer\""),
+            "{}",
+            found.map_json
+        );
     }
 }

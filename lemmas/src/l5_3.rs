@@ -77,9 +77,14 @@ pub fn check_classes(n: usize, classes: &[CandidateSets], tight: Option<usize>) 
         }
         let mut one = Report::new(ID);
         one.record(check_class(n, c));
+        let single = c.single().len();
+        let bound = (c.s() * c.t()).min(n);
+        one.measure(
+            crate::ratio::over(single, bound as u128),
+            json!({"single": single, "s": c.s(), "t": c.t()}),
+        );
         one.tag("class", json!(class));
         report.absorb(one);
-        let single = c.single().len();
         report.count("single", single as u64);
         largest = largest.max(single);
     }

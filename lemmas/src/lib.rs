@@ -103,7 +103,9 @@ pub mod t5_16;
 pub mod t5_17;
 pub mod wedge_counts;
 
-pub use driver::{run, Checker, ClaimTally, FoundViolation, Report, Summary, Violation};
+pub use driver::{
+    run, Checker, ClaimTally, FoundLargest, FoundViolation, Largest, Report, Summary, Violation,
+};
 pub use study::Study;
 
 /// What kind of statement a claim is (the "kind" column of `CLAIMS.md`).

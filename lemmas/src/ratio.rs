@@ -66,6 +66,10 @@ pub fn check_counts(
         )
     });
     report.record(violation);
+    report.measure(
+        value.clone(),
+        json!({"n": counts.n, "r": counts.r, "max_class_complexity": counts.max_class_complexity}),
+    );
     (
         report,
         Measured {

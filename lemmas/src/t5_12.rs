@@ -81,6 +81,10 @@ pub fn check_with_ratio(
         )
     }));
     report.count("largest_multiple", mult as u64);
+    report.measure(
+        ratio.clone(),
+        json!({"class": class, "multiple": mult, "r": map.r()}),
+    );
     (report, ratio)
 }
 

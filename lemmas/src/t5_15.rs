@@ -83,6 +83,10 @@ pub fn check_class(c: &CandidateSets, bound: usize) -> (Report, usize) {
         if k >= 2 {
             report.count("pairs_k_ge_2", 1);
         }
+        report.measure(
+            rug::Rational::from((k, BOUND)),
+            json!({"e": e, "f": f, "k": k}),
+        );
         report.record((k > bound).then(|| {
             Violation::with_data(
                 format!(

@@ -95,6 +95,7 @@ pub fn ratio_report(
     let Some((ratio, at)) = largest else {
         return (report, Rational::new());
     };
+    report.measure(ratio.clone(), at.clone());
     report.record((ratio > *ceiling).then(|| {
         Violation::with_data(
             format!(

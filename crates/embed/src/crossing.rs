@@ -269,13 +269,12 @@ impl SightFan {
             .unwrap_or_default();
         let cell = self.witnesses.vertices();
         let w0 = self.witnesses.inner_point();
-        if !landing.is_empty() {
-            let t_in = landing
-                .iter()
-                .fold(Pt::new(Rational::new(), Rational::new()), |s, z| s.add(z))
-                .scale(&Rational::from((1, landing.len())));
-            if cuts_inside(&window, &mid, &landing, &t_in) || cuts_inside(&cell, &w0, &window, &mid)
-            {
+        if cuts_inside(&cell, &w0, &window, &mid) {
+            return Some(true);
+        }
+        if let [t1, t2] = &landing[..] {
+            let t_in = t1.add(t2).scale(&Rational::from((1, 2)));
+            if cuts_inside(&window, &mid, &landing, &t_in) {
                 return Some(true);
             }
         }

@@ -65,10 +65,19 @@ usage: stress [--maps N] [--start S] [--repeated | --bottles] [--claims L]
               parameters 1..=6, the dataset maps (needs ../shared/datasets)
               and the maps of counterexamples/
   --files     instead: the map files that follow (JSON map format)
+  --largest D write, per claim that measures a ratio, the map of its
+              largest ratio to D/<claim>-largest.json (replayable with
+              --files)
   -h, --help  this text
 
 Prints per claim the instances examined; exits 1 on a violation other than
 the known failures of the sec. 3.6 rule (claim A3.6).";
+
+/// Says what is wrong and exits 2.
+fn fail(what: &str) -> ! {
+    eprintln!("stress: {what}");
+    std::process::exit(2);
+}
 
 fn main() {
     let args: Vec<String> = std::env::args().collect();
@@ -80,6 +89,13 @@ fn main() {
     let repeated = args.iter().any(|a| a == "--repeated");
     let bottles = args.iter().any(|a| a == "--bottles");
     let start = arg(&args, "--start", 0);
+    let largest_dir: Option<String> =
+        args.iter()
+            .position(|a| a == "--largest")
+            .map(|i| match args.get(i + 1) {
+                Some(d) if !d.starts_with("--") => d.clone(),
+                _ => fail("--largest wants a directory"),
+            });
     let files: Vec<&String> = args
         .iter()
         .skip_while(|a| *a != "--files")
@@ -164,6 +180,8 @@ fn main() {
     let mut counts: BTreeMap<(&'static str, &'static str), u64> = BTreeMap::new();
     // Maps on which each claim examined something.
     let mut maps_with: BTreeMap<&'static str, u64> = BTreeMap::new();
+    // The largest ratio of each claim that measures one, and its map.
+    let mut largest: BTreeMap<&'static str, wai_lemmas::FoundLargest> = BTreeMap::new();
     let mut conflicts: BTreeMap<String, u64> = BTreeMap::new();
     let mut others = 0u64;
     let batch = 100u64;
@@ -187,6 +205,14 @@ fn main() {
                 *maps_with.entry(tally.claim).or_default() += u64::from(tally.examined > 0);
                 for (name, by) in &tally.counts {
                     *counts.entry((tally.claim, name)).or_default() += by;
+                }
+                if let Some(l) = &tally.largest {
+                    if largest
+                        .get(tally.claim)
+                        .is_none_or(|best| l.largest.ratio > best.largest.ratio)
+                    {
+                        largest.insert(tally.claim, l.clone());
+                    }
                 }
             }
             for v in summary.violations() {
@@ -254,7 +280,24 @@ fn main() {
         if !extra.is_empty() {
             print!("; {}", extra.join(", "));
         }
+        if let Some(l) = largest.get(claim) {
+            print!(
+                "; largest ratio {} (≈ {:.4}) on {} at {}",
+                l.largest.ratio,
+                l.largest.ratio.to_f64(),
+                l.map_name.as_deref().unwrap_or("an unnamed map"),
+                l.largest.at
+            );
+        }
         println!();
+    }
+    if let Some(dir) = &largest_dir {
+        std::fs::create_dir_all(dir).unwrap_or_else(|e| fail(&format!("{dir}: {e}")));
+        for (claim, l) in &largest {
+            let path = format!("{dir}/{claim}-largest.json");
+            std::fs::write(&path, &l.map_json).unwrap_or_else(|e| fail(&format!("{path}: {e}")));
+        }
+        println!("  the map of each largest ratio: {dir}/<claim>-largest.json");
     }
     for id in examined.iter().filter(|(_, &c)| c == 0).map(|(id, _)| id) {
         println!("  {id}: examined nothing in this run — NOT TESTED");
