@@ -572,10 +572,6 @@ mod tests {
             (found.map_index, found.map_name.as_deref()),
             (1, Some("square"))
         );
-        assert!(
-            found.map_json.contains("\"outer\""),
-            "{}",
-            found.map_json
-        );
+        assert!(found.map_json.contains("\"outer\""), "{}", found.map_json);
     }
 }

@@ -101,6 +101,7 @@ pub mod t5_12;
 pub mod t5_15;
 pub mod t5_16;
 pub mod t5_17;
+pub mod t5_17t;
 pub mod wedge_counts;
 
 pub use driver::{
@@ -602,7 +603,8 @@ pub static CLAIMS: &[Claim] = &[
         Tight,
         "Theorem 5.17 (tightness), chapter 5 introduction",
         "Some maps have one equivalence class of complexity Omega(n), others Omega(r^2).",
-    ),
+    )
+    .checked(t5_17t::checker),
     c(
         "C5.18",
         Bound,

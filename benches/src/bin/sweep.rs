@@ -169,6 +169,7 @@ fn series(quick: bool) -> Vec<(String, Vec<(u32, Map)>)> {
             fam("comb-convex-chain", &[2, 3, 4, 6]),
             chain(&[4, 8, 16]),
             fam("convex-niches", &[1, 2, 3, 4]),
+            fam("window-grid", &[1, 2, 4]),
             rnd("random-simple-star", &[10, 20, 40]),
             rnd("random-orthogonal", &[10, 20, 40]),
         ];
@@ -183,6 +184,7 @@ fn series(quick: bool) -> Vec<(String, Vec<(u32, Map)>)> {
         fam("overlap-fan", &[0, 1, 2, 3]),
         fam("convex-niches", &[1, 2, 3, 4, 6, 8, 11, 16]),
         niches_offset(&[1, 2, 4, 6, 8]),
+        fam("window-grid", &[1, 2, 4, 8, 16, 32, 64]),
         rnd("random-simple-star", &[10, 20, 40, 80, 160]),
         rnd("random-orthogonal", &[10, 20, 40, 80, 160, 320]),
     ]
@@ -690,6 +692,12 @@ const TIGHT: &[Tight] = &[
         series: "convex-niches/views=fan+8",
         slope: 1.0,
         what: "L5.3: |C_sing| = Ω(r²), Fig 5.4 with t = s + 6",
+    },
+    Tight {
+        plot: "max_ec_vs_n_r2.svg",
+        series: "window-grid",
+        slope: 1.0,
+        what: "T5.17t: max |EC| = Ω(r²) with n = Θ(r) (8c² against 16c² + 40c + 28)",
     },
     Tight {
         plot: "max_ec_vs_n_r2.svg",

@@ -15,7 +15,7 @@ use wai_map::Map;
 /// Largest vertex count a family call may produce.
 pub const MAX_FAMILY_VERTICES: u64 = 1 << 20;
 
-fn check_size(family: &'static str, n: u64) -> Result<(), GenError> {
+pub(crate) fn check_size(family: &'static str, n: u64) -> Result<(), GenError> {
     if n > MAX_FAMILY_VERTICES {
         return Err(GenError::TooLarge {
             family,

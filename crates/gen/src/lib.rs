@@ -20,6 +20,7 @@
 
 mod bottles;
 mod families;
+mod grid;
 mod polyomino;
 mod repeated;
 mod ring;
@@ -33,6 +34,7 @@ pub use families::{
     convex_niches_with, corridor_niches, corridor_niches_viewpoints, overlap_fan,
     overlap_fan_viewpoints, CombLayout, ConvexNichesLayout, MAX_FAMILY_VERTICES,
 };
+pub use grid::window_grid;
 pub use polyomino::{
     exhaustive_polyomino_maps, has_simple_boundary, polyominoes, Cell, Polyomino, Symmetry,
 };
@@ -154,6 +156,14 @@ pub const FAMILIES: &[FamilyInfo] = &[
         n: "4 + 4 views + (fan + views - 1)(fan + 3); 2k^2 + 9k + 1 for one parameter",
         r: "2 views + 2 (fan + views - 1); 6k - 2 for one parameter",
     },
+    FamilyInfo {
+        id: "window-grid",
+        params: "c >= 1: pieces of each of the two broken walls",
+        reference: "Theorem 5.17 (tightness: Omega(r^2) with n = Theta(r)), Fig 5.2",
+        claims: &["T5.17t"],
+        n: "8c + 12",
+        r: "4c + 4",
+    },
 ];
 
 /// The map of family `id` with `params` (see [`FAMILIES`]).
@@ -182,6 +192,10 @@ pub fn family(id: &str, params: &[u32]) -> Result<Map, GenError> {
         "overlap-fan" => match *params {
             [z] => families::overlap_fan(z),
             _ => Err(count("1", "overlap-fan")),
+        },
+        "window-grid" => match *params {
+            [c] => grid::window_grid(c),
+            _ => Err(count("1", "window-grid")),
         },
         "convex-niches" => match *params {
             [k] => families::convex_niches(k),
