@@ -310,7 +310,7 @@ fn catalogue() -> String {
             k.id, k.method, k.min_n, k.max_n, k.vertices
         ));
     }
-    s.push_str("\nChapter 4 layouts (gen --layout ID --seed S):\n");
+    s.push_str("\nChapter 4 and 5 layouts (gen --layout ID --seed S):\n");
     for l in wai_gen::LAYOUTS {
         s.push_str(&format!("  {:<20} {}\n", l.id, l.shows));
     }

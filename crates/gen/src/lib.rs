@@ -1,7 +1,9 @@
 //! Seeded generators of valid maps (STYLE.md 8): random simple and
 //! orthogonal polygons, all small polyominoes, collinearity-biased
 //! "special" maps, and the thesis's worst-case families (Figs 3.12, 3.15,
-//! 4.1, 5.4), plus proptest strategies and a quickcheck `Arbitrary`.
+//! 4.1, 5.4), seeded layouts for the chapter 4 and 5 claims (overlapping
+//! embeddings, crossing, interweaved and shared candidate edges), plus
+//! proptest strategies and a quickcheck `Arbitrary`.
 //!
 //! Every generator builds a ring that is valid by construction — simple,
 //! counter-clockwise, no 180° vertex — and returns the [`wai_map::Map`] of
@@ -12,6 +14,7 @@
 //! Entry points by id, for the CLI and the benches:
 //! - [`family`]`(id, params)` with the ids of [`FAMILIES`];
 //! - [`random`]`(kind, n, seed)` with the ids of [`RANDOM_KINDS`];
+//! - [`layout`]`(id, seed)` with the ids of [`LAYOUTS`];
 //! - [`exhaustive_polyomino_maps`] for the exhaustive mode.
 //!
 //! # Invariant
@@ -21,6 +24,7 @@
 mod bottles;
 mod families;
 mod grid;
+mod interweave;
 mod polyomino;
 mod repeated;
 mod ring;
@@ -35,6 +39,10 @@ pub use families::{
     overlap_fan_viewpoints, CombLayout, ConvexNichesLayout, MAX_FAMILY_VERTICES,
 };
 pub use grid::window_grid;
+pub use interweave::{
+    interweaved_gaps, shared_niches, shared_spiked_niches, CeilingNotch, PinholeLayout,
+    SharedLayout,
+};
 pub use polyomino::{
     exhaustive_polyomino_maps, has_simple_boundary, polyominoes, Cell, Polyomino, Symmetry,
 };
@@ -319,7 +327,8 @@ pub fn random(kind: &str, n: usize, seed: u64) -> Result<Map, GenError> {
     ))
 }
 
-/// A seeded chapter 4 layout: repeated rooms whose embeddings overlap.
+/// A seeded layout: repeated rooms whose embeddings overlap (chapter 4) or
+/// share candidate edges (chapter 5).
 #[derive(Clone, Copy, Debug)]
 pub struct LayoutInfo {
     pub id: &'static str,
@@ -328,7 +337,8 @@ pub struct LayoutInfo {
     pub generate: fn(u64) -> Map,
 }
 
-/// The chapter 4 layouts, for [`layout`] and the CLI's `gen --layout`.
+/// The chapter 4 and 5 layouts, for [`layout`] and the CLI's `gen
+/// --layout`.
 pub const LAYOUTS: &[LayoutInfo] = &[
     LayoutInfo {
         id: "repeated-niches",
@@ -341,6 +351,26 @@ pub const LAYOUTS: &[LayoutInfo] = &[
         shows: "rooms under bottles with spiked back walls: artificial edges with two valid \
                 candidate edges that cross the other room's (Fig 4.31; T4.19, C4.20)",
         generate: bottled_niches,
+    },
+    LayoutInfo {
+        id: "interweaved-gaps",
+        shows: "two pinhole rooms whose door cones sweep one ceiling of flats and notches: \
+                gaps of two embeddings that are interweaved and nested (Def 5.6, Example \
+                5.1, Fig 5.5; L5.5-L5.9)",
+        generate: interweaved_gaps,
+    },
+    LayoutInfo {
+        id: "shared-niches",
+        shows: "rooms under bottles, each room seeing 5 or 7 backs: pairs of backs that are \
+                candidate edges of different artificial edges in 4 or 6 embeddings (Figs \
+                5.13-5.15; L5.13, L5.14)",
+        generate: shared_niches,
+    },
+    LayoutInfo {
+        id: "shared-spiked-niches",
+        shows: "rooms under bottles with three spikes on each back wall: a pair of back \
+                pieces, the second a multiple candidate edge, in 2 embeddings (T5.15)",
+        generate: shared_spiked_niches,
     },
 ];
 

@@ -6,7 +6,8 @@
 //! and orthogonal maps (n ≤ 30).
 //!
 //! `cargo run --release -p wai-lemmas --bin stress -- [--maps N] [--start S]
-//! [--repeated | --bottles]`, `-- --files MAP...` or `-- --corpus`
+//! [--repeated | --bottles | --interweave]`, `-- --files MAP...` or
+//! `-- --corpus`
 //!
 //! Map i is `wai_gen::random(kind, n, seed = S + i)` with the kind cycling
 //! through every random kind and n cycling through 8..=30; with
@@ -15,7 +16,12 @@
 //! (the chapter 4 claims examine nothing on most random maps), and with
 //! `--bottles` it is `wai_gen::bottled_niches(S + i)`, whose overlapping
 //! embeddings have artificial edges with several valid candidate edges
-//! that cross (Fig 4.31: Theorem 4.19, Corollary 4.20). With `--files`
+//! that cross (Fig 4.31: Theorem 4.19, Corollary 4.20), and with
+//! `--interweave` it cycles through `wai_gen::interweaved_gaps`,
+//! `wai_gen::shared_niches` and `wai_gen::shared_spiked_niches` (S + i),
+//! whose gaps are interweaved and nested (Fig 5.5: L5.5–L5.9) and whose
+//! pairs of candidate edges are shared by several embeddings (Figs
+//! 5.13–5.16: L5.13, L5.14, T5.15). With `--files`
 //! the maps are the given map files. With `--corpus`
 //! the maps are instead the fixed corpus of issue 7's acceptance: every free
 //! polyomino of up to 8 cells, every thesis family at parameters 1 to 6,
@@ -50,7 +56,7 @@ fn arg(args: &[String], name: &str, default: u64) -> u64 {
 const USAGE: &str = "\
 stress: every claim checker over seeded random maps (n from 8 to 30, every random kind)
 
-usage: stress [--maps N] [--start S] [--repeated | --bottles] [--claims L]
+usage: stress [--maps N] [--start S] [--repeated | --bottles | --interweave] [--claims L]
        stress --corpus [--claims L]
        stress --files MAP... [--claims L]
   --maps N    how many maps (default 10000)
@@ -60,6 +66,10 @@ usage: stress [--maps N] [--start S] [--repeated | --bottles] [--claims L]
   --bottles   the maps are wai_gen::bottled_niches(S + i): rooms under
               bottled niches, whose artificial edges have several valid
               candidate edges that cross (Fig 4.31; T4.19, C4.20)
+  --interweave  map i is wai_gen::interweaved_gaps, shared_niches or
+              shared_spiked_niches(S + i) by i mod 3: interweaved and nested
+              gaps (Fig 5.5; L5.5-L5.9), candidate edges shared by several
+              embeddings (Figs 5.13-5.16; L5.13, L5.14, T5.15)
   --claims L  only the checkers of the comma-separated claim ids L
   --corpus    instead: all free polyominoes up to 8 cells, the families at
               parameters 1..=6, the dataset maps (needs ../shared/datasets)
@@ -88,6 +98,7 @@ fn main() {
     let corpus = args.iter().any(|a| a == "--corpus");
     let repeated = args.iter().any(|a| a == "--repeated");
     let bottles = args.iter().any(|a| a == "--bottles");
+    let interweave = args.iter().any(|a| a == "--interweave");
     let start = arg(&args, "--start", 0);
     let largest_dir: Option<String> =
         args.iter()
@@ -126,6 +137,15 @@ fn main() {
     } else if bottles {
         (0..arg(&args, "--maps", 10_000))
             .map(|j| wai_gen::bottled_niches(start + j))
+            .collect()
+    } else if interweave {
+        let layouts = [
+            wai_gen::interweaved_gaps,
+            wai_gen::shared_niches,
+            wai_gen::shared_spiked_niches,
+        ];
+        (0..arg(&args, "--maps", 10_000))
+            .map(|j| layouts[(j % 3) as usize](start + j))
             .collect()
     } else {
         let kinds = wai_gen::RANDOM_KINDS;
@@ -260,6 +280,8 @@ fn main() {
                 "repeated-niches "
             } else if bottles {
                 "bottled-niches "
+            } else if interweave {
+                "interweave (gaps, shared niches) "
             } else {
                 ""
             },

@@ -214,3 +214,57 @@ fn bottled_niches_are_valid_and_their_viewpoints_repeat() {
         }
     }
 }
+
+/// The chapter 5 layouts (`interweaved_gaps`, `shared_niches`,
+/// `shared_spiked_niches`): valid for many seeds, deterministic, and their
+/// viewpoints lie inside, at the same places in every room.
+#[test]
+fn chapter_5_layouts_are_valid_and_their_viewpoints_repeat() {
+    for seed in 0..300 {
+        let m = wai_gen::interweaved_gaps(seed);
+        check_valid(&m);
+        assert_eq!(m, wai_gen::interweaved_gaps(seed));
+        let l = wai_gen::PinholeLayout::of_seed(seed);
+        let [a, b] = l.viewpoints();
+        for v in [a, b] {
+            assert_eq!(
+                wai_exact::locate(m.vertices(), v),
+                wai_exact::Containment::Inside,
+                "seed {seed}"
+            );
+        }
+        assert!(
+            a.y == b.y && a.x < l.width() && b.x > l.apart,
+            "seed {seed}"
+        );
+        for (l, m) in [
+            (
+                wai_gen::SharedLayout::of_seed(seed),
+                wai_gen::shared_niches(seed),
+            ),
+            (
+                wai_gen::SharedLayout::spiked_of_seed(seed),
+                wai_gen::shared_spiked_niches(seed),
+            ),
+        ] {
+            check_valid(&m);
+            assert!(
+                2 * l.mouth < l.pitch && 2 * l.chamber < l.pitch,
+                "seed {seed}"
+            );
+            let vs = l.viewpoints();
+            let per_room = vs.len() / l.rooms as usize;
+            for w in vs.windows(per_room + 1) {
+                let (p, q) = (w[0], w[per_room]);
+                assert_eq!((q.x - p.x, q.y - p.y), (l.pitch, 0), "seed {seed}");
+            }
+            for v in vs {
+                assert_eq!(
+                    wai_exact::locate(m.vertices(), v),
+                    wai_exact::Containment::Inside,
+                    "seed {seed}"
+                );
+            }
+        }
+    }
+}
