@@ -8,9 +8,12 @@
 //! Exact, on every class with a valid embedding and every pair {e, f} with
 //! k ≥ 2 ([`crate::edge_pairs`]). The lines of sight are Def 4.4's from
 //! the witness cells, one sight fan per cell ([`wai_embed::SightFan`]);
-//! whether all lines of a fan meet a segment is decided by
-//! [`wai_embed::SightFan::lines_meet_segment`], which proves it, refutes
-//! it with a concrete line of sight, or leaves it open. For e (and f) the
+//! whether all lines of a fan meet a window is decided exactly when the
+//! window is a chord of the map (its ends map vertices, nothing else of
+//! the boundary on it: [`wai_embed::Chord`], by which part of the map the
+//! witness cell and the candidate edge lie in), and otherwise by
+//! [`wai_embed::SightFan::lines_meet_segment`], which proves it, refutes it
+//! with a concrete line of sight, or leaves it open. For e (and f) the
 //! candidate crossed edges are the k windows through which the embeddings
 //! see it: e passes when one window is proved crossed by every fan that
 //! sees e; e fails when every window is refuted. A pair is examined when
@@ -18,7 +21,7 @@
 //! never as held. Counts: `windows_tried`, `undecided`.
 
 use serde_json::json;
-use wai_embed::{Pt, SightFan};
+use wai_embed::{Chord, Pt, SightFan};
 
 use crate::driver::{Checker, Report, Violation};
 use crate::edge_pairs::shared_embeddings;
@@ -46,13 +49,20 @@ pub enum Verdict {
 }
 
 /// Whether one of `windows` is met by every line of sight of every fan in
-/// `fans` (each fan's lines to the one edge, from one embedding).
-pub fn common_window(windows: &[(Pt, Pt)], fans: &[&SightFan]) -> Verdict {
+/// `fans` (each fan's lines to the one edge, from one embedding), on the
+/// map with vertices `ring`: exactly when the window is a chord
+/// ([`Chord`]), else by [`SightFan::lines_meet_segment`].
+pub fn common_window(ring: &[Pt], windows: &[(Pt, Pt)], fans: &[&SightFan]) -> Verdict {
     let mut refuted = 0;
     for (l, (a, b)) in windows.iter().enumerate() {
+        let chord = Chord::new(ring, a, b);
         let mut all = Some(true);
         for f in fans {
-            match f.lines_meet_segment(a, b) {
+            let verdict = match &chord {
+                Some(c) => c.crossed_by(f),
+                None => f.lines_meet_segment(a, b),
+            };
+            match verdict {
                 Some(true) => {}
                 Some(false) => {
                     all = Some(false);
@@ -81,6 +91,12 @@ impl Checker for CommonWindow {
 
     fn check_study(&self, study: &Study<'_>) -> Report {
         let mut report = Report::new(ID);
+        let ring: Vec<Pt> = study
+            .map()
+            .vertices()
+            .iter()
+            .map(|&v| Pt::from(v))
+            .collect();
         for (class, c) in study.candidate_sets().iter().enumerate() {
             for ((e, f), shared) in shared_embeddings(c) {
                 if e > f || shared.len() < 2 {
@@ -108,7 +124,7 @@ impl Checker for CommonWindow {
                 for (edge, i_of) in [(e, &i_e as &dyn Fn(usize) -> usize), (f, &i_f)] {
                     let (windows, fans) = side(edge, i_of);
                     report.count("windows_tried", windows.len() as u64);
-                    verdicts.push((edge, common_window(&windows, &fans)));
+                    verdicts.push((edge, common_window(&ring, &windows, &fans)));
                 }
                 if verdicts.iter().any(|v| v.1 == Verdict::Undecided)
                     && !verdicts.iter().any(|v| v.1 == Verdict::Refuted)
@@ -184,7 +200,36 @@ mod tests {
         // A short bar beside the fan: missed.
         assert_eq!(f.lines_meet_segment(&pt(20, 5), &pt(30, 5)), Some(false));
         let w = [(pt(20, 5), pt(30, 5)), (pt(-50, 5), pt(50, 5))];
-        assert_eq!(common_window(&w, &[&f]), Verdict::Crossed(1));
-        assert_eq!(common_window(&w[..1], &[&f]), Verdict::Refuted);
+        // A map around the fan, with chords at y = 5 (between the cell and
+        // the edge: crossed) and from (-110, -50) to (110, 5) (passing
+        // below the cell: not crossed); the edge itself is no chord.
+        let ring: Vec<Pt> = [
+            (-100, 10),
+            (-110, 5),
+            (-110, -50),
+            (110, -50),
+            (110, 5),
+            (105, 6),
+            (105, 8),
+            (100, 10),
+        ]
+        .iter()
+        .map(|&(x, y)| pt(x, y))
+        .collect();
+        let across = Chord::new(&ring, &ring[1], &ring[4]).expect("a chord");
+        assert_eq!(across.crossed_by(&f), Some(true));
+        let below = Chord::new(&ring, &ring[2], &ring[4]).expect("a chord");
+        assert_eq!(below.crossed_by(&f), Some(false));
+        assert!(Chord::new(&ring, &ring[7], &ring[0]).is_none());
+        assert!(Chord::new(&ring, &ring[1], &pt(0, 0)).is_none());
+        let w = [
+            (ring[2].clone(), ring[4].clone()),
+            (ring[1].clone(), ring[4].clone()),
+        ];
+        assert_eq!(common_window(&ring, &w, &[&f]), Verdict::Crossed(1));
+        assert_eq!(common_window(&ring, &w[..1], &[&f]), Verdict::Refuted);
+        // Not map vertices: no chord, so the hull tests decide.
+        assert_eq!(common_window(&[], &w, &[&f]), Verdict::Crossed(1));
+        assert_eq!(common_window(&[], &w[..1], &[&f]), Verdict::Refuted);
     }
 }

@@ -211,6 +211,11 @@ impl SightFan {
         None
     }
 
+    /// The witness cell the lines of sight start from.
+    pub fn witness_piece(&self) -> &Piece {
+        &self.witnesses
+    }
+
     /// Whether every line of sight of the fan meets the closed segment
     /// [a, b] (Lemma 5.13's "crosses h(a)"): `Some(true)` when shown for all
     /// of them, `Some(false)` with a line of sight that misses it, `None`
@@ -340,6 +345,114 @@ impl SightFan {
             ok,
             "the line of sight {w}–{p} through {v1}–{v2} found for {x} fails its re-check: a bug in the sight fans"
         );
+    }
+}
+
+/// An embedded artificial edge [x, y] between two map vertices whose
+/// relative interior runs through the map's interior: a chord, which cuts
+/// the map into two parts (the boundary arc from x forward to y, closed by
+/// the chord, and the rest).
+///
+/// Lines of sight meet the boundary only at their ends (sec. 2.2), so one
+/// meets the chord iff its ends lie in different parts: this decides
+/// whether *all* lines of sight of a fan cross it, exactly, where
+/// [`SightFan::lines_meet_segment`]'s hull tests may not.
+pub struct Chord {
+    x: Pt,
+    y: Pt,
+    /// Vertex indices of x and y, and n.
+    ix: usize,
+    iy: usize,
+    n: usize,
+    /// The part of the arc from x to y: its vertices, x first.
+    part: Vec<Pt>,
+}
+
+impl Chord {
+    /// The chord [x, y] of `ring`, if x and y are distinct map vertices and
+    /// no other boundary point lies on the segment.
+    pub fn new(ring: &[Pt], x: &Pt, y: &Pt) -> Option<Chord> {
+        let n = ring.len();
+        let ix = ring.iter().position(|v| v == x)?;
+        let iy = ring.iter().position(|v| v == y)?;
+        // Equal or adjacent vertices: no chord (a map edge is boundary).
+        if ix == iy || (ix + 1) % n == iy || (iy + 1) % n == ix {
+            return None;
+        }
+        for k in 0..n {
+            let (a, b) = (&ring[k], &ring[(k + 1) % n]);
+            // An edge that touches the open chord: a vertex on it, or a
+            // crossing (edges at x or y touch it only there).
+            let at_ends = |v: &Pt| v == x || v == y;
+            if !at_ends(a) && segments_meet(a, a, x, y) {
+                return None;
+            }
+            if !at_ends(a) && !at_ends(b) && segments_meet(a, b, x, y) {
+                return None;
+            }
+        }
+        let len = (iy + n - ix) % n;
+        let part = (0..=len).map(|k| ring[(ix + k) % n].clone()).collect();
+        Some(Chord {
+            x: x.clone(),
+            y: y.clone(),
+            ix,
+            iy,
+            n,
+            part,
+        })
+    }
+
+    /// Whether map edge `e` (from vertex e to e + 1) lies on the arc from x
+    /// to y.
+    fn edge_in_part(&self, e: usize) -> bool {
+        (e + self.n - self.ix) % self.n < (self.iy + self.n - self.ix) % self.n
+    }
+
+    /// Whether a point off the chord and off the boundary lies in the part
+    /// of the arc from x to y (crossing parity of a rightward ray).
+    fn point_in_part(&self, z: &Pt) -> bool {
+        let m = self.part.len();
+        let mut inside = false;
+        for k in 0..m {
+            let (a, b) = (&self.part[k], &self.part[(k + 1) % m]);
+            if (a.y > z.y) != (b.y > z.y) {
+                // The edge crosses the horizontal line through z; is the
+                // crossing right of z? Its sign against the edge's direction.
+                let t = turn(a, b, z);
+                if (b.y > a.y) == (t == Ordering::Greater) {
+                    inside = !inside;
+                }
+            }
+        }
+        inside
+    }
+
+    /// Whether every line of sight of `fan` meets the chord: `Some(true)`
+    /// if its witness cell and its candidate edge lie in different parts,
+    /// `Some(false)` if some of its witnesses lie in the edge's part.
+    pub fn crossed_by(&self, fan: &SightFan) -> Option<bool> {
+        let cell = fan.witness_piece();
+        let chord = Piece::Segment(self.x.clone(), self.y.clone());
+        let edge_side = self.edge_in_part(fan.edge);
+        if cell.meets(&chord) {
+            let corners = cell.vertices();
+            if corners
+                .iter()
+                .all(|v| turn(&self.x, &self.y, v) == Ordering::Equal)
+            {
+                // Along the chord's line: on it (every line starts on the
+                // chord) or partly beyond an end (left open).
+                return corners
+                    .iter()
+                    .all(|v| segments_meet(v, v, &self.x, &self.y))
+                    .then_some(true);
+            }
+            // Witnesses on both sides of the chord near it, so some in the
+            // edge's part: their lines of sight stay there.
+            return Some(false);
+        }
+        Some(self.point_in_part(&cell.inner_point()) != edge_side)
     }
 }
 

@@ -32,7 +32,7 @@ pub mod wedge;
 mod witness;
 
 pub use candidate_sets::CandidateSets;
-pub use crossing::{crossing, Crossing, SightFan};
+pub use crossing::{crossing, Chord, Crossing, SightFan};
 pub use embedding::{embeddings, Embedder, Embedding};
 pub use gaps::{gap_chains, GapChain, GapRelation};
 pub use intersection::{EdgeType, Intersection, SkeletonRing};
