@@ -357,6 +357,7 @@ impl SightFan {
 /// meets the chord iff its ends lie in different parts: this decides
 /// whether *all* lines of sight of a fan cross it, exactly, where
 /// [`SightFan::lines_meet_segment`]'s hull tests may not.
+#[derive(Debug, Clone)]
 pub struct Chord {
     x: Pt,
     y: Pt,
