@@ -199,7 +199,7 @@ mod tests {
         assert_ne!(f.lines_meet_segment(&pt(-50, -2), &pt(50, -2)), Some(true));
         // A short bar beside the fan: missed.
         assert_eq!(f.lines_meet_segment(&pt(20, 5), &pt(30, 5)), Some(false));
-        let w = [(pt(20, 5), pt(30, 5)), (pt(-50, 5), pt(50, 5))];
+        let bars = [(pt(20, 5), pt(30, 5)), (pt(-50, 5), pt(50, 5))];
         // A map around the fan, with chords at y = 5 (between the cell and
         // the edge: crossed) and from (-110, -50) to (110, 5) (passing
         // below the cell: not crossed); the edge itself is no chord.
@@ -229,7 +229,7 @@ mod tests {
         assert_eq!(common_window(&ring, &w, &[&f]), Verdict::Crossed(1));
         assert_eq!(common_window(&ring, &w[..1], &[&f]), Verdict::Refuted);
         // Not map vertices: no chord, so the hull tests decide.
-        assert_eq!(common_window(&[], &w, &[&f]), Verdict::Crossed(1));
-        assert_eq!(common_window(&[], &w[..1], &[&f]), Verdict::Refuted);
+        assert_eq!(common_window(&[], &bars, &[&f]), Verdict::Crossed(1));
+        assert_eq!(common_window(&[], &bars[..1], &[&f]), Verdict::Refuted);
     }
 }
