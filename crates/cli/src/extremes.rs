@@ -273,13 +273,16 @@ fn note(args: &Args, f: &Found, outcome: &Outcome, rank: usize) -> String {
     };
     let verdict = if breaks(ratio, v) {
         format!(
-            "k = {v} is above Theorem 5.15's bound 6: a violation found by search; whether the \
-             thesis or our code is wrong is not known yet"
+            "k = {v} is above Theorem 5.15's bound {}: a violation found by search; whether the \
+             thesis or our code is wrong is not known yet",
+            wai_lemmas::t5_15::BOUND
         )
     } else if ratio == Ratio::K {
-        "k is within Theorem 5.15's bound 6: nothing here is a violation; neither the thesis nor \
-         our code is wrong"
-            .to_owned()
+        format!(
+            "k is within Theorem 5.15's bound {}: nothing here is a violation; neither the \
+             thesis nor our code is wrong",
+            wai_lemmas::t5_15::BOUND
+        )
     } else {
         let side = if *v > ratio.ceiling() {
             "above"
@@ -451,7 +454,11 @@ fn summary(args: &Args, o: &Outcome, written: &[PathBuf]) -> String {
                 f.eval.detail
             );
             if breaks(args.ratio, &f.eval.value) {
-                let _ = writeln!(s, "  above Theorem 5.15's bound 6: a violation");
+                let _ = writeln!(
+                    s,
+                    "  above Theorem 5.15's bound {}: a violation",
+                    wai_lemmas::t5_15::BOUND
+                );
             }
         }
         None => {

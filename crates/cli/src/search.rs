@@ -21,7 +21,6 @@
 //!
 //! Ratios are exact `Rational`s; floats appear only in printed decimals.
 
-use std::collections::{BTreeMap, BTreeSet};
 use std::panic::{catch_unwind, AssertUnwindSafe};
 use std::time::{Duration, Instant};
 
@@ -83,13 +82,14 @@ impl Ratio {
         }
     }
 
-    /// The claim's ceiling in `wai-lemmas` (for `k`, the theorem's bound 6).
+    /// The claim's ceiling in `wai-lemmas` (for `k`, the theorem's bound
+    /// [`wai_lemmas::t5_15::BOUND`]).
     pub fn ceiling(self) -> Rational {
         match self {
             Ratio::Ec => wai_lemmas::t5_17::ceiling(),
             Ratio::Cmult => wai_lemmas::t5_12::ceiling(),
             Ratio::Wedge => wai_lemmas::t5_16::ceiling(),
-            Ratio::K => Rational::from(6),
+            Ratio::K => Rational::from(wai_lemmas::t5_15::BOUND),
         }
     }
 
@@ -151,6 +151,7 @@ impl Ratio {
             Ratio::K => {
                 let study = Study::new(map);
                 let k = largest_k(&study);
+                debug_assert_eq!(k.k, wai_lemmas::t5_15::largest_k(&study));
                 Evaluation {
                     value: Rational::from(k.k),
                     guide: Rational::from(k.premise),
@@ -185,54 +186,34 @@ pub struct LargestK {
     pub premise: usize,
 }
 
-/// Theorem 5.15's k: over the skeletons and the pairs of map edges
-/// (e, f), the number of valid embeddings h_j in which e ∈ C_{i,j} and
-/// f ∈ C_{i',j} for two different artificial edges i ≠ i' with
-/// |C_{i',j}| > 1 (f a *multiple* candidate edge of a_{i'} in h_j, as the
-/// theorem's proof uses it: f and another f_u both in C_{i_u,j_u}).
-///
-/// FIXME: `wai_lemmas::t5_15::largest_k` is being written on main; this
-/// private count stands in for it until it lands (issue 10).
+/// Theorem 5.15's k ([`wai_lemmas::t5_15::largest_k`]: over the skeletons
+/// and the ordered pairs of map edges (e, f), the number of valid
+/// embeddings h_j in which e ∈ C_{i,j} and f ∈ C_{ĩ,j} for two different
+/// artificial edges, f sharing C_{ĩ,j} with another candidate edge), with
+/// where it is reached and the premise count that guides the search.
 pub fn largest_k(study: &Study<'_>) -> LargestK {
     largest_k_of(study.candidate_sets())
 }
 
-/// [`largest_k`] on the candidate sets of every class.
+/// [`largest_k`] on the candidate sets of every class, from
+/// [`wai_lemmas::t5_15::k_of_pairs`].
 pub fn largest_k_of(classes: &[wai_embed::CandidateSets]) -> LargestK {
     let mut best = LargestK::default();
     for (class, sets) in classes.iter().enumerate() {
-        let mut by_pair: BTreeMap<(usize, usize), Vec<usize>> = BTreeMap::new();
-        let mut premise = 0;
-        for (j, by_edge) in sets.sets.iter().enumerate() {
-            if by_edge.len() >= 2 && by_edge.iter().any(|c| c.len() >= 2) {
-                premise += 1;
-            }
-            let mut pairs = BTreeSet::new();
-            for (i, c) in by_edge.iter().enumerate() {
-                for (i2, c2) in by_edge.iter().enumerate() {
-                    if i == i2 || c2.len() < 2 {
-                        continue;
-                    }
-                    for &e in c {
-                        for &f in c2 {
-                            pairs.insert((e, f));
-                        }
-                    }
-                }
-            }
-            for p in pairs {
-                by_pair.entry(p).or_default().push(sets.embeddings[j]);
-            }
-        }
+        let premise = sets
+            .sets
+            .iter()
+            .filter(|by_edge| by_edge.len() >= 2 && by_edge.iter().any(|c| c.len() >= 2))
+            .count();
         best.premise = best.premise.max(premise);
-        for ((e, f), hs) in by_pair {
-            if hs.len() > best.k {
+        for ((e, f), js) in wai_lemmas::t5_15::k_of_pairs(sets) {
+            if js.len() > best.k {
                 best = LargestK {
-                    k: hs.len(),
+                    k: js.len(),
                     class: Some(class),
                     e: Some(e),
                     f: Some(f),
-                    embeddings: hs,
+                    embeddings: js.iter().map(|&j| sets.embeddings[j]).collect(),
                     premise: best.premise,
                 };
             }
@@ -799,8 +780,10 @@ mod tests {
         // Fig 4.31: the artificial edges across the necks have two valid
         // candidate edges each, in both valid embeddings.
         let map = wai_gen::bottled_niches(0);
-        let k = largest_k(&Study::new(&map));
+        let study = Study::new(&map);
+        let k = largest_k(&study);
         assert_eq!((k.k, k.premise), (1, 2), "{k:?}");
+        assert_eq!(k.k, wai_lemmas::t5_15::largest_k(&study));
     }
 
     #[test]
