@@ -273,13 +273,13 @@ fn note(args: &Args, f: &Found, outcome: &Outcome, rank: usize) -> String {
     };
     let verdict = if breaks(ratio, v) {
         format!(
-            "k = {v} is above Theorem 5.15's bound {}: a violation found by search; whether the \
+            "The value k = {v} is above Theorem 5.15's bound {}: a violation found by search; whether the \
              thesis or our code is wrong is not known yet",
             wai_lemmas::t5_15::BOUND
         )
     } else if ratio == Ratio::K {
         format!(
-            "k is within Theorem 5.15's bound {}: nothing here is a violation; neither the \
+            "The value k is within Theorem 5.15's bound {}: nothing here is a violation; neither the \
              thesis nor our code is wrong",
             wai_lemmas::t5_15::BOUND
         )
@@ -290,7 +290,7 @@ fn note(args: &Args, f: &Found, outcome: &Outcome, rank: usize) -> String {
             "below"
         };
         format!(
-            "the ratio is {side} the checker's ceiling {} (wai_lemmas::{}); an O(·) bound is \
+            "The ratio is {side} the checker's ceiling {} (wai_lemmas::{}); an O(·) bound is \
              never decided by one map, so nothing here is a violation",
             ratio.ceiling(),
             ratio.claim().to_lowercase().replace('.', "_")

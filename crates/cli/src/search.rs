@@ -435,6 +435,9 @@ fn guarded(evaluate: &dyn Fn(&Map) -> Evaluation, map: &Map) -> Option<Evaluatio
     catch_unwind(AssertUnwindSafe(|| evaluate(map))).ok()
 }
 
+/// Rounds without an evaluation after which [`search`] gives up.
+const BARREN_ROUNDS: u32 = 100_000;
+
 /// Runs the search from `starts` (in order), maximising `evaluate`.
 pub fn search(
     starts: &[(String, Map)],
@@ -503,9 +506,13 @@ pub fn search(
     let mut next_start = climbers.len() % ranked.len().max(1);
     let mut turn = 0usize;
     let mut idle = 0u32;
-    while !climbers.is_empty() && !stop(out.evaluations) {
+    // Rounds since the last evaluation: a search that can no longer make
+    // an evaluable mutant (every proposal refused) ends rather than spin.
+    let mut barren = 0u32;
+    while !climbers.is_empty() && !stop(out.evaluations) && barren < BARREN_ROUNDS {
         let c = turn % climbers.len();
         turn += 1;
+        barren += 1;
         let parent = &climbers[c].current;
         let mutant = mutate(&parent.map, &config.limits, &mut rng);
         let restart;
@@ -521,6 +528,7 @@ pub fn search(
                     restart = idle > 1000;
                 } else {
                     idle = 0;
+                    barren = 0;
                     if let Some(eval) = timed(&m.map, &mut out) {
                         let child = Found {
                             map: m.map,
@@ -705,6 +713,21 @@ mod tests {
         let s = starts();
         let o = search(&s, &config(0, 2), &reflex_share, &mut |_| {});
         assert_eq!((o.evaluations, o.starts.len()), (2, 2));
+    }
+
+    #[test]
+    fn starts_below_min_r_are_not_evaluated() {
+        let s = starts();
+        let mut c = config(0, 50);
+        c.min_r = 1000;
+        let o = search(&s, &c, &reflex_share, &mut |_| {});
+        assert_eq!((o.evaluations, o.starts.len(), o.best.len()), (0, 0, 0));
+        // With min_r 3 every evaluated map, start or mutant, has r >= 3.
+        c.min_r = 3;
+        c.keep = 50;
+        let o = search(&s, &c, &reflex_share, &mut |_| {});
+        assert!(o.starts.iter().all(|s| s.r >= 3) && !o.starts.is_empty());
+        assert!(o.best.iter().all(|f| f.map.r() >= 3));
     }
 
     #[test]
