@@ -21,6 +21,7 @@
 //!
 //! Ratios are exact `Rational`s; floats appear only in printed decimals.
 
+use std::collections::BTreeSet;
 use std::panic::{catch_unwind, AssertUnwindSafe};
 use std::time::{Duration, Instant};
 
@@ -266,35 +267,37 @@ pub fn start_maps(which: Starts, seed: u64, limits: &Limits) -> Vec<(String, Map
     let mut out = Vec::new();
     let fits = |m: &Map| m.n() <= limits.max_n && m.n() >= limits.min_n;
     if matches!(which, Starts::Families | Starts::Both) {
-        let mut push = |name: String, map: Result<Map, wai_gen::GenError>| {
-            if let Ok(m) = map.as_ref() {
-                if fits(m) {
-                    out.push((name, map.expect("checked")));
+        // Every family of wai_gen::FAMILIES at every parameter list of one
+        // or two values that it accepts and that fits, each map once; n
+        // grows with each parameter, so a loop stops at the first map
+        // above the cap.
+        let mut seen: BTreeSet<Vec<wai_exact::Point>> = BTreeSet::new();
+        let mut push = |name: String, map: Result<Map, wai_gen::GenError>| -> bool {
+            match map {
+                Ok(m) if m.n() > limits.max_n => true,
+                Ok(m) => {
+                    if fits(&m) && seen.insert(m.vertices().to_vec()) {
+                        out.push((name, m));
+                    }
+                    false
                 }
+                Err(_) => false,
             }
         };
-        for k in 1..=64u32 {
-            push(
-                format!("corridor-niches k={k}"),
-                wai_gen::family("corridor-niches", &[k]),
-            );
-            push(
-                format!("comb-convex-chain k={k}"),
-                wai_gen::family("comb-convex-chain", &[k]),
-            );
-        }
-        for z in 0..=4u32 {
-            push(
-                format!("overlap-fan z={z}"),
-                wai_gen::family("overlap-fan", &[z]),
-            );
-        }
-        for fan in 1..=8u32 {
-            for views in 1..=8u32 {
-                push(
-                    format!("convex-niches fan={fan} views={views}"),
-                    wai_gen::family("convex-niches", &[fan, views]),
-                );
+        for family in wai_gen::FAMILIES {
+            for k in 0..=64u32 {
+                let id = family.id;
+                if push(format!("{id} {k}"), wai_gen::family(id, &[k])) {
+                    break;
+                }
+            }
+            for a in 0..=8u32 {
+                for b in 0..=8u32 {
+                    let id = family.id;
+                    if push(format!("{id} {a},{b}"), wai_gen::family(id, &[a, b])) {
+                        break;
+                    }
+                }
             }
         }
         for layout in wai_gen::LAYOUTS {
