@@ -5,7 +5,9 @@
 //! map and print its numbers), `vis` (V_p and V*_p of a viewpoint),
 //! `decompose` (the visibility cell decomposition), `embeddings` (the
 //! embeddings of each skeleton, witnesses, overlaps), `preprocess` and
-//! `localize` (the exact reference localizer), `render` (draw a map as SVG).
+//! `localize` (the exact reference localizer), `render` (draw a map as SVG),
+//! `search-extremes` (a seeded local search for the maps that push a
+//! chapter 5 ratio highest).
 //!
 //! Exit codes: 0 success; 1 the map is invalid; 2 bad usage; 3 the file
 //! could not be read or written. Errors say what and where, never panic.
@@ -13,8 +15,10 @@
 mod commands;
 mod decompose;
 mod embeddings;
+mod extremes;
 mod input;
 mod localize;
+mod search;
 mod vis;
 
 // The allocator of every binary of the workspace (see Cargo.toml).
@@ -152,6 +156,11 @@ enum Command {
         #[command(flatten)]
         format: input::FormatArg,
     },
+    /// Search for the maps that push one chapter 5 ratio highest: seeded
+    /// hill climbing over map mutations from the thesis families and random
+    /// maps, ratios measured exactly; writes the best maps to
+    /// counterexamples/ (or --out) and prints what the starts reach.
+    SearchExtremes(extremes::Args),
     /// Draw a map as SVG, reflex vertices marked.
     Render {
         /// Map file (JSON map format or GeoJSON); `-` reads standard input.
@@ -261,6 +270,7 @@ fn main() -> ExitCode {
             },
             format.format,
         ),
+        Command::SearchExtremes(args) => extremes::search_extremes(&args),
         Command::Render {
             map,
             out,

@@ -25,6 +25,7 @@ mod bottles;
 mod families;
 mod grid;
 mod interweave;
+pub mod mutate;
 mod polyomino;
 mod repeated;
 mod ring;
