@@ -14,7 +14,7 @@ use serde_json::json;
 use wai_embed::{CandidateSets, GapRelation};
 
 use crate::driver::{Checker, Report, Violation};
-use crate::study::GapStructure;
+use crate::study::{over_gap_classes, GapStructure};
 use crate::Study;
 
 const ID: &str = "L5.5";
@@ -34,18 +34,7 @@ impl Checker for RelatedGapsApart {
     }
 
     fn check_study(&self, study: &Study<'_>) -> Report {
-        let mut report = Report::new(ID);
-        for (class, (g, c)) in study
-            .gap_structures()
-            .iter()
-            .zip(study.candidate_sets())
-            .enumerate()
-        {
-            let mut one = check_class(g, c);
-            one.tag("class", json!(class));
-            report.absorb(one);
-        }
-        report
+        over_gap_classes(study, ID, check_class)
     }
 }
 

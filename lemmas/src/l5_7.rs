@@ -12,7 +12,7 @@ use std::collections::{BTreeMap, BTreeSet};
 use serde_json::json;
 
 use crate::driver::{Checker, Report, Violation};
-use crate::study::GapStructure;
+use crate::study::{over_gap_classes, GapStructure};
 use crate::Study;
 
 const ID: &str = "L5.7";
@@ -32,19 +32,7 @@ impl Checker for OnePairOfArtificialEdges {
     }
 
     fn check_study(&self, study: &Study<'_>) -> Report {
-        let mut report = Report::new(ID);
-        for (class, (g, c)) in study
-            .gap_structures()
-            .iter()
-            .zip(study.candidate_sets())
-            .enumerate()
-        {
-            let mut one = check_class(g);
-            one.tag("class", json!(class));
-            one.tag("embeddings", json!(c.embeddings));
-            report.absorb(one);
-        }
-        report
+        over_gap_classes(study, ID, |g, _| check_class(g))
     }
 }
 

@@ -16,6 +16,7 @@ use serde_json::json;
 use wai_embed::{Interweavement, Node};
 
 use crate::driver::{Checker, Report, Violation};
+use crate::study::over_gap_classes;
 use crate::Study;
 
 const ID: &str = "L5.9";
@@ -35,19 +36,7 @@ impl Checker for ForestShape {
     }
 
     fn check_study(&self, study: &Study<'_>) -> Report {
-        let mut report = Report::new(ID);
-        for (class, (g, c)) in study
-            .gap_structures()
-            .iter()
-            .zip(study.candidate_sets())
-            .enumerate()
-        {
-            let mut one = check_graph(&g.graph);
-            one.tag("class", json!(class));
-            one.tag("embeddings", json!(c.embeddings));
-            report.absorb(one);
-        }
-        report
+        over_gap_classes(study, ID, |g, _| check_graph(&g.graph))
     }
 }
 

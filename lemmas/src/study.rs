@@ -188,6 +188,25 @@ impl GapStructure {
     }
 }
 
+/// Runs `check` on every class's gap structure and sets C_{i,j}, tags each
+/// violation with its class and the class's valid embeddings (indices in
+/// [`Study::embeddings`], by position j), and sums the reports (L5.5–L5.9).
+pub fn over_gap_classes(
+    study: &Study<'_>,
+    id: &'static str,
+    check: impl Fn(&GapStructure, &CandidateSets) -> crate::Report,
+) -> crate::Report {
+    let mut report = crate::Report::new(id);
+    let classes = study.gap_structures().iter().zip(study.candidate_sets());
+    for (class, (g, c)) in classes.enumerate() {
+        let mut one = check(g, c);
+        one.tag("class", serde_json::json!(class));
+        one.tag("embeddings", serde_json::json!(c.embeddings));
+        report.absorb(one);
+    }
+    report
+}
+
 /// An embedding of a class's skeleton (Def 3.11) and its kernel
 /// h(ker V*) (Def 3.12), in map coordinates.
 #[derive(Debug, Clone)]
