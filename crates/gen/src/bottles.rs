@@ -36,7 +36,7 @@
 //! about 21 against at least 27), and the chambers' side walls flatter than
 //! any line of sight through the neck.
 
-use crate::ring::into_map;
+use crate::SharedLayout;
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 use wai_exact::Point;
@@ -99,6 +99,25 @@ impl BottleLayout {
         2 * self.pitch + i * self.pitch
     }
 
+    /// The same hall as a [`SharedLayout`] with one extra bottle at each
+    /// end (`view` 1), whose ring it is drawn with.
+    pub fn hall(&self) -> SharedLayout {
+        SharedLayout {
+            pitch: self.pitch,
+            rooms: self.rooms,
+            mouth: self.mouth,
+            depth: self.depth,
+            height: self.height,
+            view: 1,
+            neck: self.neck,
+            chamber_depth: self.chamber_depth,
+            chamber: self.chamber,
+            spikes: self.spikes.to_vec(),
+            spike_width: self.spike_width,
+            spike_depth: self.spike_depth,
+        }
+    }
+
     /// Two witnesses of each room, one in each half, at the same places in
     /// every room: the first sees the back wall of the bottle above on the
     /// right of the middle spike, the second on its left.
@@ -128,34 +147,7 @@ impl BottleLayout {
 /// assert!(m.n() >= 40 && m.r() >= 16);
 /// ```
 pub fn bottled_niches(seed: u64) -> Map {
-    let l = BottleLayout::of_seed(seed);
-    let p = Point::new;
-    let west = l.x(-1) - l.pitch;
-    let east = l.x(l.rooms) + l.pitch;
-    let mut ring = vec![p(west, 0)];
-    for i in 0..l.rooms {
-        let x = l.x(i);
-        ring.extend([
-            p(x - l.mouth, 0),
-            p(x - l.mouth, -l.depth),
-            p(x + l.mouth, -l.depth),
-            p(x + l.mouth, 0),
-        ]);
-    }
-    ring.extend([p(east, 0), p(east, l.height)]);
-    let back = l.height + l.chamber_depth;
-    for j in (-1..=l.rooms).rev() {
-        let x = l.x(j);
-        ring.extend([p(x + l.neck, l.height), p(x + l.chamber, back)]);
-        for s in l.spikes.iter().rev() {
-            ring.extend([
-                p(x + s + l.spike_width, back),
-                p(x + s, back - l.spike_depth),
-                p(x + s - l.spike_width, back),
-            ]);
-        }
-        ring.extend([p(x - l.chamber, back), p(x - l.neck, l.height)]);
-    }
-    ring.push(p(west, l.height));
-    into_map(ring, format!("bottled-niches seed={seed}"))
+    BottleLayout::of_seed(seed)
+        .hall()
+        .map(format!("bottled-niches seed={seed}"))
 }
