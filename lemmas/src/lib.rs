@@ -85,6 +85,7 @@ pub mod l5_7;
 pub mod l5_8;
 pub mod l5_9;
 pub mod o5_3;
+pub mod planted;
 pub mod ratio;
 pub mod sample;
 pub mod study;
@@ -202,6 +203,26 @@ impl Claim {
 /// The row of `id`, if the catalogue has one.
 pub fn claim(id: &str) -> Option<&'static Claim> {
     CLAIMS.iter().find(|c| c.id == id)
+}
+
+/// The chapter of a claim id: the digit after its leading letters (`"T4.2"`
+/// → 4, `"L3.1a"` → 3).
+pub fn chapter_of(id: &str) -> Option<u8> {
+    let digit = id.trim_start_matches(|c: char| c.is_ascii_alphabetic());
+    digit.chars().next()?.to_digit(10).map(|d| d as u8)
+}
+
+/// The checkers of every claim of chapter `chapter` (3, 4 or 5) that has
+/// one, in catalogue order; empty for a chapter without claims.
+pub fn checkers_of_chapter(chapter: u8) -> Vec<Box<dyn Checker>> {
+    CLAIMS
+        .iter()
+        .filter(|c| chapter_of(c.id) == Some(chapter))
+        .filter_map(|c| match c.status {
+            Status::Checker(make) => Some(make()),
+            Status::NoCheckerYet => None,
+        })
+        .collect()
 }
 
 /// The ids of the claims that have no checker yet, in catalogue order.

@@ -165,6 +165,17 @@ pub fn check_polygon(map: &Map, vp: &VisibilityPolygon) -> Report {
     rebuild(map, vp).0
 }
 
+/// [`check_polygon`] with V_p rebuilt from `key_of(V*_p's key)` instead of
+/// the key itself: how [`crate::planted`] feeds the checker a wrong key, to
+/// show that the search finds and shrinks the violations this causes.
+pub fn check_polygon_with_key(
+    map: &Map,
+    vp: &VisibilityPolygon,
+    key_of: fn(SkeletonKey) -> SkeletonKey,
+) -> Report {
+    rebuild_keyed(map, vp, key_of).0
+}
+
 fn violation(
     map: &Map,
     vp: &VisibilityPolygon,
@@ -185,6 +196,15 @@ fn violation(
 
 /// The rebuild instance, and the skeleton if it could be built.
 fn rebuild(map: &Map, vp: &VisibilityPolygon) -> (Report, Option<Skeleton>) {
+    rebuild_keyed(map, vp, |key| key)
+}
+
+/// [`rebuild`] from `key_of` of the skeleton's key.
+fn rebuild_keyed(
+    map: &Map,
+    vp: &VisibilityPolygon,
+    key_of: fn(SkeletonKey) -> SkeletonKey,
+) -> (Report, Option<Skeleton>) {
     let mut report = Report::new(ID);
     let sk = match Skeleton::of(map, vp) {
         Ok(sk) => sk,
@@ -199,7 +219,7 @@ fn rebuild(map: &Map, vp: &VisibilityPolygon) -> (Report, Option<Skeleton>) {
         }
     };
     let o = sk.origin();
-    let rebuilt = reconstruct(&sk.key(), &translate(vp.viewpoint(), -o.x, -o.y));
+    let rebuilt = reconstruct(&key_of(sk.key()), &translate(vp.viewpoint(), -o.x, -o.y));
     let points = vp.points();
     let expected = points
         .iter()
