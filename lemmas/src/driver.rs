@@ -235,6 +235,48 @@ impl Summary {
         self.tallies.iter().flat_map(|t| t.violations.iter())
     }
 
+    /// Adds the summary of a later part of the same run, whose maps start at
+    /// index `first` of the whole stream: totals are summed, violations and
+    /// largest ratios keep their maps with indices shifted by `first`.
+    /// Tallies of claims new to `self` are appended.
+    pub fn absorb(&mut self, other: Summary, first: usize) {
+        self.maps += other.maps;
+        for t in other.tallies {
+            let mine = match self.tallies.iter().position(|m| m.claim == t.claim) {
+                Some(k) => &mut self.tallies[k],
+                None => {
+                    self.tallies.push(ClaimTally {
+                        claim: t.claim,
+                        examined: 0,
+                        violations: Vec::new(),
+                        counts: BTreeMap::new(),
+                        largest: None,
+                    });
+                    self.tallies.last_mut().expect("just pushed")
+                }
+            };
+            mine.examined += t.examined;
+            for (name, by) in t.counts {
+                *mine.counts.entry(name).or_default() += by;
+            }
+            mine.violations
+                .extend(t.violations.into_iter().map(|mut v| {
+                    v.map_index += first;
+                    v
+                }));
+            if let Some(mut l) = t.largest {
+                if mine
+                    .largest
+                    .as_ref()
+                    .is_none_or(|m| l.largest.ratio > m.largest.ratio)
+                {
+                    l.map_index += first;
+                    mine.largest = Some(l);
+                }
+            }
+        }
+    }
+
     /// True if no checker reported a violation. Says nothing about coverage:
     /// see [`Summary::untested`] and [`Summary::not_run`].
     pub fn is_clean(&self) -> bool {

@@ -22,9 +22,23 @@ pub const PLANTED: &[(&str, &str)] = &[(
 /// The planted checker `name` of [`PLANTED`].
 pub fn checker(name: &str) -> Option<Box<dyn Checker>> {
     match name {
-        "shifted-labels" => Some(Box::new(ShiftedLabels)),
+        "shifted-labels" => Some(shifted_labels()),
         _ => None,
     }
+}
+
+/// The constructor of `name`'s checker, for callers that make one checker
+/// per task ([`crate::check::search`]).
+pub fn maker(name: &str) -> Option<fn() -> Box<dyn Checker>> {
+    match name {
+        "shifted-labels" => Some(shifted_labels),
+        _ => None,
+    }
+}
+
+/// [`ShiftedLabels`], boxed.
+pub fn shifted_labels() -> Box<dyn Checker> {
+    Box::new(ShiftedLabels)
 }
 
 /// T3.2's rebuild (V_p from V*_p and p − v0) with the key's labels shifted

@@ -9,7 +9,7 @@ use std::path::PathBuf;
 use std::time::{Duration, Instant};
 
 use rug::Rational;
-use serde_json::{json, Value};
+use serde_json::json;
 use wai_gen::mutate::Limits;
 
 use crate::search::{self, Config, Found, Outcome, Ratio, Starts, Status};
@@ -365,29 +365,14 @@ fn file_text(
             "command": cmd,
         }
     });
-    let field = |v: &Value| serde_json::to_string(v).expect("plain JSON values");
-    let unit = |c: i128| {
-        wai_map::format_exact(&Rational::from((
-            rug::Integer::from(c),
-            map.scale().clone(),
-        )))
-    };
-    let outer: Vec<String> = map
-        .vertices()
-        .iter()
-        .map(|p| format!("    [\"{}\", \"{}\"]", unit(p.x), unit(p.y)))
-        .collect();
-    let meta_text = serde_json::to_string_pretty(&meta)
-        .expect("plain JSON values")
-        .replace('\n', "\n  ");
-    format!(
-        "{{\n  \"name\": {},\n  \"source\": {},\n  \"claim\": {},\n  \"kind\": {},\n  \"note\": {},\n  \"outer\": [\n{}\n  ],\n  \"holes\": [],\n  \"meta\": {meta_text}\n}}\n",
-        field(&Value::from(name)),
-        field(&Value::from(format!("found by `{cmd}`"))),
-        field(&Value::from(args.ratio.claim())),
-        field(&Value::from(kind)),
-        field(&Value::from(note(args, f, outcome, rank))),
-        outer.join(",\n"),
+    crate::counterexample::file_text(
+        map,
+        &name,
+        &format!("found by `{cmd}`"),
+        args.ratio.claim(),
+        kind,
+        &note(args, f, outcome, rank),
+        &meta,
     )
 }
 

@@ -7,12 +7,15 @@
 //! embeddings of each skeleton, witnesses, overlaps), `preprocess` and
 //! `localize` (the exact reference localizer), `render` (draw a map as SVG),
 //! `search-extremes` (a seeded local search for the maps that push a
-//! chapter 5 ratio highest).
+//! chapter 5 ratio highest), `check` (every claim checker over a stream of
+//! maps, shrinking what breaks a claim).
 //!
 //! Exit codes: 0 success; 1 the map is invalid; 2 bad usage; 3 the file
 //! could not be read or written. Errors say what and where, never panic.
 
+mod check;
 mod commands;
+mod counterexample;
 mod decompose;
 mod embeddings;
 mod extremes;
@@ -161,6 +164,13 @@ enum Command {
     /// maps, ratios measured exactly; writes the best maps to
     /// counterexamples/ (or --out) and prints what the starts reach.
     SearchExtremes(extremes::Args),
+    /// Hunt for counterexamples: every claim checker (or the CLAIM ids
+    /// given) over a stream of generated maps, the corpus or files, for a
+    /// count or a time budget; prints per claim the instances examined, the
+    /// violations and the largest ratio, shrinks each counterexample and
+    /// writes it to counterexamples/ with its replay command. Exits 1 on a
+    /// counterexample.
+    Check(check::Args),
     /// Draw a map as SVG, reflex vertices marked.
     Render {
         /// Map file (JSON map format or GeoJSON); `-` reads standard input.
@@ -271,6 +281,7 @@ fn main() -> ExitCode {
             format.format,
         ),
         Command::SearchExtremes(args) => extremes::search_extremes(&args),
+        Command::Check(args) => check::check(&args),
         Command::Render {
             map,
             out,

@@ -1,0 +1,641 @@
+#![allow(
+    clippy::float_arithmetic,
+    reason = "approximate decimals of exact ratios, for people"
+)]
+//! `wai check`: the claim checkers over a stream of maps, hunting for
+//! counterexamples (issue 11). The engine is [`wai_lemmas::check`]; this
+//! module reads the command line, shows progress, prints the totals,
+//! shrinks each counterexample ([`wai_lemmas::shrink`]) and writes it to
+//! `counterexamples/` in that folder's format with the command that replays
+//! it, `wai check --replay FILE`.
+//!
+//! Exit codes: 0 no counterexample (known failures, counted apart, do not
+//! count); 1 a counterexample was found (or, with `--replay`, the stored
+//! one still breaks its claim); 2 bad usage; 3 a file could not be read or
+//! written.
+
+use std::io::IsTerminal;
+use std::path::{Path, PathBuf};
+use std::time::{Duration, Instant};
+
+use serde_json::{json, Value};
+use wai_lemmas::check::{self, Limit, Maker, Outcome, Stream};
+use wai_lemmas::{Status, CLAIMS};
+use wai_map::Map;
+
+use crate::Failure;
+
+#[derive(clap::Args, Debug)]
+pub struct Args {
+    /// Claim ids to check (e.g. T4.2 L5.13); default every claim that has a
+    /// checker.
+    pub claims: Vec<String>,
+    /// Only the claims of these chapters (comma-separated: 3,4,5).
+    #[arg(long, value_delimiter = ',')]
+    pub chapter: Vec<u8>,
+    /// The maps: comma-separated KIND[:a-b] (random kinds with n from a to
+    /// b, layouts, family with parameters a to b), `all` for every kind, or
+    /// `corpus` (polyominoes up to 8 cells, the families at 1..6, the
+    /// datasets, counterexamples/).
+    #[arg(long, default_value = "all")]
+    pub maps: String,
+    /// Instead of --maps: these map files.
+    #[arg(long, num_args = 1.., value_name = "MAP")]
+    pub files: Vec<PathBuf>,
+    /// Stop after this many maps (default 1000 without --budget).
+    #[arg(long)]
+    pub count: Option<u64>,
+    /// Stop after this much wall-clock time: 90s, 10m, 1h30m.
+    #[arg(long)]
+    pub budget: Option<String>,
+    /// Map i of a generated stream has seed S + i.
+    #[arg(long, default_value_t = 0)]
+    pub seed: u64,
+    /// Worker threads (default: one per core).
+    #[arg(long)]
+    pub threads: Option<usize>,
+    /// Print the run as JSON (the record's keys, and the counterexamples).
+    #[arg(long)]
+    pub json: bool,
+    /// Also write the run record to this file (the claims dashboard reads
+    /// lemmas/last-run.json).
+    #[arg(long)]
+    pub record: Option<PathBuf>,
+    /// Folder for shrunk counterexamples (default counterexamples/, or
+    /// target/wai-check-planted with --plant).
+    #[arg(long)]
+    pub out: Option<PathBuf>,
+    /// Do not shrink counterexamples; store them as found.
+    #[arg(long)]
+    pub no_shrink: bool,
+    /// At most this many candidate maps checked while shrinking one
+    /// counterexample.
+    #[arg(long, default_value_t = 3000)]
+    pub shrink_tries: usize,
+    /// Stop at the first batch of maps with a counterexample.
+    #[arg(long)]
+    pub first: bool,
+    /// Write, per claim that measures a ratio, the map of its largest
+    /// ratio to DIR/<claim>-largest.json.
+    #[arg(long, value_name = "DIR")]
+    pub largest: Option<PathBuf>,
+    /// Run a planted bug (wai_lemmas::planted) in place of the real checker
+    /// of its claim, to see the search find and shrink it.
+    #[arg(long)]
+    pub plant: Option<String>,
+    /// Re-run the claim of a stored counterexample file on its map instead.
+    #[arg(long, value_name = "FILE", conflicts_with_all = ["files", "count", "budget"])]
+    pub replay: Option<PathBuf>,
+}
+
+/// The checkers of the run: (claim id, constructor), planted bug in place.
+fn makers(args: &Args) -> Result<Vec<(&'static str, Maker)>, Failure> {
+    for id in &args.claims {
+        match wai_lemmas::claim(id) {
+            Some(c) if c.status.has_checker() => {}
+            Some(_) => return Err(Failure::usage(format!("claim {id} has no checker yet"))),
+            None => {
+                return Err(Failure::usage(format!(
+                    "no claim {id} in the registry (wai claims lists them)"
+                )))
+            }
+        }
+    }
+    if let Some(ch) = args.chapter.iter().find(|c| !(3..=5).contains(*c)) {
+        return Err(Failure::usage(format!(
+            "--chapter {ch}: the claims are in chapters 3, 4 and 5"
+        )));
+    }
+    let planted = match &args.plant {
+        None => None,
+        Some(name) => {
+            let make = wai_lemmas::planted::maker(name).ok_or_else(|| {
+                let names: Vec<&str> = wai_lemmas::planted::PLANTED
+                    .iter()
+                    .map(|(n, _)| *n)
+                    .collect();
+                Failure::usage(format!(
+                    "--plant {name}: the planted bugs are {}",
+                    names.join(", ")
+                ))
+            })?;
+            Some((make().id(), make))
+        }
+    };
+    let chosen: Vec<(&'static str, Maker)> = CLAIMS
+        .iter()
+        .filter(|c| args.claims.is_empty() || args.claims.iter().any(|i| i == c.id))
+        .filter(|c| {
+            args.chapter.is_empty()
+                || wai_lemmas::chapter_of(c.id).is_some_and(|ch| args.chapter.contains(&ch))
+        })
+        .filter_map(|c| match c.status {
+            Status::Checker(make) => Some((c.id, make)),
+            Status::NoCheckerYet => None,
+        })
+        .map(|(id, make)| match planted {
+            Some((pid, pmake)) if pid == id => (id, pmake),
+            _ => (id, make),
+        })
+        .collect();
+    if chosen.is_empty() {
+        return Err(Failure::usage("no checker is selected"));
+    }
+    if let Some((pid, _)) = planted {
+        if !chosen.iter().any(|(id, _)| *id == pid) {
+            return Err(Failure::usage(format!(
+                "--plant replaces the checker of {pid}, which is not selected"
+            )));
+        }
+    }
+    Ok(chosen)
+}
+
+/// The kind of a fixed stream's map, from its name: a dataset's folder, a
+/// family's id, `polyomino`, `counterexamples`.
+fn kind_of_name(name: &str) -> String {
+    let cut = name.find([' ', '/']).unwrap_or(name.len());
+    name[..cut].to_owned()
+}
+
+fn stream(args: &Args) -> Result<Stream, Failure> {
+    if !args.files.is_empty() {
+        let mut maps = Vec::new();
+        for f in &args.files {
+            let map = crate::input::load(f, crate::input::Format::Auto)?.map;
+            let name = map
+                .name()
+                .map_or_else(|| f.display().to_string(), str::to_owned);
+            maps.push(("files".to_owned(), map.with_name(name)));
+        }
+        return Ok(Stream::Fixed(maps));
+    }
+    if args.maps == "corpus" {
+        let maps = wai_lemmas::corpus::corpus_maps().map_err(Failure::io)?;
+        return Ok(Stream::Fixed(
+            maps.into_iter()
+                .map(|m| (kind_of_name(m.name().unwrap_or("corpus")), m))
+                .collect(),
+        ));
+    }
+    let kinds = check::parse_kinds(&args.maps).map_err(Failure::usage)?;
+    Ok(Stream::Generated {
+        kinds,
+        seed: args.seed,
+    })
+}
+
+/// The command line of this run, for records and notes.
+fn command_line() -> String {
+    let mut words = vec!["wai".to_owned()];
+    words.extend(std::env::args().skip(1));
+    words.join(" ")
+}
+
+/// Progress on standard error: a bar on a terminal, else a line every 30 s.
+struct Progress {
+    bar: indicatif::ProgressBar,
+    terminal: bool,
+    last_line: std::sync::Mutex<Instant>,
+    total: Option<u64>,
+}
+
+impl Progress {
+    fn new(total: Option<u64>, budget: Option<Duration>) -> Progress {
+        let len = total.or(budget.map(|b| b.as_secs().max(1))).unwrap_or(0);
+        let bar = indicatif::ProgressBar::new(len);
+        bar.set_style(
+            indicatif::ProgressStyle::with_template("{elapsed_precise} [{bar:30}] {msg}")
+                .unwrap_or_else(|_| indicatif::ProgressStyle::default_bar()),
+        );
+        Progress {
+            bar,
+            terminal: std::io::stderr().is_terminal(),
+            last_line: std::sync::Mutex::new(Instant::now()),
+            total,
+        }
+    }
+
+    fn update(&self, done: u64, elapsed: Duration) {
+        let msg = match self.total {
+            Some(t) => format!("{done}/{t} maps"),
+            None => format!("{done} maps"),
+        };
+        if self.terminal {
+            self.bar.set_position(if self.total.is_some() {
+                done
+            } else {
+                elapsed.as_secs()
+            });
+            self.bar.set_message(msg);
+        } else if let Ok(mut last) = self.last_line.lock() {
+            if last.elapsed() >= Duration::from_secs(30) {
+                *last = Instant::now();
+                eprintln!("[{:>5} s] wai check: {msg}", elapsed.as_secs());
+            }
+        }
+    }
+}
+
+pub fn check(args: &Args) -> Result<(), Failure> {
+    if let Some(file) = &args.replay {
+        return replay(args, file);
+    }
+    let makers = makers(args)?;
+    let budget = args
+        .budget
+        .as_deref()
+        .map(crate::search::parse_duration)
+        .transpose()
+        .map_err(|e| Failure::usage(format!("--budget: {e}")))?;
+    let stream = stream(args)?;
+    if stream.is_empty() {
+        return Err(Failure::usage("the stream has no map"));
+    }
+    let limit = match (args.count, budget) {
+        (Some(_), Some(_)) => return Err(Failure::usage("give --count or --budget, not both")),
+        (Some(n), None) => Limit::Count(n),
+        (None, Some(b)) => Limit::Budget(b),
+        (None, None) => Limit::Count(stream.len().unwrap_or(1000)),
+    };
+    if let Some(t) = args.threads {
+        if t == 0 {
+            return Err(Failure::usage("--threads must be positive"));
+        }
+        // Fails only if the pool was built already, which it was not.
+        let _ = rayon::ThreadPoolBuilder::new()
+            .num_threads(t)
+            .build_global();
+    }
+    let threads = rayon::current_num_threads() as u64;
+    let total = match limit {
+        Limit::Count(n) => Some(stream.len().map_or(n, |len| n.min(len))),
+        Limit::Budget(_) => stream.len(),
+    };
+    let progress = Progress::new(total, budget);
+    let only: Vec<Maker> = makers.iter().map(|(_, m)| *m).collect();
+    let outcome = check::search(
+        &only,
+        &stream,
+        limit,
+        4 * threads,
+        args.first,
+        &|done, elapsed| progress.update(done, elapsed),
+    );
+    progress.bar.finish_and_clear();
+    let out_dir = args.out.clone().unwrap_or_else(|| {
+        PathBuf::from(if args.plant.is_some() {
+            "target/wai-check-planted"
+        } else {
+            "counterexamples"
+        })
+    });
+    let stored = store_counterexamples(args, &makers, &outcome, &out_dir)?;
+    if let Some(dir) = &args.largest {
+        write_largest(&outcome, dir)?;
+    }
+    let record = record_json(args, &outcome);
+    if let Some(path) = &args.record {
+        let text = serde_json::to_string_pretty(&record).expect("plain JSON values") + "\n";
+        std::fs::write(path, text).map_err(|e| Failure::io(format!("{}: {e}", path.display())))?;
+    }
+    if args.json {
+        let mut all = record;
+        all["counterexamples"] = Value::from(stored.iter().map(Stored::json).collect::<Vec<_>>());
+        println!(
+            "{}",
+            serde_json::to_string_pretty(&all).expect("plain JSON values")
+        );
+    } else {
+        print!("{}", text_summary(args, &outcome, threads, &stored));
+    }
+    if outcome.counterexamples().is_empty() {
+        Ok(())
+    } else {
+        Err(Failure {
+            code: 1,
+            message: format!(
+                "{} counterexample(s) found; stored in {}",
+                outcome.counterexamples().len(),
+                out_dir.display()
+            ),
+        })
+    }
+}
+
+/// One counterexample written to a file.
+struct Stored {
+    claim: &'static str,
+    found_on: String,
+    from_n: usize,
+    map: Map,
+    steps: usize,
+    what: String,
+    path: PathBuf,
+}
+
+impl Stored {
+    fn replay(&self) -> String {
+        format!("wai check --replay {}", self.path.display())
+    }
+
+    fn json(&self) -> Value {
+        json!({
+            "claim": self.claim,
+            "found_on": self.found_on,
+            "n_found": self.from_n,
+            "n": self.map.n(),
+            "r": self.map.r(),
+            "shrink_steps": self.steps,
+            "what": self.what,
+            "file": self.path.display().to_string(),
+            "replay": self.replay(),
+        })
+    }
+}
+
+/// Per claim with a counterexample: the one on the smallest map, shrunk
+/// (unless --no-shrink) and written to `out`.
+fn store_counterexamples(
+    args: &Args,
+    makers: &[(&'static str, Maker)],
+    outcome: &Outcome,
+    out: &Path,
+) -> Result<Vec<Stored>, Failure> {
+    let mut stored = Vec::new();
+    for (claim, make) in makers {
+        let Some(first) = outcome
+            .counterexamples()
+            .into_iter()
+            .filter(|v| v.claim == *claim)
+            .min_by_key(|v| (v.map_json.len(), v.map_index))
+        else {
+            continue;
+        };
+        let found = wai_map::json::from_json(first.map_json.as_bytes())
+            .map_err(|e| Failure::invalid(format!("the violating map does not read back: {e}")))?
+            .map;
+        let shrunk = if args.no_shrink {
+            None
+        } else {
+            eprintln!(
+                "wai check: shrinking the {claim} counterexample on {} (n = {})",
+                first.map_name.as_deref().unwrap_or("an unnamed map"),
+                found.n()
+            );
+            Some(wai_lemmas::shrink::shrink(
+                &found,
+                |m| check::still_violated(*make, m),
+                args.shrink_tries,
+            ))
+        };
+        let (map, steps) = match &shrunk {
+            Some(s) => (s.map.clone(), s.steps),
+            None => (found.clone(), 0),
+        };
+        // The violation as reported on the stored map.
+        let report = make().check(&map);
+        let violation = report
+            .violations
+            .iter()
+            .find(|v| !wai_lemmas::is_known_failure(claim, &v.data))
+            .unwrap_or(&first.violation);
+        std::fs::create_dir_all(out).map_err(|e| Failure::io(format!("{}: {e}", out.display())))?;
+        let path = out.join(format!(
+            "{claim}-check-seed{}-map{}.json",
+            args.seed, first.map_index
+        ));
+        let s = Stored {
+            claim,
+            found_on: first
+                .map_name
+                .clone()
+                .unwrap_or_else(|| format!("map #{}", first.map_index)),
+            from_n: found.n(),
+            map,
+            steps,
+            what: violation.what.clone(),
+            path,
+        };
+        let meta = json!({"check": {
+            "command": command_line(),
+            "found_on": s.found_on,
+            "map_index": first.map_index,
+            "n_found": s.from_n,
+            "shrink_steps": steps,
+            "shrink_tries": shrunk.as_ref().map(|s| s.tries),
+            "planted": args.plant,
+            "violation": violation.data,
+            "replay": s.replay(),
+        }});
+        let note = format!(
+            "A violation of {claim} found by `wai check` on {} (n = {}) and shrunk to n = {}, \
+             r = {} in {steps} steps: {}. Whether the thesis or our code is wrong is not known \
+             yet.{} Replay: `{}`.",
+            s.found_on,
+            s.from_n,
+            s.map.n(),
+            s.map.r(),
+            s.what,
+            if args.plant.is_some() {
+                " (Planted bug: the checker was wrong on purpose.)"
+            } else {
+                ""
+            },
+            s.replay()
+        );
+        let text = crate::counterexample::file_text(
+            &s.map,
+            &format!("{claim}-check-seed{}-map{}", args.seed, first.map_index),
+            &format!("found by `{}`", command_line()),
+            claim,
+            "violation",
+            &note,
+            &meta,
+        );
+        std::fs::write(&s.path, text)
+            .map_err(|e| Failure::io(format!("{}: {e}", s.path.display())))?;
+        stored.push(s);
+    }
+    Ok(stored)
+}
+
+fn write_largest(outcome: &Outcome, dir: &Path) -> Result<(), Failure> {
+    std::fs::create_dir_all(dir).map_err(|e| Failure::io(format!("{}: {e}", dir.display())))?;
+    for t in &outcome.summary.tallies {
+        if let Some(l) = &t.largest {
+            let path = dir.join(format!("{}-largest.json", t.claim));
+            std::fs::write(&path, &l.map_json)
+                .map_err(|e| Failure::io(format!("{}: {e}", path.display())))?;
+        }
+    }
+    Ok(())
+}
+
+/// The run as the record's JSON.
+fn record_json(_args: &Args, outcome: &Outcome) -> Value {
+    let claims: Vec<Value> = outcome
+        .summary
+        .tallies
+        .iter()
+        .map(|t| {
+            let known = outcome.known_failures(t.claim);
+            json!({
+                "id": t.claim,
+                "examined": t.examined,
+                "violations": t.violations.len() as u64 - known,
+                "known_failures": known,
+                "max_ratio": t.largest.as_ref().map(|l| l.largest.ratio.to_string()),
+                "max_ratio_map": t.largest.as_ref().and_then(|l| l.map_name.clone()),
+                "counts": t.counts,
+            })
+        })
+        .collect();
+    json!({
+        "command": command_line(),
+        "commit": wai_lemmas::provenance::commit(),
+        "date": wai_lemmas::provenance::utc_date(),
+        "seconds": outcome.elapsed.as_secs(),
+        "maps": outcome.summary.maps,
+        "map_kinds": outcome.map_kinds,
+        "claims": claims,
+    })
+}
+
+fn text_summary(args: &Args, outcome: &Outcome, threads: u64, stored: &[Stored]) -> String {
+    use std::fmt::Write;
+    let mut s = String::new();
+    let kinds: Vec<String> = outcome
+        .map_kinds
+        .iter()
+        .map(|(k, n)| format!("{k} {n}"))
+        .collect();
+    let _ = writeln!(
+        s,
+        "wai check: {} maps in {} s on {threads} threads, seed {} ({})",
+        outcome.summary.maps,
+        outcome.elapsed.as_secs(),
+        args.seed,
+        kinds.join(", ")
+    );
+    if let Some(p) = &args.plant {
+        let _ = writeln!(s, "  PLANTED BUG {p}: its checker replaced the real one");
+    }
+    let _ = writeln!(
+        s,
+        "  {:<7} {:>14} {:>10} {:>8}  largest ratio",
+        "claim", "examined", "violations", "known"
+    );
+    for t in &outcome.summary.tallies {
+        let known = outcome.known_failures(t.claim);
+        let largest = t.largest.as_ref().map_or(String::new(), |l| {
+            format!(
+                "{} ≈ {:.4} on {}",
+                l.largest.ratio,
+                l.largest.ratio.to_f64(),
+                l.map_name.as_deref().unwrap_or("an unnamed map")
+            )
+        });
+        let _ = writeln!(
+            s,
+            "  {:<7} {:>14} {:>10} {:>8}  {largest}",
+            t.claim,
+            t.examined,
+            t.violations.len() as u64 - known,
+            known
+        );
+    }
+    let untested = outcome.summary.untested();
+    if !untested.is_empty() {
+        let _ = writeln!(
+            s,
+            "  examined nothing, NOT TESTED by this run: {}",
+            untested.join(", ")
+        );
+    }
+    for v in outcome.counterexamples().iter().take(5) {
+        let _ = writeln!(
+            s,
+            "  VIOLATION {} on {}: {}",
+            v.claim,
+            v.map_name.as_deref().unwrap_or("an unnamed map"),
+            v.violation.what
+        );
+    }
+    for st in stored {
+        let _ = writeln!(
+            s,
+            "  {} counterexample shrunk from n = {} to n = {} in {} steps: {}\n    replay: {}",
+            st.claim,
+            st.from_n,
+            st.map.n(),
+            st.steps,
+            st.path.display(),
+            st.replay()
+        );
+    }
+    s
+}
+
+/// `--replay FILE`: the file's claim (or its planted bug) on its map.
+fn replay(args: &Args, file: &Path) -> Result<(), Failure> {
+    let bytes = std::fs::read(file).map_err(|e| Failure::io(format!("{}: {e}", file.display())))?;
+    let value: Value = serde_json::from_slice(&bytes)
+        .map_err(|e| Failure::invalid(format!("{}: not JSON: {e}", file.display())))?;
+    let claim = value["claim"].as_str().ok_or_else(|| {
+        Failure::invalid(format!(
+            "{}: no \"claim\" field (the format of counterexamples/README.md)",
+            file.display()
+        ))
+    })?;
+    let map = crate::input::load(file, crate::input::Format::Auto)?.map;
+    let planted = args.plant.clone().or_else(|| {
+        value["meta"]["check"]["planted"]
+            .as_str()
+            .map(str::to_owned)
+    });
+    let make: Maker = match &planted {
+        Some(name) => wai_lemmas::planted::maker(name)
+            .ok_or_else(|| Failure::usage(format!("unknown planted bug {name}")))?,
+        None => match wai_lemmas::claim(claim).map(|c| c.status) {
+            Some(Status::Checker(make)) => make,
+            Some(Status::NoCheckerYet) => {
+                return Err(Failure::usage(format!("claim {claim} has no checker yet")))
+            }
+            None => {
+                return Err(Failure::invalid(format!(
+                    "{}: claim {claim} is not in the registry",
+                    file.display()
+                )))
+            }
+        },
+    };
+    let report = make().check(&map);
+    let (known, open): (Vec<_>, Vec<_>) = report
+        .violations
+        .iter()
+        .partition(|v| wai_lemmas::is_known_failure(claim, &v.data));
+    println!(
+        "wai check --replay {}: {claim}{} on {} (n = {}, r = {}): examined {}, violations {}, known failures {}",
+        file.display(),
+        planted.map_or(String::new(), |p| format!(" (planted bug {p})")),
+        map.name().unwrap_or("the map"),
+        map.n(),
+        map.r(),
+        report.examined,
+        open.len(),
+        known.len()
+    );
+    for v in open.iter().take(5) {
+        println!("  VIOLATION: {}", v.what);
+    }
+    if open.is_empty() {
+        println!("  {claim} holds on this map");
+        Ok(())
+    } else {
+        Err(Failure {
+            code: 1,
+            message: format!("{claim} is still violated on {}", file.display()),
+        })
+    }
+}

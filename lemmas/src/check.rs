@@ -1,0 +1,399 @@
+//! The counterexample search behind `wai check` (issue 11): checkers over a
+//! stream of maps, in parallel, for a number of maps or a time budget.
+//!
+//! A stream is either **generated** — map i of a list of [`MapKind`]s taken
+//! round robin, kind `kinds[i mod K]` with seed `seed + i` and, for kinds
+//! with a size, n (or the family parameter) cycling through the kind's
+//! range — or **fixed**: a list of maps (the corpus, files). [`search`] runs
+//! every checker on every map, one map per task, and merges the per-map
+//! summaries in map order, so a run of `--count N` gives the same summary
+//! whatever the number of threads. With a budget, the maps reached depend
+//! on the machine; the summary says how many.
+//!
+//! Violations that are known failures ([`crate::is_known_failure`]) stay in
+//! the summary but are not counterexamples; [`Outcome::counterexamples`]
+//! leaves them out.
+
+use std::ops::RangeInclusive;
+use std::time::{Duration, Instant};
+
+use rayon::prelude::*;
+use wai_map::Map;
+
+use crate::driver::{run, Checker, FoundViolation, Summary};
+
+/// A checker's constructor: one checker is made per map task.
+pub type Maker = fn() -> Box<dyn Checker>;
+
+/// One kind of generated map.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum MapKind {
+    /// A random kind of [`wai_gen::RANDOM_KINDS`], with about n vertices.
+    Random(&'static str),
+    /// A layout of [`wai_gen::LAYOUTS`] (its seed is its only parameter).
+    Layout(&'static str),
+    /// Every family of [`wai_gen::FAMILIES`] in turn, at parameter k.
+    Family,
+    // BYTES-KIND
+}
+
+impl MapKind {
+    /// The name used by `--maps`.
+    pub fn id(&self) -> &'static str {
+        match self {
+            MapKind::Random(id) | MapKind::Layout(id) => id,
+            MapKind::Family => "family",
+        }
+    }
+
+    /// The size range used when `--maps` gives none: n for random kinds,
+    /// the parameter k for families, ignored by layouts and bytes.
+    pub fn default_range(&self) -> RangeInclusive<usize> {
+        match self {
+            MapKind::Random(_) => 8..=30,
+            MapKind::Family => 1..=4,
+            MapKind::Layout(_) => 0..=0,
+        }
+    }
+
+    /// Every kind, in the order `all` cycles through them.
+    pub fn all() -> Vec<MapKind> {
+        let mut kinds: Vec<MapKind> = wai_gen::RANDOM_KINDS
+            .iter()
+            .map(|k| MapKind::Random(k.id))
+            .collect();
+        kinds.extend(wai_gen::LAYOUTS.iter().map(|l| MapKind::Layout(l.id)));
+        kinds.push(MapKind::Family);
+        kinds
+    }
+
+    /// The kind named `id`.
+    pub fn named(id: &str) -> Option<MapKind> {
+        MapKind::all().into_iter().find(|k| k.id() == id)
+    }
+}
+
+/// A kind with the sizes to cycle through.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct KindSpec {
+    pub kind: MapKind,
+    pub sizes: RangeInclusive<usize>,
+}
+
+/// Parses `--maps`: comma-separated `KIND[:a-b]` (or `KIND:a`), where KIND
+/// is a name of [`MapKind::all`] or `all` (every kind at its default
+/// range). Random kinds' ranges are clamped to what the kind accepts.
+pub fn parse_kinds(spec: &str) -> Result<Vec<KindSpec>, String> {
+    let mut out = Vec::new();
+    for part in spec.split(',').map(str::trim).filter(|p| !p.is_empty()) {
+        let (name, range) = match part.split_once(':') {
+            Some((name, range)) => (name, Some(range)),
+            None => (part, None),
+        };
+        let kinds = if name == "all" {
+            MapKind::all()
+        } else {
+            vec![MapKind::named(name).ok_or_else(|| {
+                let names: Vec<&str> = MapKind::all().iter().map(MapKind::id).collect();
+                format!(
+                    "unknown map kind {name:?}; the kinds are all, {}, and the fixed \
+                     streams corpus and files",
+                    names.join(", ")
+                )
+            })?]
+        };
+        for kind in kinds {
+            let sizes = match range {
+                None => kind.default_range(),
+                Some(r) => parse_range(r).map_err(|e| format!("--maps {part}: {e}"))?,
+            };
+            let sizes = match kind {
+                MapKind::Random(id) => {
+                    let info = wai_gen::RANDOM_KINDS
+                        .iter()
+                        .find(|k| k.id == id)
+                        .expect("a random kind of RANDOM_KINDS");
+                    let (a, b) = (
+                        (*sizes.start()).max(info.min_n),
+                        (*sizes.end()).min(info.max_n),
+                    );
+                    if a > b {
+                        return Err(format!(
+                            "--maps {part}: {id} takes n from {} to {}",
+                            info.min_n, info.max_n
+                        ));
+                    }
+                    a..=b
+                }
+                MapKind::Family if *sizes.start() == 0 => {
+                    return Err(format!("--maps {part}: family parameters start at 1"))
+                }
+                _ => sizes,
+            };
+            out.push(KindSpec { kind, sizes });
+        }
+    }
+    if out.is_empty() {
+        return Err("--maps names no kind".into());
+    }
+    Ok(out)
+}
+
+fn parse_range(r: &str) -> Result<RangeInclusive<usize>, String> {
+    let num = |s: &str| {
+        s.trim()
+            .parse::<usize>()
+            .map_err(|_| format!("{s:?} is not a size"))
+    };
+    let (a, b) = match r.split_once('-') {
+        Some((a, b)) => (num(a)?, num(b)?),
+        None => (num(r)?, num(r)?),
+    };
+    if a > b {
+        return Err(format!("the range {a}-{b} is empty"));
+    }
+    Ok(a..=b)
+}
+
+/// Where the maps come from.
+#[derive(Debug, Clone)]
+pub enum Stream {
+    /// Map i: kind `kinds[i mod K]`, seed `seed + i`.
+    Generated { kinds: Vec<KindSpec>, seed: u64 },
+    /// These maps, each with the name of its kind.
+    Fixed(Vec<(String, Map)>),
+}
+
+impl Stream {
+    /// How many maps the stream holds (`None`: unbounded).
+    pub fn len(&self) -> Option<u64> {
+        match self {
+            Stream::Generated { .. } => None,
+            Stream::Fixed(maps) => Some(maps.len() as u64),
+        }
+    }
+
+    /// True for a fixed stream without maps.
+    pub fn is_empty(&self) -> bool {
+        self.len() == Some(0)
+    }
+
+    /// Map `i` and its kind's name; the map's name says how to make it
+    /// again. `None` past the end of a fixed stream.
+    pub fn map(&self, i: u64) -> Option<(String, Map)> {
+        match self {
+            Stream::Fixed(maps) => maps.get(i as usize).cloned(),
+            Stream::Generated { kinds, seed } => {
+                let k = kinds.len() as u64;
+                let spec = &kinds[(i % k) as usize];
+                let round = i / k;
+                let span = (*spec.sizes.end() - *spec.sizes.start() + 1) as u64;
+                let size = *spec.sizes.start() + (round % span) as usize;
+                let seed = seed.wrapping_add(i);
+                let map = match spec.kind {
+                    MapKind::Random(id) => wai_gen::random(id, size, seed)
+                        .expect("sizes are clamped to the kind's range")
+                        .with_name(format!("{id} n={size} seed={seed}")),
+                    MapKind::Layout(id) => wai_gen::layout(id, seed)
+                        .expect("a layout of LAYOUTS")
+                        .with_name(format!("{id} seed={seed}")),
+                    MapKind::Family => {
+                        let families = wai_gen::FAMILIES;
+                        let f = &families[(round % families.len() as u64) as usize];
+                        let k =
+                            *spec.sizes.start() + ((round / families.len() as u64) % span) as usize;
+                        // Families whose parameter must be larger fall back
+                        // to their smallest map.
+                        let map = (k..k + 8)
+                            .find_map(|k| wai_gen::family(f.id, &[k as u32]).ok())
+                            .expect("every family has a map at some k in 1..=8");
+                        let name = format!("{} k={k}", f.id);
+                        map.with_name(name)
+                    }
+                };
+                Some((spec.kind.id().to_owned(), map))
+            }
+        }
+    }
+}
+
+/// How long a search runs.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Limit {
+    /// This many maps (fewer if a fixed stream ends first).
+    Count(u64),
+    /// Until this much time has passed (and the batch under way is done).
+    Budget(Duration),
+}
+
+/// What [`search`] found.
+#[derive(Debug, Clone)]
+pub struct Outcome {
+    /// Every checker's totals over the maps, map indices in stream order.
+    pub summary: Summary,
+    /// Maps per kind, in order of first appearance.
+    pub map_kinds: Vec<(String, u64)>,
+    pub elapsed: Duration,
+}
+
+impl Outcome {
+    /// The violations that are not known failures.
+    pub fn counterexamples(&self) -> Vec<&FoundViolation> {
+        self.summary
+            .violations()
+            .filter(|v| !crate::is_known_failure(v.claim, &v.violation.data))
+            .collect()
+    }
+
+    /// The violations that are known failures, by claim.
+    pub fn known_failures(&self, claim: &str) -> u64 {
+        self.summary.tally(claim).map_or(0, |t| {
+            t.violations
+                .iter()
+                .filter(|v| crate::is_known_failure(v.claim, &v.violation.data))
+                .count()
+        }) as u64
+    }
+}
+
+/// Runs `makers`' checkers over `stream` until `limit`, `batch` maps at a
+/// time in parallel (rayon's pool: set its threads before calling), calling
+/// `progress(maps done, elapsed)` after each batch. With `stop_early`, stops
+/// after the first batch with a counterexample.
+pub fn search(
+    makers: &[Maker],
+    stream: &Stream,
+    limit: Limit,
+    batch: u64,
+    stop_early: bool,
+    progress: &(dyn Fn(u64, Duration) + Sync),
+) -> Outcome {
+    let start = Instant::now();
+    let end = match (limit, stream.len()) {
+        (Limit::Count(n), Some(len)) => n.min(len),
+        (Limit::Count(n), None) => n,
+        (Limit::Budget(_), Some(len)) => len,
+        (Limit::Budget(_), None) => u64::MAX,
+    };
+    let checkers = makers.iter().map(|make| make()).collect::<Vec<_>>();
+    let refs: Vec<&dyn Checker> = checkers.iter().map(AsRef::as_ref).collect();
+    // The empty run gives the tallies, in checker order.
+    let mut summary = run(&refs, std::iter::empty::<Map>());
+    let mut map_kinds: Vec<(String, u64)> = Vec::new();
+    let mut i = 0u64;
+    while i < end {
+        if let Limit::Budget(budget) = limit {
+            if start.elapsed() >= budget {
+                break;
+            }
+        }
+        let upto = (i + batch.max(1)).min(end);
+        let results: Vec<(String, Summary)> = (i..upto)
+            .into_par_iter()
+            .map(|j| {
+                let (kind, map) = stream.map(j).expect("j is below the stream's length");
+                let checkers = makers.iter().map(|make| make()).collect::<Vec<_>>();
+                let refs: Vec<&dyn Checker> = checkers.iter().map(AsRef::as_ref).collect();
+                (kind, run(&refs, [&map]))
+            })
+            .collect();
+        for (offset, (kind, one)) in results.into_iter().enumerate() {
+            match map_kinds.iter_mut().find(|(k, _)| *k == kind) {
+                Some((_, count)) => *count += 1,
+                None => map_kinds.push((kind, 1)),
+            }
+            summary.absorb(one, i as usize + offset);
+        }
+        i = upto;
+        progress(i, start.elapsed());
+        if stop_early
+            && summary
+                .violations()
+                .any(|v| !crate::is_known_failure(v.claim, &v.violation.data))
+        {
+            break;
+        }
+    }
+    Outcome {
+        summary,
+        map_kinds,
+        elapsed: start.elapsed(),
+    }
+}
+
+/// True if `make`'s checker reports a violation on `map` that is not a known
+/// failure: the predicate [`crate::shrink::shrink`] keeps.
+pub fn still_violated(make: Maker, map: &Map) -> bool {
+    let checker = make();
+    let report = checker.check(map);
+    report
+        .violations
+        .iter()
+        .any(|v| !crate::is_known_failure(report.claim, &v.data))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn kinds_parse_with_ranges_and_clamp() {
+        let k = parse_kinds("random-orthogonal:2-12, family:2").unwrap();
+        assert_eq!(k[0].kind, MapKind::Random("random-orthogonal"));
+        assert_eq!(k[0].sizes, 4..=12);
+        assert_eq!((k[1].kind, k[1].sizes.clone()), (MapKind::Family, 2..=2));
+        assert_eq!(parse_kinds("all").unwrap().len(), MapKind::all().len());
+        for bad in ["nope", "family:0", "random-orthogonal:9-3", "bytes:x", ""] {
+            assert!(parse_kinds(bad).is_err(), "{bad}");
+        }
+    }
+
+    #[test]
+    fn a_generated_stream_is_a_function_of_the_index() {
+        let stream = Stream::Generated {
+            kinds: parse_kinds("all").unwrap(),
+            seed: 7,
+        };
+        for i in 0..2 * MapKind::all().len() as u64 {
+            let (kind, a) = stream.map(i).unwrap();
+            let (_, b) = stream.map(i).unwrap();
+            assert_eq!(a, b);
+            assert_eq!(kind, MapKind::all()[i as usize % MapKind::all().len()].id());
+        }
+    }
+
+    #[test]
+    fn a_count_gives_the_same_summary_in_any_batch_size() {
+        let stream = Stream::Generated {
+            kinds: parse_kinds("random-orthogonal:6-10,random-simple-star:5-9").unwrap(),
+            seed: 3,
+        };
+        let makers: Vec<Maker> = vec![crate::t3_3a::checker, crate::t5_17::checker];
+        let a = search(&makers, &stream, Limit::Count(12), 1, false, &|_, _| {});
+        let b = search(&makers, &stream, Limit::Count(12), 5, false, &|_, _| {});
+        assert_eq!(a.summary, b.summary);
+        assert_eq!(a.summary.maps, 12);
+        assert_eq!(
+            a.map_kinds,
+            vec![
+                ("random-orthogonal".to_owned(), 6),
+                ("random-simple-star".to_owned(), 6)
+            ]
+        );
+    }
+
+    #[test]
+    fn the_planted_bug_is_found_and_stops_early() {
+        let stream = Stream::Generated {
+            kinds: parse_kinds("random-orthogonal:6-12").unwrap(),
+            seed: 0,
+        };
+        let makers: Vec<Maker> = vec![crate::planted::shifted_labels];
+        let out = search(&makers, &stream, Limit::Count(100), 4, true, &|_, _| {});
+        assert!(!out.counterexamples().is_empty());
+        assert!(out.summary.maps <= 8, "{}", out.summary.maps);
+        let v = out.counterexamples()[0];
+        let map = wai_map::json::from_json(v.map_json.as_bytes()).unwrap().map;
+        assert!(still_violated(crate::planted::shifted_labels, &map));
+    }
+}
