@@ -7,11 +7,13 @@
 //! embeddings of each skeleton, witnesses, overlaps), `preprocess` and
 //! `localize` (the exact reference localizer), `render` (draw a map as SVG),
 //! `search-extremes` (a seeded local search for the maps that push a
-//! chapter 5 ratio highest).
+//! chapter 5 ratio highest), `claims` (the claims registry with the last
+//! recorded run).
 //!
 //! Exit codes: 0 success; 1 the map is invalid; 2 bad usage; 3 the file
 //! could not be read or written. Errors say what and where, never panic.
 
+mod claims;
 mod commands;
 mod decompose;
 mod embeddings;
@@ -161,6 +163,10 @@ enum Command {
     /// maps, ratios measured exactly; writes the best maps to
     /// counterexamples/ (or --out) and prints what the starts reach.
     SearchExtremes(extremes::Args),
+    /// Every claim of the registry with its kind, its checker and what the
+    /// last recorded run (lemmas/last-run.json) found: instances examined,
+    /// violations, known failures, the largest ratio.
+    Claims(claims::Args),
     /// Draw a map as SVG, reflex vertices marked.
     Render {
         /// Map file (JSON map format or GeoJSON); `-` reads standard input.
@@ -271,6 +277,7 @@ fn main() -> ExitCode {
             format.format,
         ),
         Command::SearchExtremes(args) => extremes::search_extremes(&args),
+        Command::Claims(args) => claims::claims(&args),
         Command::Render {
             map,
             out,
