@@ -450,5 +450,6 @@ fn embeddings_refuses_a_class_out_of_range() {
     let err = text(&out.stderr);
     assert!(err.starts_with("error: --class 999: the map has"), "{err}");
 }
+mod claims;
 mod extremes;
 mod localize;
