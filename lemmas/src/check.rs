@@ -244,16 +244,6 @@ impl Outcome {
             .filter(|v| !crate::is_known_failure(v.claim, &v.violation.data))
             .collect()
     }
-
-    /// The violations that are known failures, by claim.
-    pub fn known_failures(&self, claim: &str) -> u64 {
-        self.summary.tally(claim).map_or(0, |t| {
-            t.violations
-                .iter()
-                .filter(|v| crate::is_known_failure(v.claim, &v.violation.data))
-                .count()
-        }) as u64
-    }
 }
 
 /// Runs `makers`' checkers over `stream` until `limit`, `batch` maps at a

@@ -18,6 +18,9 @@
 //!   ratios), [`study`] (the structures built once per map), [`wedge_counts`]
 //!   (kernel and wedge edges counted per class and embedding) and [`family`]
 //!   (which maps are a thesis family, for the `tight` checkers).
+//! - [`record`]: [`record::RunRecord`], what a run found, stored in
+//!   `lemmas/last-run.json` for `wai claims` and the claims table of
+//!   `README.md`.
 //! - One module per claim, named after the claim's id in lower case with `.`
 //!   replaced by `_` ([`Claim::module_name`]): [`l3_1a`], [`l3_1b`],
 //!   [`l3_1c`], [`d3_5`], [`t3_2`], [`t3_3a`], [`t3_3b`], [`a3_6`], [`l3_5`],
@@ -89,6 +92,7 @@ pub mod o5_3;
 pub mod planted;
 pub mod provenance;
 pub mod ratio;
+pub mod record;
 pub mod sample;
 pub mod shrink;
 pub mod study;

@@ -20,6 +20,7 @@ use std::time::{Duration, Instant};
 
 use serde_json::{json, Value};
 use wai_lemmas::check::{self, Limit, Maker, Outcome, Stream};
+use wai_lemmas::record::RunRecord;
 use wai_lemmas::{Status, CLAIMS};
 use wai_map::Map;
 
@@ -294,20 +295,22 @@ pub fn check(args: &Args) -> Result<(), Failure> {
     if let Some(dir) = &args.largest {
         write_largest(&outcome, dir)?;
     }
-    let record = record_json(args, &outcome);
+    let record = record(&outcome);
     if let Some(path) = &args.record {
-        let text = serde_json::to_string_pretty(&record).expect("plain JSON values") + "\n";
-        std::fs::write(path, text).map_err(|e| Failure::io(format!("{}: {e}", path.display())))?;
+        record.write(path).map_err(Failure::io)?;
     }
     if args.json {
-        let mut all = record;
+        let mut all = record.to_json();
         all["counterexamples"] = Value::from(stored.iter().map(Stored::json).collect::<Vec<_>>());
         println!(
             "{}",
             serde_json::to_string_pretty(&all).expect("plain JSON values")
         );
     } else {
-        print!("{}", text_summary(args, &outcome, threads, &stored));
+        print!(
+            "{}",
+            text_summary(args, &outcome, &record, threads, &stored)
+        );
     }
     if outcome.counterexamples().is_empty() {
         Ok(())
@@ -472,37 +475,25 @@ fn write_largest(outcome: &Outcome, dir: &Path) -> Result<(), Failure> {
     Ok(())
 }
 
-/// The run as the record's JSON.
-fn record_json(_args: &Args, outcome: &Outcome) -> Value {
-    let claims: Vec<Value> = outcome
-        .summary
-        .tallies
-        .iter()
-        .map(|t| {
-            let known = outcome.known_failures(t.claim);
-            json!({
-                "id": t.claim,
-                "examined": t.examined,
-                "violations": t.violations.len() as u64 - known,
-                "known_failures": known,
-                "max_ratio": t.largest.as_ref().map(|l| l.largest.ratio.to_string()),
-                "max_ratio_map": t.largest.as_ref().and_then(|l| l.map_name.clone()),
-                "counts": t.counts,
-            })
-        })
-        .collect();
-    json!({
-        "command": command_line(),
-        "commit": wai_lemmas::provenance::commit(),
-        "date": wai_lemmas::provenance::utc_date(),
-        "seconds": outcome.elapsed.as_secs(),
-        "maps": outcome.summary.maps,
-        "map_kinds": outcome.map_kinds,
-        "claims": claims,
-    })
+/// The run as a record (the claims dashboard reads one).
+fn record(outcome: &Outcome) -> RunRecord {
+    RunRecord::from_summary(
+        &outcome.summary,
+        command_line(),
+        wai_lemmas::provenance::commit(),
+        wai_lemmas::provenance::utc_date(),
+        outcome.elapsed.as_secs(),
+        outcome.map_kinds.clone(),
+    )
 }
 
-fn text_summary(args: &Args, outcome: &Outcome, threads: u64, stored: &[Stored]) -> String {
+fn text_summary(
+    args: &Args,
+    outcome: &Outcome,
+    record: &RunRecord,
+    threads: u64,
+    stored: &[Stored],
+) -> String {
     use std::fmt::Write;
     let mut s = String::new();
     let kinds: Vec<String> = outcome
@@ -526,23 +517,18 @@ fn text_summary(args: &Args, outcome: &Outcome, threads: u64, stored: &[Stored])
         "  {:<7} {:>14} {:>10} {:>8}  largest ratio",
         "claim", "examined", "violations", "known"
     );
-    for t in &outcome.summary.tallies {
-        let known = outcome.known_failures(t.claim);
-        let largest = t.largest.as_ref().map_or(String::new(), |l| {
+    for c in &record.claims {
+        let largest = c.max_ratio.as_ref().map_or(String::new(), |r| {
             format!(
-                "{} ≈ {:.4} on {}",
-                l.largest.ratio,
-                l.largest.ratio.to_f64(),
-                l.map_name.as_deref().unwrap_or("an unnamed map")
+                "{r} ≈ {:.4} on {}",
+                r.to_f64(),
+                c.max_ratio_map.as_deref().unwrap_or("an unnamed map")
             )
         });
         let _ = writeln!(
             s,
             "  {:<7} {:>14} {:>10} {:>8}  {largest}",
-            t.claim,
-            t.examined,
-            t.violations.len() as u64 - known,
-            known
+            c.id, c.examined, c.violations, c.known_failures
         );
     }
     let untested = outcome.summary.untested();

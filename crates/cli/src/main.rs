@@ -8,12 +8,14 @@
 //! `localize` (the exact reference localizer), `render` (draw a map as SVG),
 //! `search-extremes` (a seeded local search for the maps that push a
 //! chapter 5 ratio highest), `check` (every claim checker over a stream of
-//! maps, shrinking what breaks a claim).
+//! maps, shrinking what breaks a claim), `claims` (the claims registry with
+//! the last recorded run).
 //!
 //! Exit codes: 0 success; 1 the map is invalid; 2 bad usage; 3 the file
 //! could not be read or written. Errors say what and where, never panic.
 
 mod check;
+mod claims;
 mod commands;
 mod counterexample;
 mod decompose;
@@ -171,6 +173,10 @@ enum Command {
     /// writes it to counterexamples/ with its replay command. Exits 1 on a
     /// counterexample.
     Check(check::Args),
+    /// Every claim of the registry with its kind, its checker and what the
+    /// last recorded run (lemmas/last-run.json) found: instances examined,
+    /// violations, known failures, the largest ratio.
+    Claims(claims::Args),
     /// Draw a map as SVG, reflex vertices marked.
     Render {
         /// Map file (JSON map format or GeoJSON); `-` reads standard input.
@@ -282,6 +288,7 @@ fn main() -> ExitCode {
         ),
         Command::SearchExtremes(args) => extremes::search_extremes(&args),
         Command::Check(args) => check::check(&args),
+        Command::Claims(args) => claims::claims(&args),
         Command::Render {
             map,
             out,

@@ -451,5 +451,6 @@ fn embeddings_refuses_a_class_out_of_range() {
     assert!(err.starts_with("error: --class 999: the map has"), "{err}");
 }
 mod check;
+mod claims;
 mod extremes;
 mod localize;
