@@ -120,7 +120,7 @@ fn proposals(ring: &[Point]) -> impl Iterator<Item = Vec<Point>> + '_ {
         .chain(flush)
         .chain(whole)
         .chain(pulls)
-        .map(|r| dedup_cyclic(r))
+        .map(dedup_cyclic)
 }
 
 /// `ring` without the vertices at `drop`.
