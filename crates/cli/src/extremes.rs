@@ -508,7 +508,7 @@ mod tests {
         };
         search_extremes(&args).unwrap();
         let first = dir.join("T5.17-extreme-ec-seed1.json");
-        let v: Value = serde_json::from_slice(&std::fs::read(&first).unwrap()).unwrap();
+        let v: serde_json::Value = serde_json::from_slice(&std::fs::read(&first).unwrap()).unwrap();
         assert_eq!(
             (v["claim"].as_str(), v["kind"].as_str()),
             (Some("T5.17"), Some("figure"))
