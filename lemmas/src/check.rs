@@ -81,8 +81,9 @@ pub struct KindSpec {
 }
 
 /// Parses `--maps`: comma-separated `KIND[:a-b]` (or `KIND:a`), where KIND
-/// is a name of [`MapKind::all`] or `all` (every kind at its default
-/// range). Random kinds' ranges are clamped to what the kind accepts.
+/// is a name of [`MapKind::all`] or a group: `all` (every kind), `random`
+/// (every random kind), `layouts` (every layout). Random kinds' ranges are
+/// clamped to what the kind accepts.
 pub fn parse_kinds(spec: &str) -> Result<Vec<KindSpec>, String> {
     let mut out = Vec::new();
     for part in spec.split(',').map(str::trim).filter(|p| !p.is_empty()) {
@@ -92,12 +93,22 @@ pub fn parse_kinds(spec: &str) -> Result<Vec<KindSpec>, String> {
         };
         let kinds = if name == "all" {
             MapKind::all()
+        } else if name == "random" {
+            let all = MapKind::all();
+            all.into_iter()
+                .filter(|k| matches!(k, MapKind::Random(_)))
+                .collect()
+        } else if name == "layouts" {
+            let all = MapKind::all();
+            all.into_iter()
+                .filter(|k| matches!(k, MapKind::Layout(_)))
+                .collect()
         } else {
             vec![MapKind::named(name).ok_or_else(|| {
                 let names: Vec<&str> = MapKind::all().iter().map(MapKind::id).collect();
                 format!(
-                    "unknown map kind {name:?}; the kinds are all, {}, and the fixed \
-                     streams corpus and files",
+                    "unknown map kind {name:?}; the kinds are {}, the groups all, random \
+                     and layouts, and the fixed stream corpus",
                     names.join(", ")
                 )
             })?]
@@ -333,6 +344,14 @@ mod tests {
         assert_eq!(k[0].sizes, 4..=12);
         assert_eq!((k[1].kind, k[1].sizes.clone()), (MapKind::Family, 2..=2));
         assert_eq!(parse_kinds("all").unwrap().len(), MapKind::all().len());
+        assert_eq!(
+            parse_kinds("random").unwrap().len(),
+            wai_gen::RANDOM_KINDS.len()
+        );
+        assert_eq!(
+            parse_kinds("layouts:3").unwrap().len(),
+            wai_gen::LAYOUTS.len()
+        );
         for bad in ["nope", "family:0", "random-orthogonal:9-3", "bytes:x", ""] {
             assert!(parse_kinds(bad).is_err(), "{bad}");
         }

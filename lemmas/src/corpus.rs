@@ -1,4 +1,4 @@
-//! The fixed corpus of maps that the stress runs share (issue 7's
+//! The fixed corpus of maps that `wai check --maps corpus` runs (issue 7's
 //! acceptance): every free polyomino of up to 8 cells, every thesis family
 //! at parameters 1 to 6, the maps of `shared/datasets` that the cells tests
 //! decompose (R2V, Westport, AGPLIB up to 60 vertices) and the maps of

@@ -28,7 +28,7 @@ use crate::Study;
 const ID: &str = "T4.2";
 
 /// Maps up to this many vertices have every verdict cross-checked. The
-/// whole corpus of `stress --corpus` is below it: there the cross-check
+/// whole corpus (`wai check --maps corpus`) is below it: there the cross-check
 /// adds about 18 % to T4.2's time (87 s against 74 s, 66,634 pairs).
 pub const CROSS_CHECK_MAX_N: usize = 1000;
 

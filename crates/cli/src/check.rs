@@ -28,16 +28,18 @@ use crate::Failure;
 
 #[derive(clap::Args, Debug)]
 pub struct Args {
-    /// Claim ids to check (e.g. T4.2 L5.13); default every claim that has a
-    /// checker.
+    /// Claim ids to check (e.g. T4.2 L5.13 or T4.2,L5.13); default every
+    /// claim that has a checker.
+    #[arg(value_delimiter = ',')]
     pub claims: Vec<String>,
     /// Only the claims of these chapters (comma-separated: 3,4,5).
     #[arg(long, value_delimiter = ',')]
     pub chapter: Vec<u8>,
-    /// The maps: comma-separated KIND[:a-b] (random kinds with n from a to
-    /// b, layouts, family with parameters a to b), `all` for every kind, or
-    /// `corpus` (polyominoes up to 8 cells, the families at 1..6, the
-    /// datasets, counterexamples/).
+    /// The maps: comma-separated KIND[:a-b] — a random kind (n from a to b,
+    /// default 8-30), a layout, `family` (every thesis family, parameter a
+    /// to b, default 1-4), or the groups `random`, `layouts` and `all` —
+    /// or `corpus` (polyominoes up to 8 cells, the families at 1..6, the
+    /// datasets, counterexamples/). Map i has seed S + i.
     #[arg(long, default_value = "all")]
     pub maps: String,
     /// Instead of --maps: these map files.
