@@ -7,21 +7,25 @@
 //! greedily applies the first simplification that keeps the map valid and
 //! the predicate true, until none does:
 //!
-//! 1. drop one vertex, then two consecutive vertices;
+//! 1. the one-step shrinks of the property tests
+//!    ([`wai_gen::shrink_map`]: drop one vertex, halve every
+//!    coordinate), then drop two consecutive vertices;
 //! 2. pull an edge flush with the line through a neighbouring vertex
 //!    (parallel to itself): a rectangular niche or bump disappears, a step
 //!    gets shorter;
-//! 3. translate the map to the origin and divide every coordinate by their
+//! 3. divide every coordinate (relative to the least corner) by their
 //!    common divisor;
 //! 4. compress the coordinates: the distinct x (and y) values, in order,
 //!    become 0, 1, 2, … (the order type of an orthogonal map survives);
 //! 5. pull one coordinate of one vertex toward 0: halve it, or subtract 1.
 //!
-//! Moves 1 and 2 lower n; 3–5 lower the coordinates. Every proposal goes
-//! through [`Map::from_ring`] (a self-intersecting or degenerate ring is
-//! skipped, never a panic; collinear vertices it removes are gone) and only
-//! then to the predicate. Deterministic: the same map and predicate give
-//! the same result.
+//! A proposal is accepted only if it lowers the measure (n, width + height,
+//! the sum of the coordinates relative to the least corner)
+//! lexicographically, so shrinking ends; the result is finally translated
+//! to the origin. Every proposal goes through [`Map::from_ring`] (a
+//! self-intersecting or degenerate ring is skipped, never a panic; collinear
+//! vertices it removes are gone) and only then to the predicate.
+//! Deterministic: the same map and predicate give the same result.
 //!
 //! # Edge cases
 //! The result is locally minimal for these moves only: no single move
@@ -63,8 +67,13 @@ pub fn shrink(map: &Map, mut holds: impl FnMut(&Map) -> bool, max_tries: usize) 
     };
     'pass: loop {
         let ring = best.vertices().to_vec();
-        for proposal in proposals(&ring) {
-            if proposal == ring {
+        let bound = measure(&ring);
+        let proposals = wai_gen::shrink_map(&best)
+            .into_iter()
+            .map(|m| m.vertices().to_vec())
+            .chain(proposals(&ring));
+        for proposal in proposals {
+            if measure(&proposal) >= bound {
                 continue;
             }
             let Ok((candidate, _)) = Map::from_ring(proposal) else {
@@ -83,15 +92,29 @@ pub fn shrink(map: &Map, mut holds: impl FnMut(&Map) -> bool, max_tries: usize) 
         }
         break;
     }
+    let at_origin = normalised(best.vertices(), false);
+    if let Ok((moved, _)) = Map::from_ring(at_origin) {
+        best = moved;
+    }
     out.map = best.with_name(format!("{name}, shrunk"));
     out
+}
+
+/// What every accepted move lowers: (n, width + height, the sum of the
+/// coordinates relative to the least corner).
+fn measure(ring: &[Point]) -> (usize, i128, i128) {
+    let min_x = ring.iter().map(|p| p.x).min().unwrap_or(0);
+    let min_y = ring.iter().map(|p| p.y).min().unwrap_or(0);
+    let max_x = ring.iter().map(|p| p.x).max().unwrap_or(0);
+    let max_y = ring.iter().map(|p| p.y).max().unwrap_or(0);
+    let sum = ring.iter().map(|p| (p.x - min_x) + (p.y - min_y)).sum();
+    (ring.len(), (max_x - min_x) + (max_y - min_y), sum)
 }
 
 /// Every proposal of one pass, in the order of the module doc: the ones
 /// that lower n first.
 fn proposals(ring: &[Point]) -> impl Iterator<Item = Vec<Point>> + '_ {
     let n = ring.len();
-    let drop_one = (0..n).map(move |i| without(ring, &[i]));
     let drop_two = (0..n).map(move |i| without(ring, &[i, (i + 1) % n]));
     let flush = (0..n).flat_map(move |i| {
         // Edge (b, c) = (i, i+1), pulled onto the line through a = i-1 or
@@ -99,7 +122,7 @@ fn proposals(ring: &[Point]) -> impl Iterator<Item = Vec<Point>> + '_ {
         let (a, d) = (ring[(i + n - 1) % n], ring[(i + 2) % n]);
         [a, d].into_iter().map(move |to| flush(ring, i, to))
     });
-    let whole = [normalised(ring), compressed(ring)].into_iter();
+    let whole = [normalised(ring, true), compressed(ring)].into_iter();
     let pulls = (0..n).flat_map(move |i| {
         let p = ring[i];
         [
@@ -115,8 +138,7 @@ fn proposals(ring: &[Point]) -> impl Iterator<Item = Vec<Point>> + '_ {
             r
         })
     });
-    drop_one
-        .chain(drop_two)
+    drop_two
         .chain(flush)
         .chain(whole)
         .chain(pulls)
@@ -152,9 +174,9 @@ fn flush(ring: &[Point], i: usize, to: Point) -> Vec<Point> {
     r
 }
 
-/// `ring` translated so its least x and y are 0, divided by the greatest
-/// common divisor of all its coordinates.
-fn normalised(ring: &[Point]) -> Vec<Point> {
+/// `ring` translated so its least x and y are 0 and, if `divide`, divided
+/// by the greatest common divisor of all its coordinates.
+fn normalised(ring: &[Point], divide: bool) -> Vec<Point> {
     let min_x = ring.iter().map(|p| p.x).min().unwrap_or(0);
     let min_y = ring.iter().map(|p| p.y).min().unwrap_or(0);
     let moved: Vec<Point> = ring
@@ -164,7 +186,7 @@ fn normalised(ring: &[Point]) -> Vec<Point> {
     let g = moved
         .iter()
         .fold(0i128, |g, p| gcd(gcd(g, p.x.abs()), p.y.abs()));
-    if g <= 1 {
+    if g <= 1 || !divide {
         return moved;
     }
     moved.iter().map(|p| Point::new(p.x / g, p.y / g)).collect()

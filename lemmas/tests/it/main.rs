@@ -1,12 +1,14 @@
 //! The integration tests of `wai-lemmas`: the claims registry against
 //! `shared/CLAIMS.md`, the stored maps of `counterexamples/`, the
 //! chapter 3 visibility checkers over generated and real maps, and the
-//! chapter 5 checkers on the layouts that reach their premises.
+//! chapter 5 checkers on the layouts that reach their premises, and bounded
+//! property tests of every checker.
 
 mod cell_claims;
 mod counterexamples;
 mod figures;
 mod interweave;
+mod properties;
 mod registry;
 mod visibility_claims;
 
