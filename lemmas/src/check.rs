@@ -34,7 +34,9 @@ pub enum MapKind {
     Layout(&'static str),
     /// Every family of [`wai_gen::FAMILIES`] in turn, at parameter k.
     Family,
-    // BYTES-KIND
+    /// [`wai_gen::bytes::map_from_seed`]: the fuzz targets' maps, shaped
+    /// from random bytes.
+    Bytes,
 }
 
 impl MapKind {
@@ -43,6 +45,7 @@ impl MapKind {
         match self {
             MapKind::Random(id) | MapKind::Layout(id) => id,
             MapKind::Family => "family",
+            MapKind::Bytes => "bytes",
         }
     }
 
@@ -52,7 +55,7 @@ impl MapKind {
         match self {
             MapKind::Random(_) => 8..=30,
             MapKind::Family => 1..=4,
-            MapKind::Layout(_) => 0..=0,
+            MapKind::Layout(_) | MapKind::Bytes => 0..=0,
         }
     }
 
@@ -64,6 +67,7 @@ impl MapKind {
             .collect();
         kinds.extend(wai_gen::LAYOUTS.iter().map(|l| MapKind::Layout(l.id)));
         kinds.push(MapKind::Family);
+        kinds.push(MapKind::Bytes);
         kinds
     }
 
@@ -221,6 +225,7 @@ impl Stream {
                         let name = format!("{} k={k}", f.id);
                         map.with_name(name)
                     }
+                    MapKind::Bytes => wai_gen::bytes::map_from_seed(seed),
                 };
                 Some((spec.kind.id().to_owned(), map))
             }

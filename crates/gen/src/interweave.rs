@@ -496,7 +496,7 @@ impl SharedLayout {
     /// The ring, counter-clockwise from the hall's south-west corner: the
     /// floor eastwards with its rooms, then the ceiling westwards with its
     /// bottles.
-    fn ring(&self) -> Vec<Point> {
+    pub(crate) fn ring(&self) -> Vec<Point> {
         let p = Point::new;
         let west = self.x(-self.view) - self.pitch;
         let east = self.x(self.rooms - 1 + self.view) + self.pitch;

@@ -15,13 +15,17 @@
 //! - [`family`]`(id, params)` with the ids of [`FAMILIES`];
 //! - [`random`]`(kind, n, seed)` with the ids of [`RANDOM_KINDS`];
 //! - [`layout`]`(id, seed)` with the ids of [`LAYOUTS`];
-//! - [`exhaustive_polyomino_maps`] for the exhaustive mode.
+//! - [`exhaustive_polyomino_maps`] for the exhaustive mode;
+//! - [`bytes::map_from_bytes`] for the fuzz targets: a small valid map
+//!   of one of several shapes from an `arbitrary::Unstructured` byte
+//!   stream, and [`bytes::map_from_seed`] for the same from a seed.
 //!
 //! # Invariant
 //! No decision reads a float: angular order, crossings and collinearity
 //! are decided by `wai_exact` predicates on integer points.
 
 mod bottles;
+pub mod bytes;
 mod families;
 mod grid;
 mod interweave;

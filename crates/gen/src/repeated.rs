@@ -126,32 +126,45 @@ impl RepeatedLayout {
 /// assert!(m.n() >= 20 && m.r() >= 4);
 /// ```
 pub fn repeated_niches(seed: u64) -> Map {
-    let l = RepeatedLayout::of_seed(seed);
-    let p = Point::new;
-    let mut ring = vec![p(0, 0)];
-    let (hb, ht) = (l.funnel_bottom / 2, l.funnel_top / 2);
-    for i in 0..l.funnels {
-        let x = l.funnel_x(i);
-        ring.extend([
-            p(x - ht, 0),
-            p(x - hb, -l.funnel_depth),
-            p(x + hb, -l.funnel_depth),
-            p(x + ht, 0),
-        ]);
+    into_map(
+        RepeatedLayout::of_seed(seed).ring(),
+        format!("repeated-niches seed={seed}"),
+    )
+}
+
+impl RepeatedLayout {
+    /// The ring of the layout (see [`repeated_niches`]); valid for the
+    /// layouts of [`RepeatedLayout::of_seed`], and for hand-made ones only
+    /// when their niches and funnels fit their pitches (`wai_gen::bytes`
+    /// validates it).
+    pub(crate) fn ring(&self) -> Vec<Point> {
+        let l = self;
+        let p = Point::new;
+        let mut ring = vec![p(0, 0)];
+        let (hb, ht) = (l.funnel_bottom / 2, l.funnel_top / 2);
+        for i in 0..l.funnels {
+            let x = l.funnel_x(i);
+            ring.extend([
+                p(x - ht, 0),
+                p(x - hb, -l.funnel_depth),
+                p(x + hb, -l.funnel_depth),
+                p(x + ht, 0),
+            ]);
+        }
+        let len = l.length();
+        ring.extend([p(len, 0), p(len, l.height)]);
+        let (hm, hk) = (l.niche_mouth / 2, l.niche_back / 2);
+        let top = l.height + l.niche_depth;
+        for j in (0..l.niches).rev() {
+            let x = l.niche_x(j);
+            ring.extend([
+                p(x + hm, l.height),
+                p(x + hk, top),
+                p(x - hk, top),
+                p(x - hm, l.height),
+            ]);
+        }
+        ring.push(p(0, l.height));
+        ring
     }
-    let len = l.length();
-    ring.extend([p(len, 0), p(len, l.height)]);
-    let (hm, hk) = (l.niche_mouth / 2, l.niche_back / 2);
-    let top = l.height + l.niche_depth;
-    for j in (0..l.niches).rev() {
-        let x = l.niche_x(j);
-        ring.extend([
-            p(x + hm, l.height),
-            p(x + hk, top),
-            p(x - hk, top),
-            p(x - hm, l.height),
-        ]);
-    }
-    ring.push(p(0, l.height));
-    into_map(ring, format!("repeated-niches seed={seed}"))
 }

@@ -1,0 +1,176 @@
+//! What the fuzz targets share: the claims check of one chapter on a map
+//! built from bytes, with the planted bug of `WAI_PLANT` swapped in, and
+//! the replay file written before a violation panics (issue 11, "cargo fuzz
+//! over every claim").
+//!
+//! The maps come from [`wai_gen::bytes::map_from_bytes`]: valid by
+//! construction and small, so every checker runs on every input; a target
+//! never returns early on an invalid map.
+//!
+//! # Invariant
+//! A target panics only where a law or a claim fails: never on input it
+//! cannot use (the byte stream always makes a map).
+
+use std::path::PathBuf;
+use std::sync::{Once, OnceLock};
+
+use arbitrary::Unstructured;
+use wai_lemmas::driver::FoundViolation;
+use wai_lemmas::{chapter_of, checkers_of_chapter, is_known_failure, planted, Checker};
+use wai_map::Map;
+
+/// One thread for rayon's global pool: libFuzzer runs one input at a time,
+/// and parallel fuzzing is `-jobs`/`-workers`, one process each.
+pub fn init() {
+    static ONCE: Once = Once::new();
+    ONCE.call_once(|| {
+        // Fails only if a pool already exists, which is then used as is.
+        let _ = rayon::ThreadPoolBuilder::new()
+            .num_threads(1)
+            .build_global();
+    });
+}
+
+/// The map of the fuzz input, or `None` if the bytes make none
+/// (`map_from_bytes` reads missing bytes as zeros, so this is rare).
+pub fn map_of(data: &[u8]) -> Option<(Map, Unstructured<'_>)> {
+    let mut u = Unstructured::new(data);
+    let map = wai_gen::bytes::map_from_bytes(&mut u).ok()?;
+    Some((map, u))
+}
+
+/// The planted bug named by the environment variable `WAI_PLANT` (one of
+/// [`planted::PLANTED`]), read once; `None` when it is unset or empty.
+///
+/// # Panics
+/// If `WAI_PLANT` names no planted bug: a misspelt name must not make a
+/// fuzz run that silently tests nothing planted.
+pub fn planted_name() -> Option<&'static str> {
+    static PLANT: OnceLock<Option<&'static str>> = OnceLock::new();
+    *PLANT.get_or_init(|| {
+        let name = std::env::var("WAI_PLANT").ok().filter(|s| !s.is_empty())?;
+        let found = planted::PLANTED.iter().find(|(n, _)| *n == name);
+        match found {
+            Some((n, _)) => Some(*n),
+            None => {
+                let known: Vec<&str> = planted::PLANTED.iter().map(|(n, _)| *n).collect();
+                panic!("WAI_PLANT={name:?} is not a planted bug (known: {known:?})")
+            }
+        }
+    })
+}
+
+/// The checkers of every claim of `chapter`, with the planted checker of
+/// `WAI_PLANT` instead of the real one of its claim when its claim is of
+/// this chapter.
+pub fn checkers(chapter: u8) -> Vec<Box<dyn Checker>> {
+    let mut all = checkers_of_chapter(chapter);
+    if let Some(name) = planted_name() {
+        let plant = planted::checker(name).expect("planted_name checked the name");
+        if chapter_of(plant.id()) == Some(chapter) {
+            all.retain(|c| c.id() != plant.id());
+            all.push(plant);
+        }
+    }
+    all
+}
+
+/// Runs every checker of `chapter` (see [`checkers`]) on the map of
+/// `data`.
+///
+/// # Panics
+/// On a violation that is not a known failure
+/// ([`wai_lemmas::is_known_failure`]), after writing its replay file
+/// ([`write_replay`]); the message names the claim, what broke, the map
+/// and the replay command.
+pub fn check_claims(chapter: u8, data: &[u8]) {
+    init();
+    let Some((map, _)) = map_of(data) else { return };
+    let checkers = checkers(chapter);
+    let refs: Vec<&dyn Checker> = checkers.iter().map(|c| c.as_ref()).collect();
+    let summary = wai_lemmas::run(&refs, [&map]);
+    let Some(v) = summary
+        .violations()
+        .find(|v| !is_known_failure(v.claim, &v.violation.data))
+    else {
+        return;
+    };
+    let target = format!("claims_ch{chapter}");
+    let replay = match write_replay(v, &target) {
+        Ok(path) => path.display().to_string(),
+        Err(e) => format!("(could not write the replay file: {e})"),
+    };
+    panic!(
+        "claim {} violated on map {:?}: {}\n\
+         replay file: {replay}\n\
+         replay with: wai check --replay {replay}\n\
+         (cargo run --release -p wai-cli -- check --replay {replay}){planted}",
+        v.claim,
+        v.map_name.as_deref().unwrap_or("unnamed"),
+        v.violation.what,
+        planted = planted_name()
+            .map(|n| format!("\nthe planted bug {n} (WAI_PLANT) was running"))
+            .unwrap_or_default(),
+    );
+}
+
+/// The directory of replay files: `fuzz/artifacts/replay/`.
+pub fn replay_dir() -> PathBuf {
+    PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("artifacts/replay")
+}
+
+/// The replay file of a violation, in the format of `counterexamples/`
+/// (its README): the map's JSON with `claim`, `kind: "violation"`, a
+/// `note` saying it is not known yet whether the thesis or our code is
+/// wrong, a `source` naming the target, and the checker's data under
+/// `meta`.
+pub fn replay_json(v: &FoundViolation, target: &str) -> String {
+    let mut value: serde_json::Value = serde_json::from_str(&v.map_json)
+        .unwrap_or_else(|e| panic!("FoundViolation::map_json is JSON: {e}"));
+    let fields = [
+        ("claim", serde_json::Value::from(v.claim)),
+        ("kind", "violation".into()),
+        (
+            "note",
+            format!(
+                "Found by the fuzz target {target}: {}. Whether the thesis or our code \
+                 is wrong is not known yet.",
+                v.violation.what
+            )
+            .into(),
+        ),
+        (
+            "source",
+            format!(
+                "cargo fuzz target {target}, map {}",
+                v.map_name.as_deref().unwrap_or("unnamed")
+            )
+            .into(),
+        ),
+        (
+            "meta",
+            serde_json::json!({ "what": v.violation.what, "data": v.violation.data }),
+        ),
+    ];
+    if let Some(object) = value.as_object_mut() {
+        for (k, x) in fields {
+            object.insert(k.to_owned(), x);
+        }
+    }
+    serde_json::to_string_pretty(&value).expect("a JSON value prints")
+}
+
+/// Writes [`replay_json`] to [`replay_dir`]`/<claim>-<hash>.json`, the hash
+/// of the file's text, and returns its path.
+pub fn write_replay(v: &FoundViolation, target: &str) -> std::io::Result<PathBuf> {
+    use std::hash::{Hash, Hasher};
+    let text = replay_json(v, target);
+    // SipHash with fixed keys: the same file gets the same name.
+    let mut h = std::collections::hash_map::DefaultHasher::new();
+    text.hash(&mut h);
+    let dir = replay_dir();
+    std::fs::create_dir_all(&dir)?;
+    let path = dir.join(format!("{}-{:016x}.json", v.claim, h.finish()));
+    std::fs::write(&path, text + "\n")?;
+    Ok(path)
+}
