@@ -206,11 +206,7 @@ struct Progress {
 impl Progress {
     fn new(total: Option<u64>, budget: Option<Duration>) -> Progress {
         let len = total.or(budget.map(|b| b.as_secs().max(1))).unwrap_or(0);
-        let bar = indicatif::ProgressBar::new(len);
-        bar.set_style(
-            indicatif::ProgressStyle::with_template("{elapsed_precise} [{bar:30}] {msg}")
-                .unwrap_or_else(|_| indicatif::ProgressStyle::default_bar()),
-        );
+        let bar = crate::progress_bar(len);
         Progress {
             bar,
             terminal: std::io::stderr().is_terminal(),

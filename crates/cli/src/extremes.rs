@@ -112,11 +112,7 @@ impl Progress {
             (None, Some(b)) => (b.as_secs().max(1), true),
             (None, None) => (0, false),
         };
-        let bar = indicatif::ProgressBar::new(len);
-        bar.set_style(
-            indicatif::ProgressStyle::with_template("{elapsed_precise} [{bar:30}] {msg}")
-                .unwrap_or_else(|_| indicatif::ProgressStyle::default_bar()),
-        );
+        let bar = crate::progress_bar(len);
         Progress {
             bar,
             terminal: std::io::stderr().is_terminal(),

@@ -195,6 +195,17 @@ enum Command {
     },
 }
 
+/// The progress bar of long commands (on standard error): elapsed time, a
+/// bar of `len` steps, a message.
+pub fn progress_bar(len: u64) -> indicatif::ProgressBar {
+    let bar = indicatif::ProgressBar::new(len);
+    bar.set_style(
+        indicatif::ProgressStyle::with_template("{elapsed_precise} [{bar:30}] {msg}")
+            .unwrap_or_else(|_| indicatif::ProgressStyle::default_bar()),
+    );
+    bar
+}
+
 /// A failure with its exit code.
 #[derive(Debug)]
 pub struct Failure {
