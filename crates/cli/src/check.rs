@@ -271,6 +271,8 @@ pub fn check(args: &Args) -> Result<(), Failure> {
         Limit::Count(n) => Some(stream.len().map_or(n, |len| n.min(len))),
         Limit::Budget(_) => stream.len(),
     };
+    // The checkout's commit when the run starts: the code that ran.
+    let commit = wai_lemmas::provenance::commit();
     let progress = Progress::new(total, budget);
     let only: Vec<Maker> = makers.iter().map(|(_, m)| *m).collect();
     let outcome = check::search(
@@ -293,7 +295,7 @@ pub fn check(args: &Args) -> Result<(), Failure> {
     if let Some(dir) = &args.largest {
         write_largest(&outcome, dir)?;
     }
-    let record = record(&outcome);
+    let record = record(&outcome, commit);
     if let Some(path) = &args.record {
         record.write(path).map_err(Failure::io)?;
     }
@@ -473,12 +475,13 @@ fn write_largest(outcome: &Outcome, dir: &Path) -> Result<(), Failure> {
     Ok(())
 }
 
-/// The run as a record (the claims dashboard reads one).
-fn record(outcome: &Outcome) -> RunRecord {
+/// The run as a record (the claims dashboard reads one); `commit` as
+/// taken when the run started.
+fn record(outcome: &Outcome, commit: String) -> RunRecord {
     RunRecord::from_summary(
         &outcome.summary,
         command_line(),
-        wai_lemmas::provenance::commit(),
+        commit,
         wai_lemmas::provenance::utc_date(),
         outcome.elapsed.as_secs(),
         outcome.map_kinds.clone(),
