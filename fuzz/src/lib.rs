@@ -149,7 +149,13 @@ pub fn replay_json(v: &FoundViolation, target: &str) -> String {
         ),
         (
             "meta",
-            serde_json::json!({ "what": v.violation.what, "data": v.violation.data }),
+            // `check.planted` is where `wai check --replay` looks for the
+            // planted bug to run instead of the claim's checker.
+            serde_json::json!({
+                "what": v.violation.what,
+                "data": v.violation.data,
+                "check": { "planted": planted_name(), "target": target },
+            }),
         ),
     ];
     if let Some(object) = value.as_object_mut() {
