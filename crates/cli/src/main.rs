@@ -9,7 +9,7 @@
 //! `search-extremes` (a seeded local search for the maps that push a
 //! chapter 5 ratio highest), `check` (every claim checker over a stream of
 //! maps, shrinking what breaks a claim), `claims` (the claims registry with
-//! the last recorded run).
+//! the last recorded run), `scan` (a simulated noisy laser scan).
 //!
 //! Exit codes: 0 success; 1 the map is invalid; 2 bad usage; 3 the file
 //! could not be read or written. Errors say what and where, never panic.
@@ -23,6 +23,7 @@ mod embeddings;
 mod extremes;
 mod input;
 mod localize;
+mod scan;
 mod search;
 mod vis;
 
@@ -173,6 +174,10 @@ enum Command {
     /// writes it to counterexamples/ with its replay command. Exits 1 on a
     /// counterexample.
     Check(check::Args),
+    /// Simulate a laser scan of a map from a pose (thesis sec. 6.1): beams
+    /// at equal angles, Gaussian range noise, a range cutoff and unknown
+    /// obstacles, seeded; writes the angles and ranges as JSON.
+    Scan(scan::Args),
     /// Every claim of the registry with its kind, its checker and what the
     /// last recorded run (lemmas/last-run.json) found: instances examined,
     /// violations, known failures, the largest ratio.
@@ -299,6 +304,7 @@ fn main() -> ExitCode {
         ),
         Command::SearchExtremes(args) => extremes::search_extremes(&args),
         Command::Check(args) => check::check(&args),
+        Command::Scan(args) => scan::scan(&args),
         Command::Claims(args) => claims::claims(&args),
         Command::Render {
             map,

@@ -454,3 +454,4 @@ mod check;
 mod claims;
 mod extremes;
 mod localize;
+mod scan;

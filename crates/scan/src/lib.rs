@@ -1,0 +1,268 @@
+//! The realistic scenario of chapter 6 (sec. 6.1): a range sensor gives a
+//! finite, noisy scan, not a visibility polygon.
+//!
+//! [`simulate`] casts `beams` rays at equal angles over a field of view
+//! from a [`Pose`] in a map (the map's walls plus unknown [`Obstacle`]s,
+//! small boxes the map does not know), adds seeded Gaussian noise to each
+//! range and drops the returns beyond a range cutoff. The scan is the
+//! robot's view: angles relative to its heading, ranges in the map's input
+//! units (metres for the datasets).
+//!
+//! # Number model
+//! This crate is where floating point is allowed to decide (DESIGN.md,
+//! issue 12): sensor data is approximate by nature. The map stays exact;
+//! its vertices are read as `f64` (vertex / scale) for ray casting. Only
+//! one decision is exact: whether the pose lies inside the map, decided on
+//! the pose's exact binary value ([`Pose::check_inside`]), so a pose on a
+//! wall or outside is refused the same way everywhere.
+//!
+//! # Edge cases
+//! - A beam that grazes a vertex hits the nearer of the two edges there
+//!   (whichever gives the smaller distance; both give the same one).
+//! - A beam along a wall (collinear with an edge) ignores that edge and
+//!   hits the next one: a sensor does not see a wall edge-on.
+//! - Noise never makes a range negative: a noisy range is clamped at 0.
+#![allow(
+    clippy::float_arithmetic,
+    reason = "sensor data is approximate; issue 12 allows floats here (STYLE.md 1)"
+)]
+
+mod obstacles;
+
+pub use obstacles::{random_obstacles, Obstacle};
+
+use rand::{Rng, SeedableRng};
+use rand_chacha::ChaCha8Rng;
+use rug::{Integer, Rational};
+use serde_json::{json, Value};
+use wai_exact::{locate_rat, Containment, RatPoint};
+use wai_map::Map;
+
+/// Where the robot is and where it looks: a position in the map's input
+/// units and a heading in radians, counter-clockwise from the x axis.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Pose {
+    pub x: f64,
+    pub y: f64,
+    pub heading: f64,
+}
+
+impl Pose {
+    /// Refuses a pose that is not strictly inside `map` (or not finite),
+    /// deciding on the exact value of the two `f64`s.
+    pub fn check_inside(&self, map: &Map) -> Result<(), ScanError> {
+        if !(self.x.is_finite() && self.y.is_finite() && self.heading.is_finite()) {
+            return Err(ScanError::NotFinite(*self));
+        }
+        let exact = |v: f64| Rational::from_f64(v).expect("finite") * map.scale();
+        let (x, y) = (exact(self.x), exact(self.y));
+        let (xn, xd) = x.into_numer_denom();
+        let (yn, yd) = y.into_numer_denom();
+        let p = RatPoint::new(
+            Integer::from(&xn * &yd),
+            Integer::from(&yn * &xd),
+            Integer::from(&xd * &yd),
+        )
+        .expect("denominators are positive");
+        match locate_rat(map.vertices(), &p) {
+            Containment::Inside => Ok(()),
+            Containment::OnBoundary => Err(ScanError::OnBoundary(*self)),
+            Containment::Outside => Err(ScanError::Outside(*self)),
+        }
+    }
+}
+
+/// Why a scan could not be simulated.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum ScanError {
+    #[error("the pose ({}, {}) lies outside the map", .0.x, .0.y)]
+    Outside(Pose),
+    #[error("the pose ({}, {}) lies on the map's boundary", .0.x, .0.y)]
+    OnBoundary(Pose),
+    #[error("the pose {0:?} is not finite")]
+    NotFinite(Pose),
+    #[error("the pose ({}, {}) lies inside obstacle {}", .0.x, .0.y, .1)]
+    InObstacle(Pose, usize),
+    #[error("bad sensor setting: {0}")]
+    Config(String),
+}
+
+/// The sensor: how many beams over which field of view, the noise and the
+/// range limit.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Sensor {
+    /// Beams, at equal angles (the thesis's scanners: 360 or 720).
+    pub beams: usize,
+    /// The field of view in radians, centred on the heading: 2π for a full
+    /// circle, π for a 180° scanner.
+    pub fov: f64,
+    /// The standard deviation of the Gaussian range noise (input units).
+    pub sigma: f64,
+    /// Returns beyond this range are lost (`None` in the scan).
+    pub max_range: Option<f64>,
+}
+
+impl Default for Sensor {
+    /// 720 beams over the full circle, no noise, no range limit.
+    fn default() -> Self {
+        Sensor {
+            beams: 720,
+            fov: std::f64::consts::TAU,
+            sigma: 0.0,
+            max_range: None,
+        }
+    }
+}
+
+impl Sensor {
+    fn check(&self) -> Result<(), ScanError> {
+        let bad = |what: String| Err(ScanError::Config(what));
+        if self.beams == 0 {
+            return bad("at least one beam".into());
+        }
+        if !(self.fov > 0.0 && self.fov <= std::f64::consts::TAU) {
+            return bad(format!("the field of view {} is not in (0, 2π]", self.fov));
+        }
+        if !(self.sigma >= 0.0 && self.sigma.is_finite()) {
+            return bad(format!("the noise σ {} is not ≥ 0", self.sigma));
+        }
+        if let Some(r) = self.max_range {
+            if r.is_nan() || r <= 0.0 {
+                return bad(format!("the range limit {r} is not > 0"));
+            }
+        }
+        Ok(())
+    }
+
+    /// The angle of beam `i` relative to the heading: the beams split the
+    /// field of view into equal steps, the first at −fov/2 (a full circle
+    /// starts at −π and does not repeat its end).
+    pub fn angle(&self, i: usize) -> f64 {
+        let full = (self.fov - std::f64::consts::TAU).abs() < 1e-12;
+        let steps = if full || self.beams == 1 {
+            self.beams
+        } else {
+            self.beams - 1
+        };
+        -self.fov / 2.0 + self.fov * i as f64 / steps.max(1) as f64
+    }
+}
+
+/// A simulated scan: per beam its angle relative to the heading and the
+/// measured range, `None` where no return came back (beyond the range
+/// limit).
+#[derive(Debug, Clone, PartialEq)]
+pub struct Scan {
+    pub angles: Vec<f64>,
+    pub ranges: Vec<Option<f64>>,
+}
+
+impl Scan {
+    /// The scan as JSON: `{"angles": [...], "ranges": [... | null]}`.
+    pub fn to_json(&self) -> Value {
+        json!({ "angles": self.angles, "ranges": self.ranges })
+    }
+
+    /// The scan points in the robot's frame (x ahead), one per return.
+    pub fn points(&self) -> Vec<(f64, f64)> {
+        self.angles
+            .iter()
+            .zip(&self.ranges)
+            .filter_map(|(a, r)| r.map(|r| (r * a.cos(), r * a.sin())))
+            .collect()
+    }
+}
+
+/// The walls of `map` as `f64` segments in input units.
+fn walls(map: &Map) -> Vec<[(f64, f64); 2]> {
+    let scale = map.scale().to_f64();
+    let v = map.vertices();
+    (0..v.len())
+        .map(|i| {
+            let (a, b) = (v[i], v[(i + 1) % v.len()]);
+            [
+                (a.x as f64 / scale, a.y as f64 / scale),
+                (b.x as f64 / scale, b.y as f64 / scale),
+            ]
+        })
+        .collect()
+}
+
+/// The distance along the ray from `o` in direction `d` (unit) to segment
+/// `s`, if the ray crosses it ahead of `o`. Collinear segments are ignored.
+fn hit(o: (f64, f64), d: (f64, f64), s: &[(f64, f64); 2]) -> Option<f64> {
+    let e = (s[1].0 - s[0].0, s[1].1 - s[0].1);
+    let denom = d.0 * e.1 - d.1 * e.0;
+    if denom.abs() <= 1e-15 * (e.0.abs() + e.1.abs()) {
+        return None;
+    }
+    let w = (s[0].0 - o.0, s[0].1 - o.1);
+    let t = (w.0 * e.1 - w.1 * e.0) / denom;
+    let u = (w.0 * d.1 - w.1 * d.0) / denom;
+    (t > 0.0 && (-1e-12..=1.0 + 1e-12).contains(&u)).then_some(t)
+}
+
+/// The true range from `pose` along the beam at `angle` (relative to the
+/// heading) to the nearest wall or obstacle side.
+pub fn true_range(map: &Map, obstacles: &[Obstacle], pose: &Pose, angle: f64) -> f64 {
+    cast(&segments(map, obstacles), pose, angle)
+}
+
+fn segments(map: &Map, obstacles: &[Obstacle]) -> Vec<[(f64, f64); 2]> {
+    let mut all = walls(map);
+    all.extend(obstacles.iter().flat_map(Obstacle::sides));
+    all
+}
+
+fn cast(segments: &[[(f64, f64); 2]], pose: &Pose, angle: f64) -> f64 {
+    let a = pose.heading + angle;
+    let d = (a.cos(), a.sin());
+    segments
+        .iter()
+        .filter_map(|s| hit((pose.x, pose.y), d, s))
+        .fold(f64::INFINITY, f64::min)
+}
+
+/// A scan of `map` (with the unknown `obstacles`) from `pose` by `sensor`,
+/// the noise drawn from a ChaCha8 generator seeded with `seed`.
+///
+/// Refuses a pose that is not strictly inside the map, or inside an
+/// obstacle, and a sensor setting out of range. A closed map always
+/// returns a hit, so a range is `None` only beyond `max_range`.
+pub fn simulate(
+    map: &Map,
+    obstacles: &[Obstacle],
+    pose: &Pose,
+    sensor: &Sensor,
+    seed: u64,
+) -> Result<Scan, ScanError> {
+    sensor.check()?;
+    pose.check_inside(map)?;
+    if let Some(k) = obstacles.iter().position(|o| o.contains(pose.x, pose.y)) {
+        return Err(ScanError::InObstacle(*pose, k));
+    }
+    let segments = segments(map, obstacles);
+    let mut rng = ChaCha8Rng::seed_from_u64(seed);
+    let angles: Vec<f64> = (0..sensor.beams).map(|i| sensor.angle(i)).collect();
+    let ranges = angles
+        .iter()
+        .map(|&a| {
+            let truth = cast(&segments, pose, a);
+            // The noise is drawn for every beam, kept or not, so the same
+            // seed gives the same noise whatever the range limit.
+            let noisy = (truth + sensor.sigma * gaussian(&mut rng)).max(0.0);
+            match sensor.max_range {
+                Some(limit) if truth > limit => None,
+                _ => Some(noisy),
+            }
+        })
+        .collect();
+    Ok(Scan { angles, ranges })
+}
+
+/// A standard normal sample (Box–Muller).
+fn gaussian<R: Rng + ?Sized>(rng: &mut R) -> f64 {
+    let u1: f64 = rng.random::<f64>().max(f64::MIN_POSITIVE);
+    let u2: f64 = rng.random();
+    (-2.0 * u1.ln()).sqrt() * (std::f64::consts::TAU * u2).cos()
+}
