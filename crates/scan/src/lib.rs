@@ -174,7 +174,7 @@ impl Scan {
 }
 
 /// The walls of `map` as `f64` segments in input units.
-fn walls(map: &Map) -> Vec<[(f64, f64); 2]> {
+pub(crate) fn walls(map: &Map) -> Vec<[(f64, f64); 2]> {
     let scale = map.scale().to_f64();
     let v = map.vertices();
     (0..v.len())

@@ -52,9 +52,7 @@ pub fn random_obstacles(
         .iter()
         .map(|p| (p.x as f64 / scale, p.y as f64 / scale))
         .collect();
-    let walls: Vec<[(f64, f64); 2]> = (0..vertices.len())
-        .map(|i| [vertices[i], vertices[(i + 1) % vertices.len()]])
-        .collect();
+    let walls = crate::walls(map);
     let mut out = Vec::new();
     for _ in 0..count {
         for _ in 0..1000 {
