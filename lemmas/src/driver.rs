@@ -184,6 +184,27 @@ pub struct ClaimTally {
     pub largest: Option<FoundLargest>,
 }
 
+impl ClaimTally {
+    /// The tally of `claim` before any map.
+    fn new(claim: &'static str) -> Self {
+        ClaimTally {
+            claim,
+            examined: 0,
+            violations: Vec::new(),
+            counts: BTreeMap::new(),
+            largest: None,
+        }
+    }
+
+    /// True if `ratio` is larger than the tally's largest so far (the only
+    /// rule by which a run's largest ratio is replaced).
+    fn beaten_by(&self, ratio: &rug::Rational) -> bool {
+        self.largest
+            .as_ref()
+            .is_none_or(|l| *ratio > l.largest.ratio)
+    }
+}
+
 /// The largest ratio of a claim over a run, with its map.
 #[derive(Debug, Clone, PartialEq)]
 pub struct FoundLargest {
@@ -245,13 +266,7 @@ impl Summary {
             let mine = match self.tallies.iter().position(|m| m.claim == t.claim) {
                 Some(k) => &mut self.tallies[k],
                 None => {
-                    self.tallies.push(ClaimTally {
-                        claim: t.claim,
-                        examined: 0,
-                        violations: Vec::new(),
-                        counts: BTreeMap::new(),
-                        largest: None,
-                    });
+                    self.tallies.push(ClaimTally::new(t.claim));
                     self.tallies.last_mut().expect("just pushed")
                 }
             };
@@ -265,11 +280,7 @@ impl Summary {
                     v
                 }));
             if let Some(mut l) = t.largest {
-                if mine
-                    .largest
-                    .as_ref()
-                    .is_none_or(|m| l.largest.ratio > m.largest.ratio)
-                {
+                if mine.beaten_by(&l.largest.ratio) {
                     l.map_index += first;
                     mine.largest = Some(l);
                 }
@@ -347,13 +358,7 @@ pub fn run<M: Borrow<Map>>(
             "checker id {id:?} is not a claim of CLAIMS"
         );
         if !tallies.iter().any(|t| t.claim == id) {
-            tallies.push(ClaimTally {
-                claim: id,
-                examined: 0,
-                violations: Vec::new(),
-                counts: BTreeMap::new(),
-                largest: None,
-            });
+            tallies.push(ClaimTally::new(id));
         }
     }
     let mut count = 0;
@@ -384,11 +389,7 @@ pub fn run<M: Borrow<Map>>(
                 *tally.counts.entry(name).or_default() += by;
             }
             if let Some(l) = report.largest {
-                if tally
-                    .largest
-                    .as_ref()
-                    .is_none_or(|t| l.ratio > t.largest.ratio)
-                {
+                if tally.beaten_by(&l.ratio) {
                     tally.largest = Some(FoundLargest {
                         largest: l,
                         map_index,
