@@ -124,6 +124,14 @@ impl Report {
         }
     }
 
+    /// The violations that are not known failures
+    /// ([`crate::is_known_failure`]): the counterexamples among them.
+    pub fn counterexamples(&self) -> impl Iterator<Item = &Violation> {
+        self.violations
+            .iter()
+            .filter(|v| !crate::is_known_failure(self.claim, &v.data))
+    }
+
     /// Adds another report of the same claim to this one.
     pub fn absorb(&mut self, other: Report) {
         debug_assert_eq!(self.claim, other.claim, "reports of one claim");
@@ -167,6 +175,14 @@ pub struct FoundViolation {
     pub map_json: String,
     /// What the checker reported.
     pub violation: Violation,
+}
+
+impl FoundViolation {
+    /// True if this is a known failure ([`crate::is_known_failure`]),
+    /// counted apart rather than a counterexample.
+    pub fn is_known_failure(&self) -> bool {
+        crate::is_known_failure(self.claim, &self.violation.data)
+    }
 }
 
 /// The totals of one claim over a run.

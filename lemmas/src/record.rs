@@ -120,11 +120,7 @@ impl RunRecord {
             .tallies
             .iter()
             .map(|t| {
-                let known = t
-                    .violations
-                    .iter()
-                    .filter(|v| crate::is_known_failure(v.claim, &v.violation.data))
-                    .count() as u64;
+                let known = t.violations.iter().filter(|v| v.is_known_failure()).count() as u64;
                 ClaimRecord {
                     id: t.claim.to_owned(),
                     examined: t.examined,
