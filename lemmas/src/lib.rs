@@ -222,14 +222,19 @@ pub fn chapter_of(id: &str) -> Option<u8> {
 /// The checkers of every claim of chapter `chapter` (3, 4 or 5) that has
 /// one, in catalogue order; empty for a chapter without claims.
 pub fn checkers_of_chapter(chapter: u8) -> Vec<Box<dyn Checker>> {
-    CLAIMS
-        .iter()
-        .filter(|c| chapter_of(c.id) == Some(chapter))
-        .filter_map(|c| match c.status {
-            Status::Checker(make) => Some(make()),
-            Status::NoCheckerYet => None,
-        })
+    makers()
+        .filter(|(id, _)| chapter_of(id) == Some(chapter))
+        .map(|(_, make)| make())
         .collect()
+}
+
+/// Every claim that has a checker, with the checker's constructor, in
+/// catalogue order.
+pub fn makers() -> impl Iterator<Item = (&'static str, check::Maker)> {
+    CLAIMS.iter().filter_map(|c| match c.status {
+        Status::Checker(make) => Some((c.id, make)),
+        Status::NoCheckerYet => None,
+    })
 }
 
 /// True if a violation of `claim` with replay data `data` is one of the

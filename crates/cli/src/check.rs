@@ -21,7 +21,7 @@ use std::time::{Duration, Instant};
 use serde_json::{json, Value};
 use wai_lemmas::check::{self, Limit, Maker, Outcome, Stream};
 use wai_lemmas::record::RunRecord;
-use wai_lemmas::{Status, CLAIMS};
+use wai_lemmas::Status;
 use wai_map::Map;
 
 use crate::Failure;
@@ -125,16 +125,11 @@ fn makers(args: &Args) -> Result<Vec<(&'static str, Maker)>, Failure> {
             Some((make().id(), make))
         }
     };
-    let chosen: Vec<(&'static str, Maker)> = CLAIMS
-        .iter()
-        .filter(|c| args.claims.is_empty() || args.claims.iter().any(|i| i == c.id))
-        .filter(|c| {
+    let chosen: Vec<(&'static str, Maker)> = wai_lemmas::makers()
+        .filter(|(id, _)| args.claims.is_empty() || args.claims.iter().any(|i| i == id))
+        .filter(|(id, _)| {
             args.chapter.is_empty()
-                || wai_lemmas::chapter_of(c.id).is_some_and(|ch| args.chapter.contains(&ch))
-        })
-        .filter_map(|c| match c.status {
-            Status::Checker(make) => Some((c.id, make)),
-            Status::NoCheckerYet => None,
+                || wai_lemmas::chapter_of(id).is_some_and(|ch| args.chapter.contains(&ch))
         })
         .map(|(id, make)| match planted {
             Some((pid, pmake)) if pid == id => (id, pmake),

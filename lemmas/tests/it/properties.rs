@@ -16,17 +16,11 @@
 //! with.
 
 use proptest::prelude::*;
-use wai_lemmas::{Checker, Status, Study, CLAIMS};
+use wai_lemmas::{Checker, Study};
 use wai_map::Map;
 
 fn checkers() -> Vec<Box<dyn Checker>> {
-    CLAIMS
-        .iter()
-        .filter_map(|c| match c.status {
-            Status::Checker(make) => Some(make()),
-            Status::NoCheckerYet => None,
-        })
-        .collect()
+    wai_lemmas::makers().map(|(_, make)| make()).collect()
 }
 
 /// Every checker's laws on one map; the first broken one as an error.
