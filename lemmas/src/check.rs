@@ -217,13 +217,12 @@ impl Stream {
                         let f = &families[(round % families.len() as u64) as usize];
                         let k =
                             *spec.sizes.start() + ((round / families.len() as u64) % span) as usize;
-                        // Families whose parameter must be larger fall back
-                        // to their smallest map.
-                        let map = (k..k + 8)
-                            .find_map(|k| wai_gen::family(f.id, &[k as u32]).ok())
-                            .expect("every family has a map at some k in 1..=8");
-                        let name = format!("{} k={k}", f.id);
-                        map.with_name(name)
+                        // Families whose parameter must be larger take the
+                        // next parameter they accept; the name says which.
+                        let (k, map) = (k..k + 8)
+                            .find_map(|k| wai_gen::family(f.id, &[k as u32]).ok().map(|m| (k, m)))
+                            .expect("every family has a map within 8 parameters of k");
+                        map.with_name(format!("{} k={k}", f.id))
                     }
                     MapKind::Bytes => wai_gen::bytes::map_from_seed(seed),
                 };
