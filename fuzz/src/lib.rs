@@ -117,50 +117,35 @@ pub fn replay_dir() -> PathBuf {
 }
 
 /// The replay file of a violation, in the format of `counterexamples/`
-/// (its README): the map's JSON with `claim`, `kind: "violation"`, a
-/// `note` saying it is not known yet whether the thesis or our code is
-/// wrong, a `source` naming the target, and the checker's data under
-/// `meta`.
+/// (its README, written by [`wai_lemmas::counterexample::file_text`]): the
+/// map with `claim`, `kind: "violation"`, a `note` saying it is not known
+/// yet whether the thesis or our code is wrong, a `source` naming the
+/// target, and the checker's data under `meta`.
 pub fn replay_json(v: &FoundViolation, target: &str) -> String {
-    let mut value: serde_json::Value = serde_json::from_str(&v.map_json)
-        .unwrap_or_else(|e| panic!("FoundViolation::map_json is JSON: {e}"));
-    let fields = [
-        ("claim", serde_json::Value::from(v.claim)),
-        ("kind", "violation".into()),
-        (
-            "note",
-            format!(
-                "Found by the fuzz target {target}: {}. Whether the thesis or our code \
-                 is wrong is not known yet.",
-                v.violation.what
-            )
-            .into(),
+    let map = wai_map::json::from_json(v.map_json.as_bytes())
+        .unwrap_or_else(|e| panic!("FoundViolation::map_json reads back: {e}"))
+        .map;
+    let map_name = v.map_name.as_deref().unwrap_or("unnamed");
+    // `check.planted` is where `wai check --replay` looks for the planted
+    // bug to run instead of the claim's checker.
+    let meta = serde_json::json!({
+        "what": v.violation.what,
+        "data": v.violation.data,
+        "check": { "planted": planted_name(), "target": target },
+    });
+    wai_lemmas::counterexample::file_text(
+        &map,
+        map_name,
+        &format!("cargo fuzz target {target}, map {map_name}"),
+        v.claim,
+        "violation",
+        &format!(
+            "Found by the fuzz target {target}: {}. Whether the thesis or our code \
+             is wrong is not known yet.",
+            v.violation.what
         ),
-        (
-            "source",
-            format!(
-                "cargo fuzz target {target}, map {}",
-                v.map_name.as_deref().unwrap_or("unnamed")
-            )
-            .into(),
-        ),
-        (
-            "meta",
-            // `check.planted` is where `wai check --replay` looks for the
-            // planted bug to run instead of the claim's checker.
-            serde_json::json!({
-                "what": v.violation.what,
-                "data": v.violation.data,
-                "check": { "planted": planted_name(), "target": target },
-            }),
-        ),
-    ];
-    if let Some(object) = value.as_object_mut() {
-        for (k, x) in fields {
-            object.insert(k.to_owned(), x);
-        }
-    }
-    serde_json::to_string_pretty(&value).expect("a JSON value prints")
+        &meta,
+    )
 }
 
 /// Writes [`replay_json`] to [`replay_dir`]`/<claim>-<hash>.json`, the hash
@@ -174,6 +159,6 @@ pub fn write_replay(v: &FoundViolation, target: &str) -> std::io::Result<PathBuf
     let dir = replay_dir();
     std::fs::create_dir_all(&dir)?;
     let path = dir.join(format!("{}-{:016x}.json", v.claim, h.finish()));
-    std::fs::write(&path, text + "\n")?;
+    std::fs::write(&path, text)?;
     Ok(path)
 }

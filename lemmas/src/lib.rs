@@ -59,6 +59,7 @@ pub mod c4_16;
 pub mod c4_20;
 pub mod check;
 pub mod corpus;
+pub mod counterexample;
 pub mod d3_5;
 pub mod driver;
 pub mod edge_pairs;

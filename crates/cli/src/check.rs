@@ -440,7 +440,7 @@ fn store_counterexamples(
             },
             s.replay()
         );
-        let text = crate::counterexample::file_text(
+        let text = wai_lemmas::counterexample::file_text(
             &s.map,
             &format!("{claim}-check-seed{}-map{}", args.seed, first.map_index),
             &format!("found by `{}`", command_line()),

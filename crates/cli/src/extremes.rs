@@ -361,7 +361,7 @@ fn file_text(
             "command": cmd,
         }
     });
-    crate::counterexample::file_text(
+    wai_lemmas::counterexample::file_text(
         map,
         &name,
         &format!("found by `{cmd}`"),

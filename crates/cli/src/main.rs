@@ -17,7 +17,6 @@
 mod check;
 mod claims;
 mod commands;
-mod counterexample;
 mod decompose;
 mod embeddings;
 mod extremes;

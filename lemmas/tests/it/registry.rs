@@ -229,6 +229,7 @@ const NOT_CLAIMS: &[&str] = &[
     "planted",
     "shrink",
     "check",
+    "counterexample",
     "provenance",
     "record",
 ];

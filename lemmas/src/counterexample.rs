@@ -1,6 +1,6 @@
 //! The file format of `counterexamples/` (see its README.md): the JSON map
 //! format plus `claim`, `kind`, `note` and `meta`, written by `wai
-//! search-extremes` and `wai check`.
+//! search-extremes`, `wai check` and the fuzz targets' replay files.
 
 use rug::Rational;
 use serde_json::Value;
@@ -42,4 +42,33 @@ pub fn file_text(
         field(note),
         outer.join(",\n"),
     )
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_file_reads_back_as_the_map_with_its_fields() {
+        let map = wai_gen::family("corridor-niches", &[1]).expect("family");
+        let meta = serde_json::json!({ "check": { "planted": null } });
+        let text = file_text(
+            &map,
+            "m",
+            "by hand",
+            "T4.2",
+            "violation",
+            "not known yet",
+            &meta,
+        );
+        assert!(text.ends_with("}\n") && !text.ends_with("\n\n"));
+        let back = wai_map::json::from_json(text.as_bytes()).expect("a map");
+        assert_eq!(back.map.vertices(), map.vertices());
+        let v: Value = serde_json::from_str(&text).expect("JSON");
+        assert_eq!(
+            (v["claim"].as_str(), v["kind"].as_str()),
+            (Some("T4.2"), Some("violation"))
+        );
+        assert_eq!(v["meta"], meta);
+    }
 }
