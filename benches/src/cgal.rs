@@ -201,12 +201,7 @@ fn parse_vis(reply: &str) -> Result<Vec<RatPoint>, String> {
 
 /// The homogeneous point `(x, y)` over the common denominator.
 pub fn rat_point(x: Rational, y: Rational) -> RatPoint {
-    let (xn, xd) = x.into_numer_denom();
-    let (yn, yd) = y.into_numer_denom();
-    let w = Integer::from(xd.lcm_ref(&yd));
-    let hx = xn * Integer::from(w.div_exact_ref(&xd));
-    let hy = yn * Integer::from(w.div_exact_ref(&yd));
-    RatPoint::new(hx, hy, w).expect("denominators are positive")
+    RatPoint::from_rationals(x, y)
 }
 
 /// `poly` without repeated consecutive vertices and without vertices in the

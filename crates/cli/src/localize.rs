@@ -102,12 +102,8 @@ fn read_polygon(path: &Path, map: &Map) -> Result<RobotView, Failure> {
             })?;
         }
         let [x, y] = c;
-        let (xn, xd) = x.into_numer_denom();
-        let (yn, yd) = y.into_numer_denom();
         let s = map.scale();
-        pts.push(
-            RatPoint::new(xn * s * &yd, yn * s * &xd, xd * yd).expect("positive denominators"),
-        );
+        pts.push(RatPoint::from_rationals(x * s, y * s));
     }
     let view = RobotView::new(pts)
         .map_err(|e| Failure::invalid(format!("{shown}: not a visibility polygon: {e}")))?;

@@ -24,11 +24,7 @@ pub fn parse_viewpoint(text: &str, map: &Map) -> Result<RatPoint, Failure> {
     };
     let (x, y) = (coord(xs, "x")?, coord(ys, "y")?);
     let scale = map.scale();
-    let (xn, xd) = x.into_numer_denom();
-    let (yn, yd) = y.into_numer_denom();
-    let hx = xn * scale * &yd;
-    let hy = yn * scale * &xd;
-    Ok(RatPoint::new(hx, hy, xd * yd).expect("denominators are positive"))
+    Ok(RatPoint::from_rationals(x * scale, y * scale))
 }
 
 /// A point in the map's input units, as text.

@@ -145,6 +145,16 @@ impl RatPoint {
         }
     }
 
+    /// The point `(x, y)`, over the least common denominator.
+    pub fn from_rationals(x: rug::Rational, y: rug::Rational) -> Self {
+        let (xn, xd) = x.into_numer_denom();
+        let (yn, yd) = y.into_numer_denom();
+        let w = Integer::from(xd.lcm_ref(&yd));
+        let hx = xn * Integer::from(w.div_exact_ref(&xd));
+        let hy = yn * Integer::from(w.div_exact_ref(&yd));
+        RatPoint::new(hx, hy, w).expect("denominators are positive")
+    }
+
     pub fn from_point(p: Point) -> Self {
         RatPoint {
             x: Integer::from(p.x),

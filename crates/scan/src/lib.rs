@@ -33,7 +33,7 @@ pub use obstacles::{random_obstacles, Obstacle};
 
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
-use rug::{Integer, Rational};
+use rug::Rational;
 use serde_json::{json, Value};
 use wai_exact::{locate_rat, Containment, RatPoint};
 use wai_map::Map;
@@ -55,15 +55,7 @@ impl Pose {
             return Err(ScanError::NotFinite(*self));
         }
         let exact = |v: f64| Rational::from_f64(v).expect("finite") * map.scale();
-        let (x, y) = (exact(self.x), exact(self.y));
-        let (xn, xd) = x.into_numer_denom();
-        let (yn, yd) = y.into_numer_denom();
-        let p = RatPoint::new(
-            Integer::from(&xn * &yd),
-            Integer::from(&yn * &xd),
-            Integer::from(&xd * &yd),
-        )
-        .expect("denominators are positive");
+        let p = RatPoint::from_rationals(exact(self.x), exact(self.y));
         match locate_rat(map.vertices(), &p) {
             Containment::Inside => Ok(()),
             Containment::OnBoundary => Err(ScanError::OnBoundary(*self)),

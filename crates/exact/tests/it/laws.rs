@@ -262,3 +262,20 @@ proptest! {
         prop_assert_eq!(Rational::from(&my - &py), qy - my);
     }
 }
+
+/// `RatPoint::from_rationals` keeps both coordinates exactly, over their
+/// least common denominator.
+#[test]
+fn rat_point_from_rationals_is_exact() {
+    use rug::{Integer, Rational};
+    let p = wai_exact::RatPoint::from_rationals(Rational::from((3, 4)), Rational::from((-5, 6)));
+    assert_eq!(
+        (p.hx(), p.hy(), p.hw()),
+        (&Integer::from(9), &Integer::from(-10), &Integer::from(12))
+    );
+    let q = wai_exact::RatPoint::from_rationals(Rational::from(2), Rational::from((1, 2)));
+    assert_eq!(
+        q,
+        wai_exact::RatPoint::new(4.into(), 1.into(), 2.into()).unwrap()
+    );
+}
