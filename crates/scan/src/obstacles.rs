@@ -47,18 +47,14 @@ pub fn random_obstacles(
         (lo.x as f64 / scale, lo.y as f64 / scale),
         (hi.x as f64 / scale, hi.y as f64 / scale),
     );
-    let vertices: Vec<(f64, f64)> = map
-        .vertices()
-        .iter()
-        .map(|p| (p.x as f64 / scale, p.y as f64 / scale))
-        .collect();
     let walls = crate::walls(map);
+    let vertices: Vec<(f64, f64)> = walls.iter().map(|w| w[0]).collect();
     let mut out = Vec::new();
+    if hi.0 - lo.0 <= side || hi.1 - lo.1 <= side {
+        return out;
+    }
     for _ in 0..count {
         for _ in 0..1000 {
-            if hi.0 - lo.0 <= side || hi.1 - lo.1 <= side {
-                break;
-            }
             let x = rng.random_range(lo.0..hi.0 - side);
             let y = rng.random_range(lo.1..hi.1 - side);
             let o = Obstacle {
