@@ -16,7 +16,7 @@ use std::sync::{Once, OnceLock};
 
 use arbitrary::Unstructured;
 use wai_lemmas::driver::FoundViolation;
-use wai_lemmas::{chapter_of, checkers_of_chapter, planted, Checker};
+use wai_lemmas::{chapter_of, planted, Checker};
 use wai_map::Map;
 
 /// One thread for rayon's global pool: libFuzzer runs one input at a time,
@@ -49,13 +49,12 @@ pub fn planted_name() -> Option<&'static str> {
     static PLANT: OnceLock<Option<&'static str>> = OnceLock::new();
     *PLANT.get_or_init(|| {
         let name = std::env::var("WAI_PLANT").ok().filter(|s| !s.is_empty())?;
-        let found = planted::PLANTED.iter().find(|(n, _)| *n == name);
-        match found {
-            Some((n, _)) => Some(*n),
-            None => {
-                let known: Vec<&str> = planted::PLANTED.iter().map(|(n, _)| *n).collect();
-                panic!("WAI_PLANT={name:?} is not a planted bug (known: {known:?})")
-            }
+        match planted::PLANTED.iter().find(|p| p.name == name) {
+            Some(p) => Some(p.name),
+            None => panic!(
+                "WAI_PLANT={name:?} is not a planted bug (known: {:?})",
+                planted::names()
+            ),
         }
     })
 }
@@ -64,15 +63,10 @@ pub fn planted_name() -> Option<&'static str> {
 /// `WAI_PLANT` instead of the real one of its claim when its claim is of
 /// this chapter.
 pub fn checkers(chapter: u8) -> Vec<Box<dyn Checker>> {
-    let mut all = checkers_of_chapter(chapter);
-    if let Some(name) = planted_name() {
-        let plant = planted::checker(name).expect("planted_name checked the name");
-        if chapter_of(plant.id()) == Some(chapter) {
-            all.retain(|c| c.id() != plant.id());
-            all.push(plant);
-        }
-    }
-    all
+    let of_chapter = wai_lemmas::makers().filter(|(id, _)| chapter_of(id) == Some(chapter));
+    planted::swap_in(of_chapter, planted_name().and_then(planted::maker))
+        .map(|(_, make)| make())
+        .collect()
 }
 
 /// Runs every checker of `chapter` (see [`checkers`]) on the map of

@@ -9,31 +9,54 @@
 
 use wai_visibility::SkeletonKey;
 
+use crate::check::Maker;
 use crate::driver::{Checker, Report};
 use crate::{sample, t3_2, Study};
 
-/// The planted bugs by name, with what each gets wrong.
-pub const PLANTED: &[(&str, &str)] = &[(
-    "shifted-labels",
-    "T3.2 fed a wrong skeleton key: the labels of V*_p shifted by one \
-     edge, so V_p rebuilt from the key differs wherever V_p has a spurious edge",
-)];
-
-/// The planted checker `name` of [`PLANTED`].
-pub fn checker(name: &str) -> Option<Box<dyn Checker>> {
-    match name {
-        "shifted-labels" => Some(shifted_labels()),
-        _ => None,
-    }
+/// A planted bug: its name, what it gets wrong, its checker's constructor.
+#[derive(Debug, Clone, Copy)]
+pub struct Planted {
+    pub name: &'static str,
+    pub what: &'static str,
+    pub make: Maker,
 }
 
-/// The constructor of `name`'s checker, for callers that make one checker
-/// per task ([`crate::check::search`]).
-pub fn maker(name: &str) -> Option<fn() -> Box<dyn Checker>> {
-    match name {
-        "shifted-labels" => Some(shifted_labels),
-        _ => None,
-    }
+/// Every planted bug.
+pub const PLANTED: &[Planted] = &[Planted {
+    name: "shifted-labels",
+    what: "T3.2 fed a wrong skeleton key: the labels of V*_p shifted by one \
+           edge, so V_p rebuilt from the key differs wherever V_p has a spurious edge",
+    make: shifted_labels,
+}];
+
+/// The names of [`PLANTED`], for messages.
+pub fn names() -> Vec<&'static str> {
+    PLANTED.iter().map(|p| p.name).collect()
+}
+
+/// The constructor of planted bug `name`'s checker.
+pub fn maker(name: &str) -> Option<Maker> {
+    PLANTED.iter().find(|p| p.name == name).map(|p| p.make)
+}
+
+/// The checker of planted bug `name`.
+pub fn checker(name: &str) -> Option<Box<dyn Checker>> {
+    maker(name).map(|make| make())
+}
+
+/// `makers` (claim ids with checker constructors, as
+/// [`crate::makers`] gives them) with `plant` in place of the real checker
+/// of its claim; unchanged if `plant` is `None` or its claim is not among
+/// them.
+pub fn swap_in(
+    makers: impl Iterator<Item = (&'static str, Maker)>,
+    plant: Option<Maker>,
+) -> impl Iterator<Item = (&'static str, Maker)> {
+    let plant = plant.map(|make| (make().id(), make));
+    makers.map(move |(id, make)| match plant {
+        Some((pid, pmake)) if pid == id => (id, pmake),
+        _ => (id, make),
+    })
 }
 
 /// [`ShiftedLabels`], boxed.
@@ -89,8 +112,8 @@ mod tests {
 
     #[test]
     fn every_planted_name_has_a_checker() {
-        for (name, _) in PLANTED {
-            assert!(checker(name).is_some(), "{name}");
+        for p in PLANTED {
+            assert!(checker(p.name).is_some(), "{}", p.name);
         }
         assert!(checker("nope").is_none());
     }

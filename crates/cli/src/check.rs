@@ -109,37 +109,28 @@ fn makers(args: &Args) -> Result<Vec<(&'static str, Maker)>, Failure> {
             "--chapter {ch}: the claims are in chapters 3, 4 and 5"
         )));
     }
-    let planted = match &args.plant {
+    let plant = match &args.plant {
         None => None,
-        Some(name) => {
-            let make = wai_lemmas::planted::maker(name).ok_or_else(|| {
-                let names: Vec<&str> = wai_lemmas::planted::PLANTED
-                    .iter()
-                    .map(|(n, _)| *n)
-                    .collect();
-                Failure::usage(format!(
-                    "--plant {name}: the planted bugs are {}",
-                    names.join(", ")
-                ))
-            })?;
-            Some((make().id(), make))
-        }
+        Some(name) => Some(wai_lemmas::planted::maker(name).ok_or_else(|| {
+            Failure::usage(format!(
+                "--plant {name}: the planted bugs are {}",
+                wai_lemmas::planted::names().join(", ")
+            ))
+        })?),
     };
-    let chosen: Vec<(&'static str, Maker)> = wai_lemmas::makers()
+    let selected = wai_lemmas::makers()
         .filter(|(id, _)| args.claims.is_empty() || args.claims.iter().any(|i| i == id))
         .filter(|(id, _)| {
             args.chapter.is_empty()
                 || wai_lemmas::chapter_of(id).is_some_and(|ch| args.chapter.contains(&ch))
-        })
-        .map(|(id, make)| match planted {
-            Some((pid, pmake)) if pid == id => (id, pmake),
-            _ => (id, make),
-        })
-        .collect();
+        });
+    let chosen: Vec<(&'static str, Maker)> =
+        wai_lemmas::planted::swap_in(selected, plant).collect();
     if chosen.is_empty() {
         return Err(Failure::usage("no checker is selected"));
     }
-    if let Some((pid, _)) = planted {
+    if let Some(make) = plant {
+        let pid = make().id();
         if !chosen.iter().any(|(id, _)| *id == pid) {
             return Err(Failure::usage(format!(
                 "--plant replaces the checker of {pid}, which is not selected"
