@@ -27,6 +27,8 @@
     reason = "sensor data is approximate; issue 12 allows floats here (STYLE.md 1)"
 )]
 
+pub mod coarsen;
+pub mod mbt;
 mod obstacles;
 
 pub use obstacles::{random_obstacles, Obstacle};
