@@ -28,6 +28,7 @@ mod bottles;
 pub mod bytes;
 mod families;
 mod grid;
+mod indoor;
 mod interweave;
 pub mod mutate;
 mod polyomino;
@@ -44,6 +45,7 @@ pub use families::{
     overlap_fan_viewpoints, CombLayout, ConvexNichesLayout, MAX_FAMILY_VERTICES,
 };
 pub use grid::window_grid;
+pub use indoor::{office, repeated_rooms};
 pub use interweave::{
     interweaved_gaps, shared_niches, shared_spiked_niches, CeilingNotch, PinholeLayout,
     SharedLayout,

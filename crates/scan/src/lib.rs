@@ -28,10 +28,19 @@
 )]
 
 pub mod coarsen;
+pub mod eval;
+pub mod icp;
+mod localizer;
 pub mod mbt;
 mod obstacles;
+pub mod signature;
+pub mod sites;
+pub mod units;
+pub mod walls;
 
+pub use localizer::{Hypothesis, Near, Options, RankedCell, ScanAnswer, ScanLocalizer};
 pub use obstacles::{random_obstacles, Obstacle};
+pub use signature::Compass;
 
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
@@ -182,20 +191,6 @@ pub(crate) fn walls(map: &Map) -> Vec<[(f64, f64); 2]> {
         .collect()
 }
 
-/// The distance along the ray from `o` in direction `d` (unit) to segment
-/// `s`, if the ray crosses it ahead of `o`. Collinear segments are ignored.
-fn hit(o: (f64, f64), d: (f64, f64), s: &[(f64, f64); 2]) -> Option<f64> {
-    let e = (s[1].0 - s[0].0, s[1].1 - s[0].1);
-    let denom = d.0 * e.1 - d.1 * e.0;
-    if denom.abs() <= 1e-15 * (e.0.abs() + e.1.abs()) {
-        return None;
-    }
-    let w = (s[0].0 - o.0, s[0].1 - o.1);
-    let t = (w.0 * e.1 - w.1 * e.0) / denom;
-    let u = (w.0 * d.1 - w.1 * d.0) / denom;
-    (t > 0.0 && (-1e-12..=1.0 + 1e-12).contains(&u)).then_some(t)
-}
-
 /// The true range from `pose` along the beam at `angle` (relative to the
 /// heading) to the nearest wall or obstacle side.
 pub fn true_range(map: &Map, obstacles: &[Obstacle], pose: &Pose, angle: f64) -> f64 {
@@ -213,7 +208,7 @@ fn cast(segments: &[[(f64, f64); 2]], pose: &Pose, angle: f64) -> f64 {
     let d = (a.cos(), a.sin());
     segments
         .iter()
-        .filter_map(|s| hit((pose.x, pose.y), d, s))
+        .filter_map(|s| walls::hit((pose.x, pose.y), d, s))
         .fold(f64::INFINITY, f64::min)
 }
 

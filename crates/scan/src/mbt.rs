@@ -146,6 +146,8 @@ pub struct Mbt {
     nodes: Vec<Node>,
     len: usize,
     build_evaluations: usize,
+    /// The relative pruning slack ([`PRUNE_SLACK`] unless set).
+    slack: f64,
 }
 
 /// A cluster's members with `D(centre, member)`, in ascending item order.
@@ -170,6 +172,7 @@ impl Mbt {
             nodes: Vec::new(),
             len: n,
             build_evaluations: 0,
+            slack: PRUNE_SLACK,
         };
         if n == 0 {
             return tree;
@@ -250,6 +253,14 @@ impl Mbt {
     }
 
     /// How many times building called `D`.
+    /// The tree with a wider relative pruning slack, for a query distance
+    /// that is itself computed with a known relative error (the localizer's
+    /// FFT rotation search in `f32`).
+    pub fn with_slack(mut self, slack: f64) -> Mbt {
+        self.slack = slack.max(PRUNE_SLACK);
+        self
+    }
+
     pub fn build_evaluations(&self) -> usize {
         self.build_evaluations
     }
@@ -329,14 +340,16 @@ impl Mbt {
         let mut stack = vec![(0, d_root)];
         while let Some((id, d_centre)) = stack.pop() {
             let node = &self.nodes[id];
-            if prunable(d_centre, node.radius, collector.bound()) {
+            if prunable(d_centre, node.radius, collector.bound(), self.slack) {
                 continue;
             }
             match &node.kind {
                 Kind::Leaf { items, to_centre } => {
                     for (&m, &to_c) in items.iter().zip(to_centre) {
                         // The centre was offered when it was evaluated.
-                        if m != node.centre && !prunable(d_centre, to_c, collector.bound()) {
+                        if m != node.centre
+                            && !prunable(d_centre, to_c, collector.bound(), self.slack)
+                        {
                             eval.offer(m, collector);
                         }
                     }
@@ -412,8 +425,8 @@ fn bisect(
 /// True if a cluster at query distance `d_centre` with radius `radius`
 /// certainly holds nothing within `bound` (eq. 6.1, with the slack of the
 /// module's "Rounding" section). Infinite or `NaN` values never prune.
-fn prunable(d_centre: f64, radius: f64, bound: f64) -> bool {
-    let slack = PRUNE_SLACK * (d_centre.abs() + radius);
+fn prunable(d_centre: f64, radius: f64, bound: f64, relative: f64) -> bool {
+    let slack = relative * (d_centre.abs() + radius);
     d_centre - radius > bound + slack
 }
 

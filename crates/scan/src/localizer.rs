@@ -1,0 +1,438 @@
+//! Localization from a noisy scan (ch. 6): the ROLOPRO scheme — the
+//! visibility cells of the map, each with the PCF of its centre of gravity
+//! (sec. 6.7), searched for the cells whose PCM to the scan is least —
+//! followed by what the thesis did not build: each of the best cells is
+//! refined to a pose by point-to-line ICP ([`crate::icp`]) and scored
+//! against the map, and the answer is the best pose together with every
+//! pose that scores as well within a tolerance, so that a building of
+//! identical rooms answers with each look-alike place.
+
+use std::time::Instant;
+
+use wai_cells::Decomposition;
+use wai_map::Map;
+
+use crate::coarsen::coarsen;
+use crate::icp::{self, IcpOptions};
+use crate::mbt::Mbt;
+use crate::signature::{Compass, Plans, ScanSignature, Signature, BOUND_SLACK};
+use crate::sites::{cell_sites, lattice_points, CellSite};
+use crate::walls::Walls;
+use crate::{Pose, Scan};
+
+/// The MBT's pruning slack: the rotation search computes the PCM through
+/// `f32` FFTs, whose relative error stays far below this.
+const ROTATION_SLACK: f64 = 1e-3;
+
+/// How the localizer is built and queried.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Options {
+    /// Sample angles of a signature (720: the thesis's scanners).
+    pub samples: usize,
+    /// The sensing range: PCFs are capped there (eq. 6.8).
+    pub max_range: Option<f64>,
+    /// How many of the best sites are refined to poses.
+    pub candidates: usize,
+    /// Beyond ROLOPRO: besides its centre, a cell larger than a square of
+    /// this side also stands at the points of a lattice of this spacing
+    /// inside it, so that no start of the refinement lies far from the
+    /// robot in a big cell (sec. 6.7: the error grows with the cell).
+    pub lattice: Option<f64>,
+    /// The residual cap τ of [`icp::score`], input units.
+    pub tau: f64,
+    /// A pose joins the answer set when its score is at most
+    /// `ratio` × best + `slack`.
+    pub answer_ratio: f64,
+    pub answer_slack: f64,
+    pub icp: IcpOptions,
+    /// The coarsening step of sec. 6.10.4: neighbouring cells whose
+    /// centres' PCFs lie within this PCM of a group's representative are
+    /// one cell (the representative's centre stands for them all).
+    pub coarsen: Option<f64>,
+}
+
+impl Default for Options {
+    fn default() -> Self {
+        Options {
+            samples: 720,
+            max_range: None,
+            candidates: 12,
+            lattice: Some(1.0),
+            tau: 0.2,
+            answer_ratio: 2.0,
+            answer_slack: 4e-4,
+            icp: IcpOptions::default(),
+            coarsen: None,
+        }
+    }
+}
+
+/// The preprocessed map.
+#[derive(Debug)]
+pub struct ScanLocalizer {
+    walls: Walls,
+    cells: Vec<CellSite>,
+    sites: Vec<Site>,
+    neighbours: Vec<(usize, usize)>,
+    signatures: Vec<Signature>,
+    /// The Monotonous Bisector Tree over the sites' signatures (sec. 6.4),
+    /// with D the unmasked, unrotated PCM (see [`crate::signature`]).
+    tree: Mbt,
+    /// Cells before and after the coarsening step.
+    coarsened: (usize, usize),
+    plans: Plans,
+    cap: f64,
+    opts: Options,
+}
+
+/// A point the localizer stands at: a cell's centre of gravity or a
+/// lattice point inside a big cell.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Site {
+    /// The cell (its position in [`ScanLocalizer::cells`]).
+    pub cell: usize,
+    pub at: (f64, f64),
+    /// Whether it is the cell's centre of gravity.
+    pub centre: bool,
+}
+
+/// A site ranked by its PCM to the scan.
+#[derive(Debug, Clone, PartialEq)]
+pub struct RankedCell {
+    /// Index into [`ScanLocalizer::sites`].
+    pub site: usize,
+    pub pcm: f64,
+    /// The heading the PCM's rotation gives.
+    pub heading: f64,
+}
+
+/// A refined pose and its score (lower is better).
+#[derive(Debug, Clone, PartialEq)]
+pub struct Hypothesis {
+    pub pose: Pose,
+    pub score: f64,
+    /// The ranked cell it was refined from.
+    pub from_site: usize,
+}
+
+/// What a query returns.
+#[derive(Debug, Clone, PartialEq)]
+pub struct ScanAnswer {
+    /// The best cells by PCM, best first.
+    pub ranked: Vec<RankedCell>,
+    /// The best refined pose.
+    pub best: Option<Hypothesis>,
+    /// Every distinct refined pose scoring within the tolerance, best first.
+    pub answer_set: Vec<Hypothesis>,
+    /// PCM evaluations made.
+    pub evaluations: usize,
+}
+
+/// A local query: only cells whose centre lies within `radius` of `at`.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Near {
+    pub at: (f64, f64),
+    pub radius: f64,
+}
+
+impl ScanLocalizer {
+    /// Decomposes `map` and preprocesses it.
+    pub fn new(map: &Map, opts: Options) -> ScanLocalizer {
+        ScanLocalizer::from_decomposition(&Decomposition::new(map), opts)
+    }
+
+    /// Preprocesses a decomposed map: one signature per 2-cell.
+    pub fn from_decomposition(d: &Decomposition<'_>, opts: Options) -> ScanLocalizer {
+        use rayon::prelude::*;
+        let walls = Walls::new(crate::walls(d.map()));
+        let (cells, neighbours) = cell_sites(d);
+        let mut sites = Vec::with_capacity(cells.len());
+        let mut cell_list = Vec::with_capacity(cells.len());
+        for c in cells {
+            let extra = match opts.lattice {
+                Some(g) if c.area > g * g => lattice_points(&c.polygon, g, 0.05),
+                _ => Vec::new(),
+            };
+            let lattice: Vec<Site> = extra
+                .into_iter()
+                .map(|at| Site {
+                    cell: c.cell,
+                    at,
+                    centre: false,
+                })
+                .collect();
+            sites.push(Site {
+                cell: c.cell,
+                at: c.centre,
+                centre: true,
+            });
+            sites.extend(lattice);
+            cell_list.push(c);
+        }
+        let plans = Plans::new(opts.samples);
+        let cap = opts.max_range.unwrap_or(f64::INFINITY);
+        let mut signatures: Vec<Signature> = sites
+            .par_iter()
+            .map(|s| Signature::of_point(&walls, s.at, cap, &plans))
+            .collect();
+        let before = cell_list.len();
+        let mut after = before;
+        if let Some(threshold) = opts.coarsen {
+            // Cell i's centre is the site whose `cell` is i and `centre` set.
+            let mut centre_site = vec![0; before];
+            for (k, s) in sites.iter().enumerate() {
+                if s.centre {
+                    centre_site[s.cell] = k;
+                }
+            }
+            let dist = |i: usize, j: usize| {
+                signatures[centre_site[i]].distance(&signatures[centre_site[j]])
+            };
+            let groups = coarsen(before, &neighbours, dist, threshold);
+            after = groups.len();
+            let keep: Vec<bool> = sites
+                .iter()
+                .map(|s| !s.centre || groups.representatives[groups.group_of[s.cell]] == s.cell)
+                .collect();
+            let mut k = 0;
+            sites.retain(|_| (keep[k], k += 1).0);
+            let mut k = 0;
+            signatures.retain(|_| (keep[k], k += 1).0);
+        }
+        let tree = Mbt::build(signatures.len(), 8, |i, j| {
+            signatures[i].distance(&signatures[j])
+        })
+        .with_slack(ROTATION_SLACK);
+        ScanLocalizer {
+            walls,
+            cells: cell_list,
+            sites,
+            neighbours,
+            signatures,
+            tree,
+            coarsened: (before, after),
+            plans,
+            cap,
+            opts,
+        }
+    }
+
+    /// The number of cells before and after the coarsening step.
+    pub fn coarsened(&self) -> (usize, usize) {
+        self.coarsened
+    }
+
+    /// The 2-cells, by position in the decomposition.
+    pub fn cells(&self) -> &[CellSite] {
+        &self.cells
+    }
+
+    /// The sites, each cell's centre first, then its lattice points.
+    pub fn sites(&self) -> &[Site] {
+        &self.sites
+    }
+
+    pub fn neighbours(&self) -> &[(usize, usize)] {
+        &self.neighbours
+    }
+
+    pub fn walls(&self) -> &Walls {
+        &self.walls
+    }
+
+    pub fn options(&self) -> &Options {
+        &self.opts
+    }
+
+    /// The cells whose PCM to `scan` is least, best first (ties by site),
+    /// and how many PCMs were evaluated. A full scan visits the cells in
+    /// the order of a rotation-free lower bound of their PCM and stops
+    /// when the bound passes the k-th best PCM found
+    /// ([`ScanSignature::lower_bound`]); the result is the same as
+    /// [`ScanLocalizer::rank_linear`]'s (a test checks it).
+    pub fn rank(
+        &self,
+        scan: &Scan,
+        compass: &Compass,
+        near: Option<Near>,
+        k: usize,
+    ) -> (Vec<RankedCell>, usize) {
+        if k == 0 {
+            return (Vec::new(), 0);
+        }
+        let s = ScanSignature::new(scan, compass.heading(), self.cap, &self.plans);
+        let eligible = self.eligible(near);
+        let bounds: Option<Vec<(f64, usize)>> = eligible
+            .iter()
+            .map(|&i| s.lower_bound(&self.signatures[i]).map(|b| (b, i)))
+            .collect();
+        let Some(mut bounds) = bounds else {
+            if near.is_some() {
+                return self.rank_all(&s, &eligible, compass, k);
+            }
+            let (found, stats) = self
+                .tree
+                .k_nearest_with_stats(k, |i| s.pcm(&self.signatures[i], compass, &self.plans).0);
+            let ranked = found
+                .into_iter()
+                .map(|nb| RankedCell {
+                    site: nb.item,
+                    pcm: nb.distance,
+                    heading: s.pcm(&self.signatures[nb.item], compass, &self.plans).1,
+                })
+                .collect();
+            return (ranked, stats.evaluations);
+        };
+        bounds.sort_by(|a, b| a.0.total_cmp(&b.0).then(a.1.cmp(&b.1)));
+        let mut best: Vec<RankedCell> = Vec::with_capacity(k + 1);
+        let mut evaluations = 0;
+        for (bound, i) in bounds {
+            if best.len() == k {
+                let kth = best[k - 1].pcm;
+                if bound > kth * (1.0 + BOUND_SLACK) + 1e-6 {
+                    break;
+                }
+            }
+            let (pcm, heading) = s.pcm(&self.signatures[i], compass, &self.plans);
+            evaluations += 1;
+            let cell = RankedCell {
+                site: i,
+                pcm,
+                heading,
+            };
+            let at = best.partition_point(|c| c.pcm < pcm || (c.pcm == pcm && c.site < i));
+            if at < k {
+                best.insert(at, cell);
+                best.truncate(k);
+            }
+        }
+        (best, evaluations)
+    }
+
+    /// [`ScanLocalizer::rank`] by evaluating every cell (the reference).
+    pub fn rank_linear(
+        &self,
+        scan: &Scan,
+        compass: &Compass,
+        near: Option<Near>,
+        k: usize,
+    ) -> (Vec<RankedCell>, usize) {
+        let s = ScanSignature::new(scan, compass.heading(), self.cap, &self.plans);
+        self.rank_all(&s, &self.eligible(near), compass, k)
+    }
+
+    fn eligible(&self, near: Option<Near>) -> Vec<usize> {
+        (0..self.sites.len())
+            .filter(|&i| {
+                let c = self.sites[i].at;
+                near.is_none_or(|n| (c.0 - n.at.0).hypot(c.1 - n.at.1) <= n.radius)
+            })
+            .collect()
+    }
+
+    fn rank_all(
+        &self,
+        s: &ScanSignature,
+        eligible: &[usize],
+        compass: &Compass,
+        k: usize,
+    ) -> (Vec<RankedCell>, usize) {
+        let mut ranked: Vec<RankedCell> = eligible
+            .iter()
+            .map(|&i| {
+                let (pcm, heading) = s.pcm(&self.signatures[i], compass, &self.plans);
+                RankedCell {
+                    site: i,
+                    pcm,
+                    heading,
+                }
+            })
+            .collect();
+        let evaluations = ranked.len();
+        ranked.sort_by(|a, b| a.pcm.total_cmp(&b.pcm).then(a.site.cmp(&b.site)));
+        ranked.truncate(k);
+        (ranked, evaluations)
+    }
+
+    /// Localizes `scan`: ranks the cells, refines the best, and answers
+    /// with the best pose and the set of poses as good.
+    pub fn localize(&self, scan: &Scan, compass: &Compass, near: Option<Near>) -> ScanAnswer {
+        let (ranked, evaluations) = self.rank(scan, compass, near, self.opts.candidates);
+        let points = scan.points();
+        // Starts that the coarse stages take to one place are refined once.
+        let mut landed: Vec<(Pose, usize)> = Vec::new();
+        for r in &ranked {
+            let c = self.sites[r.site].at;
+            let start = Pose {
+                x: c.0,
+                y: c.1,
+                heading: r.heading,
+            };
+            let pose = icp::coarse(&self.walls, &points, start, &self.opts.icp);
+            if !landed.iter().any(|(p, _)| same_landing(p, &pose)) {
+                landed.push((pose, r.site));
+            }
+        }
+        let mut hypotheses: Vec<Hypothesis> = landed
+            .into_iter()
+            .map(|(coarse, site)| {
+                let pose = icp::fine(&self.walls, &points, coarse, &self.opts.icp);
+                let score = if pose.x.is_finite() && pose.y.is_finite() {
+                    icp::score(&self.walls, scan, &pose, self.opts.max_range, self.opts.tau)
+                } else {
+                    f64::INFINITY
+                };
+                Hypothesis {
+                    pose,
+                    score,
+                    from_site: site,
+                }
+            })
+            .collect();
+        hypotheses.sort_by(|a, b| {
+            a.score
+                .total_cmp(&b.score)
+                .then(a.from_site.cmp(&b.from_site))
+        });
+        let best = hypotheses.first().cloned();
+        let mut answer_set: Vec<Hypothesis> = Vec::new();
+        if let Some(b) = &best {
+            let limit = self.opts.answer_ratio * b.score + self.opts.answer_slack;
+            for h in hypotheses.iter().filter(|h| h.score <= limit) {
+                if !answer_set.iter().any(|a| same_place(&a.pose, &h.pose)) {
+                    answer_set.push(h.clone());
+                }
+            }
+        }
+        ScanAnswer {
+            ranked,
+            best,
+            answer_set,
+            evaluations,
+        }
+    }
+
+    /// [`ScanLocalizer::localize`] and the time it took, in milliseconds.
+    pub fn localize_timed(
+        &self,
+        scan: &Scan,
+        compass: &Compass,
+        near: Option<Near>,
+    ) -> (ScanAnswer, f64) {
+        let t = Instant::now();
+        let a = self.localize(scan, compass, near);
+        (a, t.elapsed().as_secs_f64() * 1e3)
+    }
+}
+
+/// Two coarse poses within 2 cm and 0.5° converge to one place.
+fn same_landing(a: &Pose, b: &Pose) -> bool {
+    (a.x - b.x).hypot(a.y - b.y) < 0.02
+        && icp::wrap(a.heading - b.heading).abs() < 0.5f64.to_radians()
+}
+
+/// Two poses within 0.25 input units and 5° are one place.
+fn same_place(a: &Pose, b: &Pose) -> bool {
+    (a.x - b.x).hypot(a.y - b.y) < 0.25
+        && icp::wrap(a.heading - b.heading).abs() < 5f64.to_radians()
+}
