@@ -9,7 +9,8 @@
 //! `search-extremes` (a seeded local search for the maps that push a
 //! chapter 5 ratio highest), `check` (every claim checker over a stream of
 //! maps, shrinking what breaks a claim), `claims` (the claims registry with
-//! the last recorded run), `scan` (a simulated noisy laser scan).
+//! the last recorded run), `scan` (a simulated noisy laser scan), `localize-scan` (localize a scan)
+//! and `eval` (the scan localizer's evaluation protocol).
 //!
 //! Exit codes: 0 success; 1 the map is invalid; 2 bad usage; 3 the file
 //! could not be read or written. Errors say what and where, never panic.
@@ -23,6 +24,7 @@ mod extremes;
 mod input;
 mod localize;
 mod scan;
+mod scan_eval;
 mod search;
 mod vis;
 
@@ -177,6 +179,14 @@ enum Command {
     /// at equal angles, Gaussian range noise, a range cutoff and unknown
     /// obstacles, seeded; writes the angles and ranges as JSON.
     Scan(scan::Args),
+    /// Localize a laser scan in a map (thesis ch. 6): the cells ranked by
+    /// the polar coordinate metric, the best refined by point-to-line ICP,
+    /// and the set of poses that match as well (every look-alike place).
+    LocalizeScan(scan_eval::LocalizeArgs),
+    /// The evaluation protocol of issue 12: seeded poses on each map,
+    /// simulated scans under each condition, success rates, answer sets,
+    /// times and error CDF plots (SVG), with peers on the same scans.
+    Eval(scan_eval::EvalArgs),
     /// Every claim of the registry with its kind, its checker and what the
     /// last recorded run (lemmas/last-run.json) found: instances examined,
     /// violations, known failures, the largest ratio.
@@ -304,6 +314,8 @@ fn main() -> ExitCode {
         Command::SearchExtremes(args) => extremes::search_extremes(&args),
         Command::Check(args) => check::check(&args),
         Command::Scan(args) => scan::scan(&args),
+        Command::LocalizeScan(args) => scan_eval::localize_scan(&args),
+        Command::Eval(args) => scan_eval::eval(&args),
         Command::Claims(args) => claims::claims(&args),
         Command::Render {
             map,

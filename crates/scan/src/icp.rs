@@ -137,12 +137,27 @@ fn step(
 /// (a lost return agrees with a predicted range beyond `max_range`, and
 /// costs τ² otherwise). The noise-free truth scores 0; noise σ scores ≈ σ².
 pub fn score(walls: &Walls, scan: &Scan, pose: &Pose, max_range: Option<f64>, tau: f64) -> f64 {
+    score_strided(walls, scan, pose, max_range, tau, 1)
+}
+
+/// [`score`] on every `stride`-th beam: a cheap estimate that lets the
+/// localizer drop hopeless landings before refining them.
+pub fn score_strided(
+    walls: &Walls,
+    scan: &Scan,
+    pose: &Pose,
+    max_range: Option<f64>,
+    tau: f64,
+    stride: usize,
+) -> f64 {
+    let stride = stride.max(1);
     let t2 = tau * tau;
     let limit = max_range.unwrap_or(f64::INFINITY);
     let total: f64 = scan
         .angles
         .iter()
         .zip(&scan.ranges)
+        .step_by(stride)
         .map(|(a, r)| {
             let predicted = walls.range(pose, *a);
             match r {
@@ -152,7 +167,7 @@ pub fn score(walls: &Walls, scan: &Scan, pose: &Pose, max_range: Option<f64>, ta
             }
         })
         .sum();
-    total / scan.angles.len().max(1) as f64
+    total / scan.angles.len().div_ceil(stride).max(1) as f64
 }
 
 /// An angle in (−π, π].

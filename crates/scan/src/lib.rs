@@ -28,6 +28,7 @@
 )]
 
 pub mod coarsen;
+pub mod draw;
 pub mod eval;
 pub mod icp;
 mod localizer;

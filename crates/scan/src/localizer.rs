@@ -24,6 +24,21 @@ use crate::{Pose, Scan};
 /// `f32` FFTs, whose relative error stays far below this.
 const ROTATION_SLACK: f64 = 1e-3;
 
+/// The candidates of a query are drawn from this many times as many
+/// ranked sites, keeping those at least [`DIVERSE_METRES`] apart or
+/// [`DIVERSE_RADIANS`] apart in heading.
+const POOL: usize = 4;
+const DIVERSE_METRES: f64 = 0.5;
+const DIVERSE_RADIANS: f64 = 0.087;
+
+/// The pruning of landings before the fine ICP stage: every 4th beam, and
+/// a margin far wider than the answer set's (`answer_ratio` 2): a coarse
+/// landing is up to a few centimetres off, which costs the quick score
+/// more than the final one.
+const QUICK_STRIDE: usize = 4;
+const QUICK_RATIO: f64 = 4.0;
+const QUICK_SLACK: f64 = 2e-3;
+
 /// How the localizer is built and queried.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Options {
@@ -118,7 +133,8 @@ pub struct Hypothesis {
 /// What a query returns.
 #[derive(Debug, Clone, PartialEq)]
 pub struct ScanAnswer {
-    /// The best cells by PCM, best first.
+    /// The candidates: the best sites by PCM, best first, at least
+    /// 0.5 m or 5° apart.
     pub ranked: Vec<RankedCell>,
     /// The best refined pose.
     pub best: Option<Hypothesis>,
@@ -357,7 +373,27 @@ impl ScanLocalizer {
     /// Localizes `scan`: ranks the cells, refines the best, and answers
     /// with the best pose and the set of poses as good.
     pub fn localize(&self, scan: &Scan, compass: &Compass, near: Option<Near>) -> ScanAnswer {
-        let (ranked, evaluations) = self.rank(scan, compass, near, self.opts.candidates);
+        // Neighbouring sites (slivers along one ray, lattice points) rank
+        // alike and would send the refinement to one place several times:
+        // the candidates are the best sites at least `DIVERSE_METRES` or
+        // `DIVERSE_RADIANS` apart, drawn from a pool of `POOL` × as many.
+        let k = self.opts.candidates;
+        let (pool, evaluations) = self.rank(scan, compass, near, k.saturating_mul(POOL));
+        let mut ranked: Vec<RankedCell> = Vec::with_capacity(k);
+        for r in pool {
+            if ranked.len() == k {
+                break;
+            }
+            let at = self.sites[r.site].at;
+            let close = |q: &RankedCell| {
+                let b = self.sites[q.site].at;
+                (at.0 - b.0).hypot(at.1 - b.1) < DIVERSE_METRES
+                    && icp::wrap(r.heading - q.heading).abs() < DIVERSE_RADIANS
+            };
+            if !ranked.iter().any(close) {
+                ranked.push(r);
+            }
+        }
         let points = scan.points();
         // Starts that the coarse stages take to one place are refined once.
         let mut landed: Vec<(Pose, usize)> = Vec::new();
@@ -373,8 +409,29 @@ impl ScanLocalizer {
                 landed.push((pose, r.site));
             }
         }
+        // A landing whose score on every `QUICK_STRIDE`-th beam is far
+        // worse than the best landing's cannot join the answer set: it is
+        // not refined further.
+        let quick: Vec<f64> = landed
+            .iter()
+            .map(|(p, _)| {
+                icp::score_strided(
+                    &self.walls,
+                    scan,
+                    p,
+                    self.opts.max_range,
+                    self.opts.tau,
+                    QUICK_STRIDE,
+                )
+            })
+            .collect();
+        let best_quick = quick.iter().copied().fold(f64::INFINITY, f64::min);
+        let keep = QUICK_RATIO * best_quick + QUICK_SLACK;
         let mut hypotheses: Vec<Hypothesis> = landed
             .into_iter()
+            .zip(quick)
+            .filter(|(_, q)| *q <= keep)
+            .map(|(l, _)| l)
             .map(|(coarse, site)| {
                 let pose = icp::fine(&self.walls, &points, coarse, &self.opts.icp);
                 let score = if pose.x.is_finite() && pose.y.is_finite() {
