@@ -247,3 +247,4 @@ fn a_scan_in_a_generated_orthogonal_map_has_a_return_on_every_beam() {
         .all(|r| r.is_some_and(|r| r.is_finite() && r > 0.0)));
 }
 mod index;
+mod peer;
