@@ -344,7 +344,8 @@ impl Drop for KartoPeer {
 
 /// The repository root, two levels above this crate's manifest.
 fn repo_root() -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR")).join("../..")
+    let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("../..");
+    root.canonicalize().unwrap_or(root)
 }
 
 fn error_text(answer: &Value) -> Option<String> {
