@@ -134,6 +134,7 @@ pub struct KartoPeer {
     stdin: ChildStdin,
     stdout: BufReader<ChildStdout>,
     stderr: Arc<Mutex<String>>,
+    drain: Option<std::thread::JoinHandle<()>>,
     build_ms: f64,
     settings: Value,
 }
@@ -196,7 +197,7 @@ impl KartoPeer {
         // the tail explains a death.
         let stderr = Arc::new(Mutex::new(String::new()));
         let sink = Arc::clone(&stderr);
-        std::thread::spawn(move || {
+        let drain = std::thread::spawn(move || {
             let mut buf = [0u8; 1024];
             while let Ok(n @ 1..) = err.read(&mut buf) {
                 let mut s = sink.lock().unwrap_or_else(|p| p.into_inner());
@@ -213,6 +214,7 @@ impl KartoPeer {
             stdin,
             stdout: BufReader::new(stdout),
             stderr,
+            drain: Some(drain),
             build_ms: 0.0,
             settings: Value::Null,
         };
@@ -323,8 +325,16 @@ impl KartoPeer {
             let _ = self.child.kill();
             "alive with its pipes closed; killed".to_string()
         });
-        // Give the drain thread a moment to read the last words.
-        std::thread::sleep(std::time::Duration::from_millis(50));
+        // The drain thread ends at the pipe's EOF, having read the last
+        // words; a grandchild holding the pipe open is not waited for.
+        for _ in 0..20 {
+            match &self.drain {
+                Some(d) if !d.is_finished() => {
+                    std::thread::sleep(std::time::Duration::from_millis(50))
+                }
+                _ => break,
+            }
+        }
         let stderr = self
             .stderr
             .lock()
