@@ -34,6 +34,7 @@ pub mod icp;
 mod localizer;
 pub mod mbt;
 mod obstacles;
+pub mod peer;
 pub mod signature;
 pub mod sites;
 pub mod units;

@@ -248,3 +248,4 @@ fn a_scan_in_a_generated_orthogonal_map_has_a_return_on_every_beam() {
 }
 mod index;
 mod localizer;
+mod peer;
