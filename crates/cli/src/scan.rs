@@ -15,8 +15,13 @@ use crate::Failure;
 
 #[derive(clap::Args, Debug)]
 pub struct Args {
-    /// Map file (JSON map format or GeoJSON); `-` reads standard input.
+    /// Map file (JSON map format or GeoJSON; `-` reads standard input), or
+    /// a generated map: `rooms:K`, `office:K[:SEED]`, `family:ID:P1,…`.
     pub map: PathBuf,
+    /// The map's units: `auto`, `m`, `lonlat` or `scale:K` (see `wai
+    /// localize-scan --help`); the scan is in metres.
+    #[arg(long, default_value = "auto")]
+    pub units: String,
     /// The pose `x,y` or `x,y,θ`: position in the map's units, heading θ in
     /// degrees counter-clockwise from the x axis (default 0).
     #[arg(long, allow_hyphen_values = true)]
@@ -74,7 +79,15 @@ fn parse_pose(text: &str) -> Result<Pose, Failure> {
 
 pub fn scan(args: &Args) -> Result<(), Failure> {
     let pose = parse_pose(&args.at)?;
-    let map = load(&args.map, Format::Auto)?.map;
+    let map = match args.map.to_str() {
+        Some(spec) if crate::scan_eval::is_generated(spec) || args.units != "auto" => {
+            crate::scan_eval::load_map(spec, &args.units)?.map
+        }
+        _ => {
+            let map = load(&args.map, Format::Auto)?.map;
+            crate::scan_eval::in_metres(&args.map.display().to_string(), map, "auto")?.0
+        }
+    };
     let sensor = Sensor {
         beams: args.beams,
         fov: args.fov.to_radians(),

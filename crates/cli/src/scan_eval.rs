@@ -78,6 +78,10 @@ pub struct EvalArgs {
     /// of ours; peers are slow).
     #[arg(long, default_value_t = 100)]
     pub peer_poses: usize,
+    /// The conditions the peers run under (as --conditions; `all` is
+    /// every condition evaluated).
+    #[arg(long, default_value = "all")]
+    pub peer_conditions: String,
     /// Units of the map files (see `wai localize-scan --help`).
     #[arg(long, default_value = "auto")]
     pub units: String,
@@ -87,13 +91,17 @@ pub struct EvalArgs {
     /// Print the JSON on standard output instead of the tables.
     #[arg(long)]
     pub json: bool,
+    /// Exit 1 when our answer set holds the truth in fewer than this
+    /// fraction of all queries (a regression gate for CI).
+    #[arg(long)]
+    pub require_answer_set: Option<f64>,
 }
 
 /// A map of an evaluation, in metres.
-struct EvalMap {
-    name: String,
+pub(crate) struct EvalMap {
+    pub name: String,
     kind: &'static str,
-    map: Map,
+    pub map: Map,
     units: String,
     /// For `rooms:K`: K rooms, 5 m apart, the first from x = 1 m, floors
     /// at y = 2.2 m (see [`wai_gen::repeated_rooms`]).
@@ -153,7 +161,31 @@ fn parse_u32(spec: &str, s: &str) -> Result<u32, Failure> {
         .map_err(|_| Failure::usage(format!("{spec}: {s:?} is not a count")))
 }
 
-fn load_map(spec: &str, units: &str) -> Result<EvalMap, Failure> {
+/// Whether `spec` names a generated map rather than a file.
+pub(crate) fn is_generated(spec: &str) -> bool {
+    ["rooms:", "office:", "family:"]
+        .iter()
+        .any(|p| spec.starts_with(p))
+        && !Path::new(spec).exists()
+}
+
+/// `map`, read from `path`, in metres by `units` (`auto` guesses), and the
+/// units used.
+pub(crate) fn in_metres(path: &str, map: Map, units: &str) -> Result<(Map, String), Failure> {
+    let u = parse_units(units)?.unwrap_or_else(|| auto_units(path, &map));
+    if u == Units::Metres {
+        return Ok((map, units_label(u)));
+    }
+    let metres = to_metres(&map, u).map_err(|e| {
+        Failure::invalid(format!(
+            "{path}: in metres ({}) the map is no longer valid: {e}",
+            units_label(u)
+        ))
+    })?;
+    Ok((metres, units_label(u)))
+}
+
+pub(crate) fn load_map(spec: &str, units: &str) -> Result<EvalMap, Failure> {
     let generated = |kind, map: Map, rooms| EvalMap {
         name: spec.to_owned(),
         kind,
@@ -161,6 +193,9 @@ fn load_map(spec: &str, units: &str) -> Result<EvalMap, Failure> {
         units: "m".into(),
         rooms,
     };
+    if !is_generated(spec) {
+        return load_file(spec, units);
+    }
     if let Some(k) = spec.strip_prefix("rooms:") {
         let k = parse_u32(spec, k)?;
         if !(1..=200).contains(&k) {
@@ -196,18 +231,19 @@ fn load_map(spec: &str, units: &str) -> Result<EvalMap, Failure> {
         let map = wai_gen::family(id, &params).map_err(|e| gen_failure(spec, e))?;
         return Ok(generated("family", map, None));
     }
+    Err(Failure::usage(format!(
+        "{spec}: expected rooms:K, office:K[:SEED] or family:ID:P1,P2,…"
+    )))
+}
+
+fn load_file(spec: &str, units: &str) -> Result<EvalMap, Failure> {
     let (path, units) = match spec.rsplit_once('@') {
-        Some((p, u)) => (p, u),
-        None => (spec, units),
+        Some((p, u)) if !Path::new(spec).exists() => (p, u),
+        _ => (spec, units),
     };
     let map = load(Path::new(path), Format::Auto)?.map;
-    let u = parse_units(units)?.unwrap_or_else(|| auto_units(path, &map));
-    let metres = to_metres(&map, u).map_err(|e| {
-        Failure::invalid(format!(
-            "{path}: in metres ({}) the map is no longer valid: {e}",
-            units_label(u)
-        ))
-    })?;
+    let name = map.name().map_or_else(|| path.to_owned(), str::to_owned);
+    let (metres, u) = in_metres(path, map, units)?;
     let kind = if path.contains("westport") {
         "westport"
     } else if path.contains("r2v") {
@@ -216,10 +252,10 @@ fn load_map(spec: &str, units: &str) -> Result<EvalMap, Failure> {
         "file"
     };
     Ok(EvalMap {
-        name: map.name().map_or_else(|| path.to_owned(), str::to_owned),
+        name,
         kind,
         map: metres,
-        units: units_label(u),
+        units: u,
         rooms: None,
     })
 }
@@ -483,13 +519,59 @@ fn start_peer(name: &str, map: &Map) -> Result<Box<dyn Peer>, Failure> {
 
 mod peers {
     use super::{Failure, Map, Outcome, Peer, Scan};
+    use wai_scan::peer::{map_walls, KartoConfig, KartoPeer};
 
-    pub fn start(name: &str, _map: &Map) -> Result<Box<dyn Peer>, Failure> {
-        Err(Failure::usage(format!("peer {name:?}: no such peer")))
+    struct Karto {
+        name: String,
+        peer: KartoPeer,
     }
 
-    #[allow(dead_code)]
-    fn _unused(_: Option<(&Scan, Outcome)>) {}
+    impl Peer for Karto {
+        fn name(&self) -> String {
+            self.name.clone()
+        }
+
+        fn localize(&mut self, scan: &Scan, max_range: Option<f64>) -> Result<Outcome, String> {
+            let a = self
+                .peer
+                .localize(scan, max_range)
+                .map_err(|e| e.to_string())?;
+            // The match's own time, measured in the peer (no pipes, no
+            // JSON): the fairest time to quote for it.
+            Ok(Outcome {
+                best: Some(a.pose),
+                set: vec![a.pose],
+                ms: a.ms,
+            })
+        }
+    }
+
+    /// `karto` (karto-scanmatcher at its default 0.05 m grid) or
+    /// `karto:R` (an R-metre grid).
+    pub fn start(name: &str, map: &Map) -> Result<Box<dyn Peer>, Failure> {
+        let resolution = match name {
+            "karto" => KartoConfig::default().resolution,
+            _ => match name.strip_prefix("karto:").map(str::parse::<f64>) {
+                Some(Ok(r)) if r.is_finite() && r > 0.0 && r <= 1.0 => r,
+                _ => {
+                    return Err(Failure::usage(format!(
+                        "peer {name:?}: expected karto or karto:R with R the grid in metres (0, 1]"
+                    )))
+                }
+            },
+        };
+        let config = KartoConfig {
+            resolution,
+            smear_deviation: resolution,
+            ..KartoConfig::default()
+        };
+        let peer = KartoPeer::spawn(&map_walls(map), &config)
+            .map_err(|e| Failure::io(format!("peer {name}: {e}")))?;
+        Ok(Box::new(Karto {
+            name: name.to_owned(),
+            peer,
+        }))
+    }
 }
 
 pub fn eval(args: &EvalArgs) -> Result<(), Failure> {
@@ -500,6 +582,7 @@ pub fn eval(args: &EvalArgs) -> Result<(), Failure> {
         .collect::<Result<Vec<_>, _>>()
         .map_err(Failure::usage)?;
     let conds = conditions(&args.conditions)?;
+    let peer_conds = conditions(&args.peer_conditions)?;
     if args.poses == 0 {
         return Err(Failure::usage("--poses must be at least 1"));
     }
@@ -547,8 +630,12 @@ pub fn eval(args: &EvalArgs) -> Result<(), Failure> {
             .iter()
             .map(|p| start_peer(p, &m.map))
             .collect::<Result<_, _>>()?;
-        let queries = conds.len()
-            * (modes.len() * poses.len() + peers.len() * args.peer_poses.min(poses.len()));
+        let peer_rows = conds
+            .iter()
+            .filter(|c| peer_conds.iter().any(|p| p.name == c.name))
+            .count();
+        let queries = conds.len() * modes.len() * poses.len()
+            + peer_rows * peers.len() * args.peer_poses.min(poses.len());
         bar.set_length(queries as u64);
         let mut rows: Vec<Row> = Vec::new();
         for c in &conds {
@@ -557,7 +644,8 @@ pub fn eval(args: &EvalArgs) -> Result<(), Failure> {
                 _ => &full,
             };
             let mut peer_outcomes: Vec<(String, Vec<Outcome>)> = Vec::new();
-            for peer in &mut peers {
+            let peers_here = peer_conds.iter().any(|p| p.name == c.name);
+            for peer in peers.iter_mut().filter(|_| peers_here) {
                 let trials = eval::trials(
                     &m.map,
                     &poses[..args.peer_poses.min(poses.len())],
@@ -658,6 +746,20 @@ pub fn eval(args: &EvalArgs) -> Result<(), Failure> {
             if let Some(l) = &r.look_alikes {
                 j["look_alikes"] = l.clone();
             }
+            // How much the scans saw: a scan with few returns (an empty
+            // hall beyond the range limit) is ambiguous for any localizer.
+            let fractions: Vec<f64> = r
+                .trials
+                .iter()
+                .map(|t| {
+                    t.scan.ranges.iter().filter(|x| x.is_some()).count() as f64
+                        / t.scan.ranges.len().max(1) as f64
+                })
+                .collect();
+            j["mean_returns_fraction"] =
+                json!(fractions.iter().sum::<f64>() / fractions.len().max(1) as f64);
+            j["queries_under_25_percent_returns"] =
+                json!(fractions.iter().filter(|f| **f < 0.25).count());
             row_json.push(j);
         }
         let slug: String = m
@@ -776,6 +878,14 @@ pub fn eval(args: &EvalArgs) -> Result<(), Failure> {
             cdf_all.display(),
             json_path.display()
         );
+    }
+    if let Some(min) = args.require_answer_set {
+        if overall.answer_set_contains_truth_rate < min {
+            return Err(Failure::invalid(format!(
+                "the answer set held the truth in {:.3} of the queries, below the required {min}",
+                overall.answer_set_contains_truth_rate
+            )));
+        }
     }
     Ok(())
 }

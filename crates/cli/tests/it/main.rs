@@ -455,3 +455,4 @@ mod claims;
 mod extremes;
 mod localize;
 mod scan;
+mod scan_eval;
