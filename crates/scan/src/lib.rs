@@ -29,10 +29,13 @@
 
 pub mod coarsen;
 pub mod eval;
+pub mod hausdorff;
 pub mod icp;
 mod localizer;
 pub mod mbt;
 mod obstacles;
+pub mod pcm;
+pub mod polar;
 pub mod signature;
 pub mod sites;
 pub mod units;
