@@ -184,11 +184,7 @@ pub fn directed_segments_to_segments(
 
 /// Eq. 6.2 between a finite point set and a union of segments (scan
 /// points against a polygon boundary), to within `tol` below.
-pub fn hausdorff_points_segments(
-    a: &[Pt],
-    b: &[Segment],
-    tol: f64,
-) -> Result<f64, HausdorffError> {
+pub fn hausdorff_points_segments(a: &[Pt], b: &[Segment], tol: f64) -> Result<f64, HausdorffError> {
     Ok(directed_points_to_segments(a, b)?.max(directed_segments_to_points(b, a, tol)?))
 }
 
@@ -260,7 +256,9 @@ pub fn scan_to_polygon_kth(
 /// The boundary segments of the polygon with `vertices` (closed ring).
 pub fn boundary(vertices: &[Pt]) -> Vec<Segment> {
     let n = vertices.len();
-    (0..n).map(|i| [vertices[i], vertices[(i + 1) % n]]).collect()
+    (0..n)
+        .map(|i| [vertices[i], vertices[(i + 1) % n]])
+        .collect()
 }
 
 /// The centre of gravity (area centroid) of the simple polygon with

@@ -276,14 +276,30 @@ fn minimise(p: &Pcf, q: &Pcf, start: f64, width: f64, centre: Option<f64>) -> Ro
     let mut minima: Vec<(f64, f64, f64)> = Vec::new();
     for i in 0..n {
         let (lo, hi) = if circle {
-            let lo = if i == 0 { offsets[n - 1] - TAU } else { offsets[i - 1] };
-            let hi = if i + 1 == n { offsets[0] + TAU } else { offsets[i + 1] };
+            let lo = if i == 0 {
+                offsets[n - 1] - TAU
+            } else {
+                offsets[i - 1]
+            };
+            let hi = if i + 1 == n {
+                offsets[0] + TAU
+            } else {
+                offsets[i + 1]
+            };
             (lo, hi)
         } else {
             (offsets[i.saturating_sub(1)], offsets[(i + 1).min(n - 1)])
         };
-        let left = if circle { values[(i + n - 1) % n] } else { values[i.saturating_sub(1)] };
-        let right = if circle { values[(i + 1) % n] } else { values[(i + 1).min(n - 1)] };
+        let left = if circle {
+            values[(i + n - 1) % n]
+        } else {
+            values[i.saturating_sub(1)]
+        };
+        let right = if circle {
+            values[(i + 1) % n]
+        } else {
+            values[(i + 1).min(n - 1)]
+        };
         if values[i] <= left && values[i] <= right {
             minima.push((values[i], lo, hi));
         }

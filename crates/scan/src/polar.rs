@@ -97,7 +97,9 @@ impl StarPolygon {
             return Err(PolarError::TooFewVertices(vertices.len()));
         }
         if !(kernel.0.is_finite() && kernel.1.is_finite()) {
-            return Err(PolarError::NotFinite(format!("the kernel point {kernel:?}")));
+            return Err(PolarError::NotFinite(format!(
+                "the kernel point {kernel:?}"
+            )));
         }
         if let Some(i) = vertices
             .iter()
