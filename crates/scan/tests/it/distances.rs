@@ -641,7 +641,7 @@ fn hausdorff_distances_of_points_to_a_square() {
     let corners = square_ring(2.0);
     assert_eq!(directed_points_to_segments(&corners, &sq), Ok(0.0));
     let back = directed_segments_to_points(&sq, &corners, 1e-9).unwrap();
-    assert!(back <= 1.0 && back >= 1.0 - 1e-9, "{back}");
+    assert!((1.0 - 1e-9..=1.0).contains(&back), "{back}");
     let both = hausdorff_points_segments(&corners, &sq, 1e-9).unwrap();
     assert!(close(both, 1.0, 1e-9));
 }
@@ -663,10 +663,10 @@ fn segment_distances_find_the_interior_maximum() {
     let a = [[(0.0, 0.0), (2.0, 0.0)]];
     let tol = 1e-7;
     let r = directed_segments_to_points(&a, &[(0.0, 1.0), (2.0, 1.0)], tol).unwrap();
-    assert!(r <= SQRT_2 && r >= SQRT_2 - tol, "{r}");
+    assert!((SQRT_2 - tol..=SQRT_2).contains(&r), "{r}");
     let b = [[(0.0, 1.0), (0.0, 2.0)], [(2.0, 1.0), (2.0, 2.0)]];
     let r = directed_segments_to_segments(&a, &b, tol).unwrap();
-    assert!(r <= SQRT_2 && r >= SQRT_2 - tol, "{r}");
+    assert!((SQRT_2 - tol..=SQRT_2).contains(&r), "{r}");
     // Back: the farthest point of B is (0, 2) or (2, 2), at distance 2.
     let r = hausdorff_segments(&a, &b, tol).unwrap();
     assert!(close(r, 2.0, tol), "{r}");
