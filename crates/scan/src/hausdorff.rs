@@ -8,10 +8,11 @@
 //!   rounding of each point-to-segment distance): a finite max of finite
 //!   mins.
 //! - From a set of segments A, the sup runs over infinitely many points.
-//!   Along a segment of A, d(x) = dist(x, B) is 1-Lipschitz, so on a piece
-//!   of length ℓ with end values d₀, d₁ it is at most (d₀ + d₁ + ℓ)/2.
-//!   [`directed_segments_to_points`] and
-//!   [`directed_segments_to_segments`] bisect the pieces whose bound
+//!   Along a segment of A, d(x) = dist(x, B) = min_j d_j(x) is 1-Lipschitz
+//!   and each d_j (distance to one feature of B) is convex, so on a piece
+//!   of length ℓ with end values d₀, d₁ it is at most (d₀ + d₁ + ℓ)/2 and
+//!   at most min_j max(d_j at the ends). [`directed_segments_to_points`]
+//!   and [`directed_segments_to_segments`] bisect the pieces whose bound
 //!   exceeds the best value found by more than `tol`: the result r is an
 //!   attained value, so r ≤ δ→(A, B) ≤ r + tol (a certified bound, not a
 //!   sample).
@@ -127,10 +128,23 @@ pub fn directed_points_to_segments(a: &[Pt], b: &[Segment]) -> Result<f64, Hausd
     Ok(a.iter().map(|&p| to_segments(p, b)).fold(0.0, f64::max))
 }
 
-/// The largest value of the 1-Lipschitz `d` over the segments `a`, to
-/// within `tol` below (module docs): bisection with the bound
-/// (d₀ + d₁ + ℓ)/2 on each piece.
-fn sup_over_segments(a: &[Segment], d: impl Fn(Pt) -> f64, tol: f64) -> f64 {
+/// The largest value over the segments `a` of d(x) = min_j d_j(x), where
+/// each d_j (the distance to one point or segment of B) is convex and
+/// 1-Lipschitz, to within `tol` below (module docs). On a piece [p, q] of
+/// length ℓ, d is at most (d(p) + d(q) + ℓ)/2 (Lipschitz) and at most
+/// min_j max(d_j(p), d_j(q)) (each d_j is convex, so below its larger end
+/// value); a piece is bisected only while the smaller bound exceeds the
+/// best value found by more than `tol`. The convexity bound closes at
+/// once a piece whose two ends have the same nearest feature, so a flat
+/// stretch (a segment parallel to a wall) costs nothing; the bisection
+/// only chases the points where the nearest feature changes.
+fn sup_over_segments(a: &[Segment], nb: usize, dj: impl Fn(usize, Pt) -> f64, tol: f64) -> f64 {
+    let d = |x: Pt| (0..nb).map(|j| dj(j, x)).fold(f64::INFINITY, f64::min);
+    let convex_bound = |p: Pt, q: Pt| {
+        (0..nb)
+            .map(|j| dj(j, p).max(dj(j, q)))
+            .fold(f64::INFINITY, f64::min)
+    };
     let mut best: f64 = 0.0;
     // (start, end, d(start), d(end))
     let mut stack: Vec<(Pt, Pt, f64, f64)> = Vec::new();
@@ -140,7 +154,7 @@ fn sup_over_segments(a: &[Segment], d: impl Fn(Pt) -> f64, tol: f64) -> f64 {
         stack.push((s[0], s[1], d0, d1));
     }
     while let Some((p, q, d0, d1)) = stack.pop() {
-        if (d0 + d1 + dist(p, q)) / 2.0 <= best + tol {
+        if (d0 + d1 + dist(p, q)) / 2.0 <= best + tol || convex_bound(p, q) <= best + tol {
             continue;
         }
         let m = ((p.0 + q.0) / 2.0, (p.1 + q.1) / 2.0);
@@ -166,7 +180,7 @@ pub fn directed_segments_to_points(
     check_segments(a, "A")?;
     check_points(b, "B")?;
     check_tol(tol)?;
-    Ok(sup_over_segments(a, |p| to_points(p, b), tol))
+    Ok(sup_over_segments(a, b.len(), |j, p| dist(p, b[j]), tol))
 }
 
 /// Eq. 6.3 between unions of segments, to within `tol`: the result r
@@ -179,7 +193,12 @@ pub fn directed_segments_to_segments(
     check_segments(a, "A")?;
     check_segments(b, "B")?;
     check_tol(tol)?;
-    Ok(sup_over_segments(a, |p| to_segments(p, b), tol))
+    Ok(sup_over_segments(
+        a,
+        b.len(),
+        |j, p| point_segment_distance(p, &b[j]),
+        tol,
+    ))
 }
 
 /// Eq. 6.2 between a finite point set and a union of segments (scan

@@ -670,6 +670,11 @@ fn segment_distances_find_the_interior_maximum() {
     // Back: the farthest point of B is (0, 2) or (2, 2), at distance 2.
     let r = hausdorff_segments(&a, &b, tol).unwrap();
     assert!(close(r, 2.0, tol), "{r}");
+    // A wall parallel to the other: d is flat, 1 everywhere, and the
+    // convexity bound closes every piece at once even at a tiny tolerance.
+    let long = [[(0.0, 0.0), (1000.0, 0.0)]];
+    let parallel = [[(0.0, 1.0), (1000.0, 1.0)]];
+    assert_eq!(hausdorff_segments(&long, &parallel, 1e-12), Ok(1.0));
     // Against a dense sample of A on random segment sets.
     let mut rng = ChaCha8Rng::seed_from_u64(31);
     let seg = |rng: &mut ChaCha8Rng| {
