@@ -177,6 +177,9 @@ fn segment_integral(f: Shape, g: Shape, u: f64, v: f64) -> f64 {
 
 /// The squared integral norm of eq. 6.7 at rotation `t`.
 fn squared(p: &Pcf, q: &Pcf, t: f64) -> f64 {
+    if !t.is_finite() {
+        return f64::NAN;
+    }
     let a = rotated(p, t);
     let b = q.pieces();
     let (mut i, mut j, mut at, mut sum) = (0, 0, 0.0, 0.0);
@@ -191,12 +194,18 @@ fn squared(p: &Pcf, q: &Pcf, t: f64) -> f64 {
             j += 1;
         }
     }
-    sum.max(0.0)
+    // Not `max`, which would turn a NaN into 0.
+    if sum < 0.0 {
+        0.0
+    } else {
+        sum
+    }
 }
 
 /// Eq. 6.7: sqrt(∫₀^{2π} (pcf_P(φ − t) − pcf_Q(φ))² dφ), in closed form
 /// in O(m + n) — the PCM with an exact compass (heading t). `p` and `q`
 /// may be capped (eq. 6.8). The accuracy is stated in the module docs.
+/// A non-finite `t` gives NaN (as does a non-finite compass in [`pcm`]).
 pub fn pcm_fixed(p: &Pcf, q: &Pcf, t: f64) -> f64 {
     squared(p, q, t).sqrt()
 }

@@ -523,6 +523,13 @@ fn a_noisy_compass_lies_between_none_and_exact() {
         )
         .value;
         assert!(close(all, none, 1e-12));
+        // A heading that is not a number gives no distance, not 0.
+        assert!(pcm(&f, &g, &Compass::Exact(f64::NAN)).value.is_nan());
+        let nan = Compass::Noisy {
+            heading: f64::NAN,
+            eps: 0.1,
+        };
+        assert!(pcm(&f, &g, &nan).value.is_nan());
     }
 }
 
