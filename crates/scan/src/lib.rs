@@ -30,10 +30,13 @@
 pub mod coarsen;
 pub mod draw;
 pub mod eval;
+pub mod hausdorff;
 pub mod icp;
 mod localizer;
 pub mod mbt;
 mod obstacles;
+pub mod pcm;
+pub mod polar;
 pub mod peer;
 pub mod signature;
 pub mod sites;
