@@ -158,7 +158,7 @@ impl CompassMode {
             "exact" => Ok(CompassMode::Exact),
             "none" => Ok(CompassMode::None),
             _ => match text.strip_prefix("noisy:").map(str::parse::<f64>) {
-                Some(Ok(e)) if e.is_finite() && e >= 0.0 && e <= 180.0 => {
+                Some(Ok(e)) if (0.0..=180.0).contains(&e) => {
                     Ok(CompassMode::Noisy(e.to_radians()))
                 }
                 _ => Err(format!(

@@ -89,7 +89,10 @@ impl StarPolygon {
     /// kernel point does not strictly see (cross product of the two vertex
     /// vectors not > 0: on the edge's line, behind it, or a repeated
     /// vertex) and a boundary that does not wind exactly once around the
-    /// kernel point. These together make P simple and star-shaped with
+    /// kernel point. A *radial* edge — both ends on one ray from the
+    /// kernel point, pointing away from it, up to a relative 1e-9 — is
+    /// accepted: visibility polygons have them (spurious edges along
+    /// visibility rays), and the PCF jumps there (sec. 6.9). These together make P simple and star-shaped with
     /// p_K in the interior of ker P: the angle along the boundary then
     /// increases strictly through one turn, so each ray meets it once.
     pub fn new(kernel: Pt, vertices: Vec<Pt>) -> Result<StarPolygon, PolarError> {
@@ -126,9 +129,15 @@ impl StarPolygon {
         }
         for i in 0..n {
             let (a, b) = (rel(vertices[i]), rel(vertices[(i + 1) % n]));
+            if radial(a, b) {
+                continue;
+            }
             if cross(a, b).partial_cmp(&0.0) != Some(std::cmp::Ordering::Greater) {
                 return Err(PolarError::NotSeen { edge: i });
             }
+        }
+        if (0..n).all(|i| radial(rel(vertices[i]), rel(vertices[(i + 1) % n]))) {
+            return Err(PolarError::NotSeen { edge: 0 });
         }
         // Every edge subtends an angle in (0, π), so the sum is a whole
         // number of turns up to rounding.
@@ -206,8 +215,30 @@ impl StarPolygon {
     pub fn pcf(&self) -> Pcf {
         let n = self.vertices.len();
         let rel = |v: Pt| (v.0 - self.kernel.0, v.1 - self.kernel.1);
+        let is_radial = |i: usize| radial(rel(self.vertices[i]), rel(self.vertices[(i + 1) % n]));
+        // A radial edge (on a ray from p_K: a spurious edge of V_p, sec.
+        // 6.9's jump of the PCF) has no width: the edge after it starts at
+        // the angle where the edge before it ended, exactly.
+        let mut ang: Vec<f64> = self
+            .vertices
+            .iter()
+            .map(|&v| {
+                let a = rel(v);
+                normalise(a.1.atan2(a.0))
+            })
+            .collect();
+        let start = (0..n).find(|&i| !is_radial((i + n - 1) % n)).unwrap_or(0);
+        for k in 0..n {
+            let i = (start + k) % n;
+            if is_radial(i) {
+                ang[(i + 1) % n] = ang[i];
+            }
+        }
         let mut pieces = Vec::with_capacity(n + 1);
         for i in 0..n {
+            if is_radial(i) {
+                continue;
+            }
             let (a, b) = (rel(self.vertices[i]), rel(self.vertices[(i + 1) % n]));
             let e = (b.0 - a.0, b.1 - a.1);
             let len = e.0.hypot(e.1);
@@ -222,7 +253,7 @@ impl StarPolygon {
                 c,
                 alpha: normalise(FRAC_PI_2 - theta),
             };
-            let (from, to) = (normalise(a.1.atan2(a.0)), normalise(b.1.atan2(b.0)));
+            let (from, to) = (ang[i], ang[(i + 1) % n]);
             if to > from {
                 pieces.push(Piece { from, to, shape });
             } else {
@@ -382,4 +413,12 @@ impl Pcf {
         out.dedup();
         out
     }
+}
+
+/// Whether the edge from `a` to `b` (relative to the kernel point) lies on
+/// one ray from it: collinear up to a relative 1e-9, same direction, not a
+/// repeated vertex.
+fn radial(a: Pt, b: Pt) -> bool {
+    let (la, lb) = (a.0.hypot(a.1), b.0.hypot(b.1));
+    cross(a, b).abs() <= 1e-9 * la * lb && dot(a, b) > 0.0 && (la - lb).abs() > 1e-12 * la.max(lb)
 }

@@ -7,7 +7,7 @@
 //! range (eq. 6.8). The PCM of two signatures is the Riemann sum of eq. 6.7,
 //! sqrt(Σ_j w_j (a_j − b_j)² · 2π/N), with weights w_j ∈ {0, 1} that mask
 //! the angles a partial scan does not cover (sec. 6.10.4). The closed-form
-//! integral of [`crate::polar`] is the reference; sampling at the scan's own
+//! integral of [`crate::pcm`] is the reference (a test compares them); sampling at the scan's own
 //! resolution loses nothing the scan had.
 //!
 //! Rotations are whole steps of 2π/N: the minimum over rotations (no

@@ -567,7 +567,53 @@ fn the_summary_counts_what_it_is_given() {
     ] {
         assert!(j.get(key).is_some(), "{key}");
     }
-    assert_eq!(eval::quantile(&[], 0.5).is_nan(), true);
+    assert!(eval::quantile(&[], 0.5).is_nan());
     let svg = eval::cdf_svg("t <1>", "m", 1.0, &[("ours".into(), &s.position_errors)]);
     assert!(svg.starts_with("<svg") && svg.contains("t &lt;1&gt;") && svg.contains("polyline"));
+}
+
+#[test]
+fn the_sampled_pcm_agrees_with_the_closed_form_on_exact_visibility_polygons() {
+    // The localizer's signatures sample the PCF at 720 angles (signature.rs);
+    // eq. 6.7 in closed form (pcm.rs) on the exact V_p is the reference.
+    use wai_exact::RatPoint;
+    use wai_scan::pcm::pcm_fixed;
+    use wai_scan::polar::StarPolygon;
+    let (map, loc) = office();
+    let index = wai_visibility::VisibilityIndex::new(&map);
+    let plans = Plans::new(720);
+    let scale = map.scale().clone();
+    let pcf_at = |at: (f64, f64)| {
+        let exact = |v: f64| rug::Rational::from_f64(v).unwrap() * &scale;
+        let p = RatPoint::from_rationals(exact(at.0), exact(at.1));
+        let vp = index.visibility_polygon(&p).expect("an interior site");
+        let pts: Vec<(f64, f64)> = vp
+            .points()
+            .iter()
+            .map(|q| wai_scan::sites::to_f64(q, &scale))
+            .collect();
+        StarPolygon::new(at, pts)
+            .expect("V_p is star-shaped from p")
+            .pcf()
+    };
+    let sites: Vec<(f64, f64)> = loc.sites().iter().step_by(53).map(|s| s.at).collect();
+    let pcfs: Vec<_> = sites.iter().map(|&a| pcf_at(a)).collect();
+    let sigs: Vec<Signature> = sites
+        .iter()
+        .map(|&a| Signature::of_point(loc.walls(), a, f64::INFINITY, &plans))
+        .collect();
+    let mut pairs = 0;
+    let mut worst: f64 = 0.0;
+    for i in 0..sites.len() {
+        for j in (i + 1)..sites.len().min(i + 6) {
+            let exact = pcm_fixed(&pcfs[i], &pcfs[j], 0.0);
+            let sampled = sigs[i].distance(&sigs[j]);
+            let rel = (sampled - exact).abs() / exact.max(1e-9);
+            worst = worst.max(rel);
+            pairs += 1;
+        }
+    }
+    assert!(pairs >= 40, "{pairs}");
+    // Sampling a PCF with jumps at 0.5° steps: 0.9 % measured.
+    assert!(worst < 0.02, "worst relative difference {worst}");
 }
