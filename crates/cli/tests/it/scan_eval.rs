@@ -191,24 +191,22 @@ fn bad_scans_compasses_and_maps_are_refused_with_a_message() {
 #[test]
 fn an_evaluation_reports_every_key_row_plot_and_look_alike() {
     let dir = tmp("eval");
-    let out = wai(
-        &[
-            "eval",
-            "rooms:3",
-            "--poses",
-            "12",
-            "--seed",
-            "5",
-            "--compass",
-            "exact,noisy:10",
-            "--conditions",
-            "base,range10",
-            "--json",
-            "--out",
-            dir.to_str().unwrap(),
-        ],
-        b"",
-    );
+    let args = [
+        "eval",
+        "rooms:3",
+        "--poses",
+        "12",
+        "--seed",
+        "5",
+        "--compass",
+        "exact,noisy:10",
+        "--conditions",
+        "base,range10",
+        "--json",
+        "--out",
+        dir.to_str().unwrap(),
+    ];
+    let out = wai(&args, b"");
     assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
     let v: serde_json::Value = serde_json::from_slice(&out.stdout).expect("JSON");
     for key in [
@@ -241,24 +239,7 @@ fn an_evaluation_reports_every_key_row_plot_and_look_alike() {
     assert!(cdf.contains("polyline"));
     assert!(dir.join("eval.json").exists() && dir.join("cdf-all.svg").exists());
     // The same seed gives the same figures (times aside).
-    let again = wai(
-        &[
-            "eval",
-            "rooms:3",
-            "--poses",
-            "12",
-            "--seed",
-            "5",
-            "--compass",
-            "exact,noisy:10",
-            "--conditions",
-            "base,range10",
-            "--json",
-            "--out",
-            dir.to_str().unwrap(),
-        ],
-        b"",
-    );
+    let again = wai(&args, b"");
     let w: serde_json::Value = serde_json::from_slice(&again.stdout).expect("JSON");
     assert_eq!(w["success_rate"], v["success_rate"]);
     assert_eq!(
