@@ -72,7 +72,7 @@ impl Default for Options {
             samples: 720,
             max_range: None,
             candidates: 12,
-            lattice: Some(1.0),
+            lattice: Some(0.5),
             tau: 0.2,
             answer_ratio: 2.0,
             answer_slack: 4e-4,
@@ -373,79 +373,39 @@ impl ScanLocalizer {
     /// Localizes `scan`: ranks the cells, refines the best, and answers
     /// with the best pose and the set of poses as good.
     pub fn localize(&self, scan: &Scan, compass: &Compass, near: Option<Near>) -> ScanAnswer {
-        // Neighbouring sites (slivers along one ray, lattice points) rank
-        // alike and would send the refinement to one place several times:
-        // the candidates are the best sites at least `DIVERSE_METRES` or
-        // `DIVERSE_RADIANS` apart, drawn from a pool of `POOL` × as many.
-        let k = self.opts.candidates;
-        let (pool, evaluations) = self.rank(scan, compass, near, k.saturating_mul(POOL));
-        let mut ranked: Vec<RankedCell> = Vec::with_capacity(k);
-        for r in pool {
-            if ranked.len() == k {
-                break;
-            }
-            let at = self.sites[r.site].at;
-            let close = |q: &RankedCell| {
-                let b = self.sites[q.site].at;
-                (at.0 - b.0).hypot(at.1 - b.1) < DIVERSE_METRES
-                    && icp::wrap(r.heading - q.heading).abs() < DIVERSE_RADIANS
-            };
-            if !ranked.iter().any(close) {
-                ranked.push(r);
-            }
-        }
         let points = scan.points();
-        // Starts that the coarse stages take to one place are refined once.
         let mut landed: Vec<(Pose, usize)> = Vec::new();
-        for r in &ranked {
-            let c = self.sites[r.site].at;
-            let start = Pose {
-                x: c.0,
-                y: c.1,
-                heading: r.heading,
-            };
-            let pose = icp::coarse(&self.walls, &points, start, &self.opts.icp);
-            if !landed.iter().any(|(p, _)| same_landing(p, &pose)) {
-                landed.push((pose, r.site));
+        let (mut ranked, mut evaluations) = self.candidates(scan, compass, near);
+        self.land(&ranked, &points, &mut landed);
+        let mut hypotheses = self.refine(scan, &points, &landed);
+        // Beyond ROLOPRO: without an exact compass, the best refined pose
+        // knows the heading; ranking again at that heading (sharper: one
+        // rotation, eq. 6.7) finds the places a rotation search ranked
+        // too low — in a symmetric building, the look-alikes.
+        if !matches!(compass, Compass::Exact(_)) {
+            let best = hypotheses
+                .iter()
+                .map(|h| &h.hypothesis)
+                .min_by(|a, b| a.score.total_cmp(&b.score));
+            if let Some(heading) = best.map(|b| b.pose.heading) {
+                let (again, more) = self.candidates(scan, &Compass::Exact(heading), near);
+                evaluations += more;
+                let first = landed.len();
+                self.land(&again, &points, &mut landed);
+                let best_quick = hypotheses
+                    .iter()
+                    .map(|h| h.quick)
+                    .fold(f64::INFINITY, f64::min);
+                hypotheses.extend(
+                    self.refine(scan, &points, &landed[first..])
+                        .into_iter()
+                        .filter(|h| h.quick <= QUICK_RATIO * best_quick + QUICK_SLACK),
+                );
+                ranked.extend(again);
             }
         }
-        // A landing whose score on every `QUICK_STRIDE`-th beam is far
-        // worse than the best landing's cannot join the answer set: it is
-        // not refined further.
-        let quick: Vec<f64> = landed
-            .iter()
-            .map(|(p, _)| {
-                icp::score_strided(
-                    &self.walls,
-                    scan,
-                    p,
-                    self.opts.max_range,
-                    self.opts.tau,
-                    QUICK_STRIDE,
-                )
-            })
-            .collect();
-        let best_quick = quick.iter().copied().fold(f64::INFINITY, f64::min);
-        let keep = QUICK_RATIO * best_quick + QUICK_SLACK;
-        let mut hypotheses: Vec<Hypothesis> = landed
-            .into_iter()
-            .zip(quick)
-            .filter(|(_, q)| *q <= keep)
-            .map(|(l, _)| l)
-            .map(|(coarse, site)| {
-                let pose = icp::fine(&self.walls, &points, coarse, &self.opts.icp);
-                let score = if pose.x.is_finite() && pose.y.is_finite() {
-                    icp::score(&self.walls, scan, &pose, self.opts.max_range, self.opts.tau)
-                } else {
-                    f64::INFINITY
-                };
-                Hypothesis {
-                    pose,
-                    score,
-                    from_site: site,
-                }
-            })
-            .collect();
+        let mut hypotheses: Vec<Hypothesis> =
+            hypotheses.into_iter().map(|h| h.hypothesis).collect();
         hypotheses.sort_by(|a, b| {
             a.score
                 .total_cmp(&b.score)
@@ -469,6 +429,96 @@ impl ScanLocalizer {
         }
     }
 
+    /// The candidates under `compass`: neighbouring sites (slivers along
+    /// one ray, lattice points) rank alike and would send the refinement
+    /// to one place several times, so they are the best sites at least
+    /// `DIVERSE_METRES` or `DIVERSE_RADIANS` apart, drawn from a pool of
+    /// `POOL` × as many; and the PCM evaluations made.
+    fn candidates(
+        &self,
+        scan: &Scan,
+        compass: &Compass,
+        near: Option<Near>,
+    ) -> (Vec<RankedCell>, usize) {
+        let k = self.opts.candidates;
+        let (pool, evaluations) = self.rank(scan, compass, near, k.saturating_mul(POOL));
+        let mut ranked: Vec<RankedCell> = Vec::with_capacity(k);
+        for r in pool {
+            if ranked.len() == k {
+                break;
+            }
+            let at = self.sites[r.site].at;
+            let close = |q: &RankedCell| {
+                let b = self.sites[q.site].at;
+                (at.0 - b.0).hypot(at.1 - b.1) < DIVERSE_METRES
+                    && icp::wrap(r.heading - q.heading).abs() < DIVERSE_RADIANS
+            };
+            if !ranked.iter().any(close) {
+                ranked.push(r);
+            }
+        }
+        (ranked, evaluations)
+    }
+
+    /// The coarse ICP stages from each candidate; starts that land on a
+    /// place already in `landed` are refined once.
+    fn land(&self, ranked: &[RankedCell], points: &[(f64, f64)], landed: &mut Vec<(Pose, usize)>) {
+        for r in ranked {
+            let c = self.sites[r.site].at;
+            let start = Pose {
+                x: c.0,
+                y: c.1,
+                heading: r.heading,
+            };
+            let pose = icp::coarse(&self.walls, points, start, &self.opts.icp);
+            if !landed.iter().any(|(p, _)| same_landing(p, &pose)) {
+                landed.push((pose, r.site));
+            }
+        }
+    }
+
+    /// The fine ICP stage and the score of each landing whose quick score
+    /// (every `QUICK_STRIDE`-th beam) is not far worse than the best
+    /// landing's: the others cannot join the answer set.
+    fn refine(&self, scan: &Scan, points: &[(f64, f64)], landed: &[(Pose, usize)]) -> Vec<Refined> {
+        let quick: Vec<f64> = landed
+            .iter()
+            .map(|(p, _)| {
+                icp::score_strided(
+                    &self.walls,
+                    scan,
+                    p,
+                    self.opts.max_range,
+                    self.opts.tau,
+                    QUICK_STRIDE,
+                )
+            })
+            .collect();
+        let best_quick = quick.iter().copied().fold(f64::INFINITY, f64::min);
+        let keep = QUICK_RATIO * best_quick + QUICK_SLACK;
+        landed
+            .iter()
+            .zip(quick)
+            .filter(|(_, q)| *q <= keep)
+            .map(|(&(coarse, site), quick)| {
+                let pose = icp::fine(&self.walls, points, coarse, &self.opts.icp);
+                let score = if pose.x.is_finite() && pose.y.is_finite() {
+                    icp::score(&self.walls, scan, &pose, self.opts.max_range, self.opts.tau)
+                } else {
+                    f64::INFINITY
+                };
+                Refined {
+                    quick,
+                    hypothesis: Hypothesis {
+                        pose,
+                        score,
+                        from_site: site,
+                    },
+                }
+            })
+            .collect()
+    }
+
     /// [`ScanLocalizer::localize`] and the time it took, in milliseconds.
     pub fn localize_timed(
         &self,
@@ -480,6 +530,12 @@ impl ScanLocalizer {
         let a = self.localize(scan, compass, near);
         (a, t.elapsed().as_secs_f64() * 1e3)
     }
+}
+
+/// A refined landing and its quick score.
+struct Refined {
+    quick: f64,
+    hypothesis: Hypothesis,
 }
 
 /// Two coarse poses within 2 cm and 0.5° converge to one place.
