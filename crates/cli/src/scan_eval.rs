@@ -41,6 +41,10 @@ pub struct LocalizeArgs {
     /// within ±180/±90, 0.025 m per pixel for an R2V file, else metres.
     #[arg(long, default_value = "auto")]
     pub units: String,
+    /// A local query (sec. 6.10.4): only cells whose site lies within R
+    /// metres of X,Y.
+    #[arg(long, allow_hyphen_values = true, value_name = "X,Y,R")]
+    pub near: Option<String>,
     /// Print JSON instead of text.
     #[arg(long)]
     pub json: bool,
@@ -322,6 +326,25 @@ fn pose_json(p: &Pose) -> Value {
     json!({ "x": p.x, "y": p.y, "heading_degrees": p.heading.to_degrees() })
 }
 
+fn parse_near(text: &str) -> Result<wai_scan::Near, Failure> {
+    let v: Vec<f64> = text
+        .split(',')
+        .map(|s| s.trim().parse::<f64>())
+        .collect::<Result<_, _>>()
+        .map_err(|_| Failure::usage(format!("--near {text:?}: expected X,Y,R")))?;
+    match v[..] {
+        [x, y, r] if x.is_finite() && y.is_finite() && r.is_finite() && r > 0.0 => {
+            Ok(wai_scan::Near {
+                at: (x, y),
+                radius: r,
+            })
+        }
+        _ => Err(Failure::usage(format!(
+            "--near {text:?}: expected X,Y,R with R > 0"
+        ))),
+    }
+}
+
 pub fn localize_scan(args: &LocalizeArgs) -> Result<(), Failure> {
     let mode = CompassMode::parse(&args.compass).map_err(Failure::usage)?;
     let m = load_map(&args.map, &args.units)?;
@@ -346,7 +369,8 @@ pub fn localize_scan(args: &LocalizeArgs) -> Result<(), Failure> {
         },
     );
     let preprocess_s = t.elapsed().as_secs_f64();
-    let (answer, ms) = loc.localize_timed(&scan, &compass, None);
+    let near = args.near.as_deref().map(parse_near).transpose()?;
+    let (answer, ms) = loc.localize_timed(&scan, &compass, near);
     if let Some(path) = &args.svg {
         let svg = wai_scan::draw::answer_svg(loc.walls(), &scan, &answer, None, 800.0);
         std::fs::write(path, svg).map_err(|e| Failure::io(format!("{}: {e}", path.display())))?;

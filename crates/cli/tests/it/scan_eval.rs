@@ -94,6 +94,36 @@ fn a_scan_is_localized_back_to_its_pose_and_drawn() {
         let drawn = std::fs::read_to_string(&svg).unwrap();
         assert!(drawn.starts_with("<svg") && drawn.contains("<line"));
     }
+    // A local query around the truth finds it; a malformed one is refused.
+    let near = |at: &str| {
+        let out = wai(
+            &[
+                "localize-scan",
+                "office:2:3",
+                scan.to_str().unwrap(),
+                "--near",
+                at,
+                "--json",
+            ],
+            b"",
+        );
+        assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
+        let v: serde_json::Value = serde_json::from_slice(&out.stdout).expect("JSON");
+        pose_of(&v["best"]["pose"])
+    };
+    let (x, y, _) = near("3,-2,2");
+    assert!((x - 3.5).hypot(y + 2.5) < 0.1, "({x}, {y})");
+    let bad = wai(
+        &[
+            "localize-scan",
+            "office:2:3",
+            scan.to_str().unwrap(),
+            "--near",
+            "1,2",
+        ],
+        b"",
+    );
+    assert_eq!(bad.status.code(), Some(2));
     // The text answer names the pose too.
     let out = wai(
         &["localize-scan", "office:2:3", scan.to_str().unwrap()],
