@@ -824,6 +824,7 @@ pub fn eval(args: &EvalArgs) -> Result<(), Failure> {
             "rows": row_json,
             "cdf_svg": cdf_path.display().to_string(),
         }));
+        let mut counted: Vec<&str> = Vec::new();
         for r in rows {
             let label = format!("{} / {}", r.condition, r.compass);
             match overall_series.iter_mut().find(|(l, _)| *l == label) {
@@ -831,7 +832,11 @@ pub fn eval(args: &EvalArgs) -> Result<(), Failure> {
                 None => overall_series
                     .push((label, eval::summarise(&r.trials, &r.ours).position_errors)),
             }
-            for (name, outs) in &r.peers {
+            // Every compass row of a condition holds the same peer answers
+            // (peers use no compass): count them once.
+            let first_of_condition = !counted.contains(&r.condition);
+            counted.push(r.condition);
+            for (name, outs) in r.peers.iter().filter(|_| first_of_condition) {
                 let n = outs.len();
                 match all_peers.iter_mut().find(|(p, ..)| p == name) {
                     Some((_, ts, os)) => {

@@ -277,3 +277,47 @@ fn an_evaluation_reports_every_key_row_plot_and_look_alike() {
         v["maps"][0]["rows"][1]["look_alikes"]
     );
 }
+
+#[test]
+fn karto_runs_side_by_side_on_the_same_scans() {
+    // Needs scripts/install-karto (the bootstrap runs it): fails, not
+    // skips, without it.
+    let dir = tmp("karto");
+    let out = wai(
+        &[
+            "eval",
+            "rooms:1",
+            "--poses",
+            "2",
+            "--compass",
+            "exact,none",
+            "--conditions",
+            "base",
+            "--peer",
+            "karto:0.1",
+            "--peer-poses",
+            "1",
+            "--json",
+            "--out",
+            dir.to_str().unwrap(),
+        ],
+        b"",
+    );
+    assert_eq!(
+        out.status.code(),
+        Some(0),
+        "is karto installed (scripts/install-karto)? {}",
+        text(&out.stderr)
+    );
+    let v: serde_json::Value = serde_json::from_slice(&out.stdout).expect("JSON");
+    let peer = &v["peers"][0];
+    assert_eq!(peer["name"], "karto:0.1");
+    // One scan, shared by both compass rows, counted once.
+    assert_eq!(peer["queries"], 1, "{v}");
+    for row in v["maps"][0]["rows"].as_array().unwrap() {
+        let p = &row["peers"][0];
+        assert_eq!(p["queries"], 1);
+        assert!(p["median_ms"].as_f64().unwrap() > 0.0);
+        assert_eq!(p["ours_on_the_same_queries"]["queries"], 1);
+    }
+}
