@@ -40,11 +40,6 @@ impl Default for IcpOptions {
     }
 }
 
-/// The scan's returns as points in the robot frame.
-pub fn robot_points(scan: &Scan) -> Vec<(f64, f64)> {
-    scan.points()
-}
-
 /// Refine `start` so that the robot-frame `points` lie on the walls:
 /// [`coarse`], then [`fine`].
 pub fn refine(walls: &Walls, points: &[(f64, f64)], start: Pose, opts: &IcpOptions) -> Pose {

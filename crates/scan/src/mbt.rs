@@ -252,7 +252,6 @@ impl Mbt {
         &self.nodes
     }
 
-    /// How many times building called `D`.
     /// The tree with a wider relative pruning slack, for a query distance
     /// that is itself computed with a known relative error (the localizer's
     /// FFT rotation search in `f32`).
@@ -261,6 +260,7 @@ impl Mbt {
         self
     }
 
+    /// How many times building called `D`.
     pub fn build_evaluations(&self) -> usize {
         self.build_evaluations
     }
