@@ -7,6 +7,7 @@
 //! pose that scores as well within a tolerance, so that a building of
 //! identical rooms answers with each look-alike place.
 
+use std::collections::HashMap;
 use std::time::Instant;
 
 use wai_cells::Decomposition;
@@ -134,7 +135,8 @@ pub struct Hypothesis {
 #[derive(Debug, Clone, PartialEq)]
 pub struct ScanAnswer {
     /// The candidates: the best sites by PCM, best first, at least
-    /// 0.5 m or 5° apart.
+    /// 0.5 m or 5° apart; without an exact compass followed by those of the
+    /// second ranking, at the best refined pose's heading.
     pub ranked: Vec<RankedCell>,
     /// The best refined pose.
     pub best: Option<Hypothesis>,
@@ -286,15 +288,20 @@ impl ScanLocalizer {
             if near.is_some() {
                 return self.rank_all(&s, &eligible, compass, k);
             }
-            let (found, stats) = self
-                .tree
-                .k_nearest_with_stats(k, |i| s.pcm(&self.signatures[i], compass, &self.plans).0);
+            // The rotation search gives the heading with the PCM: keep it
+            // for the sites that end up ranked.
+            let mut headings: HashMap<usize, f64> = HashMap::new();
+            let (found, stats) = self.tree.k_nearest_with_stats(k, |i| {
+                let r = self.ranked_cell(&s, i, compass);
+                headings.insert(i, r.heading);
+                r.pcm
+            });
             let ranked = found
                 .into_iter()
                 .map(|nb| RankedCell {
                     site: nb.item,
                     pcm: nb.distance,
-                    heading: s.pcm(&self.signatures[nb.item], compass, &self.plans).1,
+                    heading: headings[&nb.item],
                 })
                 .collect();
             return (ranked, stats.evaluations);
@@ -309,13 +316,9 @@ impl ScanLocalizer {
                     break;
                 }
             }
-            let (pcm, heading) = s.pcm(&self.signatures[i], compass, &self.plans);
+            let cell = self.ranked_cell(&s, i, compass);
             evaluations += 1;
-            let cell = RankedCell {
-                site: i,
-                pcm,
-                heading,
-            };
+            let pcm = cell.pcm;
             let at = best.partition_point(|c| c.pcm < pcm || (c.pcm == pcm && c.site < i));
             if at < k {
                 best.insert(at, cell);
@@ -337,6 +340,17 @@ impl ScanLocalizer {
         self.rank_all(&s, &self.eligible(near), compass, k)
     }
 
+    /// Site `i` with its PCM to the scan `s` under `compass` and the
+    /// heading that PCM gives.
+    fn ranked_cell(&self, s: &ScanSignature, i: usize, compass: &Compass) -> RankedCell {
+        let (pcm, heading) = s.pcm(&self.signatures[i], compass, &self.plans);
+        RankedCell {
+            site: i,
+            pcm,
+            heading,
+        }
+    }
+
     fn eligible(&self, near: Option<Near>) -> Vec<usize> {
         (0..self.sites.len())
             .filter(|&i| {
@@ -355,14 +369,7 @@ impl ScanLocalizer {
     ) -> (Vec<RankedCell>, usize) {
         let mut ranked: Vec<RankedCell> = eligible
             .iter()
-            .map(|&i| {
-                let (pcm, heading) = s.pcm(&self.signatures[i], compass, &self.plans);
-                RankedCell {
-                    site: i,
-                    pcm,
-                    heading,
-                }
-            })
+            .map(|&i| self.ranked_cell(s, i, compass))
             .collect();
         let evaluations = ranked.len();
         ranked.sort_by(|a, b| a.pcm.total_cmp(&b.pcm).then(a.site.cmp(&b.site)));
@@ -377,35 +384,22 @@ impl ScanLocalizer {
         let mut landed: Vec<(Pose, usize)> = Vec::new();
         let (mut ranked, mut evaluations) = self.candidates(scan, compass, near);
         self.land(&ranked, &points, &mut landed);
-        let mut hypotheses = self.refine(scan, &points, &landed);
+        let (mut hypotheses, best_quick) = self.refine(scan, &points, &landed, f64::INFINITY);
         // Beyond ROLOPRO: without an exact compass, the best refined pose
         // knows the heading; ranking again at that heading (sharper: one
         // rotation, eq. 6.7) finds the places a rotation search ranked
         // too low — in a symmetric building, the look-alikes.
         if !matches!(compass, Compass::Exact(_)) {
-            let best = hypotheses
-                .iter()
-                .map(|h| &h.hypothesis)
-                .min_by(|a, b| a.score.total_cmp(&b.score));
+            let best = hypotheses.iter().min_by(|a, b| a.score.total_cmp(&b.score));
             if let Some(heading) = best.map(|b| b.pose.heading) {
                 let (again, more) = self.candidates(scan, &Compass::Exact(heading), near);
                 evaluations += more;
                 let first = landed.len();
                 self.land(&again, &points, &mut landed);
-                let best_quick = hypotheses
-                    .iter()
-                    .map(|h| h.quick)
-                    .fold(f64::INFINITY, f64::min);
-                hypotheses.extend(
-                    self.refine(scan, &points, &landed[first..])
-                        .into_iter()
-                        .filter(|h| h.quick <= QUICK_RATIO * best_quick + QUICK_SLACK),
-                );
+                hypotheses.extend(self.refine(scan, &points, &landed[first..], best_quick).0);
                 ranked.extend(again);
             }
         }
-        let mut hypotheses: Vec<Hypothesis> =
-            hypotheses.into_iter().map(|h| h.hypothesis).collect();
         hypotheses.sort_by(|a, b| {
             a.score
                 .total_cmp(&b.score)
@@ -478,9 +472,17 @@ impl ScanLocalizer {
     }
 
     /// The fine ICP stage and the score of each landing whose quick score
-    /// (every `QUICK_STRIDE`-th beam) is not far worse than the best
-    /// landing's: the others cannot join the answer set.
-    fn refine(&self, scan: &Scan, points: &[(f64, f64)], landed: &[(Pose, usize)]) -> Vec<Refined> {
+    /// (every `QUICK_STRIDE`-th beam) is not far worse than the best of
+    /// these landings' and `floor` (the best quick score of an earlier
+    /// pass): the others cannot join the answer set. Also the best quick
+    /// score, `floor` included.
+    fn refine(
+        &self,
+        scan: &Scan,
+        points: &[(f64, f64)],
+        landed: &[(Pose, usize)],
+        floor: f64,
+    ) -> (Vec<Hypothesis>, f64) {
         let quick: Vec<f64> = landed
             .iter()
             .map(|(p, _)| {
@@ -494,29 +496,27 @@ impl ScanLocalizer {
                 )
             })
             .collect();
-        let best_quick = quick.iter().copied().fold(f64::INFINITY, f64::min);
+        let best_quick = quick.iter().copied().fold(floor, f64::min);
         let keep = QUICK_RATIO * best_quick + QUICK_SLACK;
-        landed
+        let hypotheses = landed
             .iter()
             .zip(quick)
             .filter(|(_, q)| *q <= keep)
-            .map(|(&(coarse, site), quick)| {
+            .map(|(&(coarse, site), _)| {
                 let pose = icp::fine(&self.walls, points, coarse, &self.opts.icp);
                 let score = if pose.x.is_finite() && pose.y.is_finite() {
                     icp::score(&self.walls, scan, &pose, self.opts.max_range, self.opts.tau)
                 } else {
                     f64::INFINITY
                 };
-                Refined {
-                    quick,
-                    hypothesis: Hypothesis {
-                        pose,
-                        score,
-                        from_site: site,
-                    },
+                Hypothesis {
+                    pose,
+                    score,
+                    from_site: site,
                 }
             })
-            .collect()
+            .collect();
+        (hypotheses, best_quick)
     }
 
     /// [`ScanLocalizer::localize`] and the time it took, in milliseconds.
@@ -530,12 +530,6 @@ impl ScanLocalizer {
         let a = self.localize(scan, compass, near);
         (a, t.elapsed().as_secs_f64() * 1e3)
     }
-}
-
-/// A refined landing and its quick score.
-struct Refined {
-    quick: f64,
-    hypothesis: Hypothesis,
 }
 
 /// Two coarse poses within 2 cm and 0.5° converge to one place.
