@@ -135,6 +135,6 @@ pub fn scan(args: &Args) -> Result<(), Failure> {
     }
 }
 
-fn write(path: &Path, text: &str) -> Result<(), Failure> {
+pub(crate) fn write(path: &Path, text: &str) -> Result<(), Failure> {
     std::fs::write(path, text).map_err(|e| Failure::io(format!("{}: {e}", path.display())))
 }

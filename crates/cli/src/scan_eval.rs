@@ -373,7 +373,7 @@ pub fn localize_scan(args: &LocalizeArgs) -> Result<(), Failure> {
     let (answer, ms) = loc.localize_timed(&scan, &compass, near);
     if let Some(path) = &args.svg {
         let svg = wai_scan::draw::answer_svg(loc.walls(), &scan, &answer, None, 800.0);
-        std::fs::write(path, svg).map_err(|e| Failure::io(format!("{}: {e}", path.display())))?;
+        crate::scan::write(path, &svg)?;
     }
     let cell_of = |site: usize| loc.sites()[site].cell;
     if args.json {
@@ -667,17 +667,14 @@ pub fn eval(args: &EvalArgs) -> Result<(), Failure> {
                 (Some(l), Some(_)) => l,
                 _ => &full,
             };
+            // The scans of this condition, simulated once: every compass
+            // row and every peer gets the same ones.
+            let scans = eval::trials(&m.map, &poses, c, CompassMode::None, args.seed)
+                .map_err(|e| Failure::invalid(format!("{}: {e}", m.name)))?;
             let mut peer_outcomes: Vec<(String, Vec<Outcome>)> = Vec::new();
             let peers_here = peer_conds.iter().any(|p| p.name == c.name);
             for peer in peers.iter_mut().filter(|_| peers_here) {
-                let trials = eval::trials(
-                    &m.map,
-                    &poses[..args.peer_poses.min(poses.len())],
-                    c,
-                    CompassMode::None,
-                    args.seed,
-                )
-                .map_err(|e| Failure::invalid(format!("{}: {e}", m.name)))?;
+                let trials = &scans[..args.peer_poses.min(scans.len())];
                 let mut outs = Vec::with_capacity(trials.len());
                 for (i, t) in trials.iter().enumerate() {
                     bar.set_message(format!(
@@ -695,8 +692,7 @@ pub fn eval(args: &EvalArgs) -> Result<(), Failure> {
                 peer_outcomes.push((peer.name(), outs));
             }
             for mode in &modes {
-                let trials = eval::trials(&m.map, &poses, c, *mode, args.seed)
-                    .map_err(|e| Failure::invalid(format!("{}: {e}", m.name)))?;
+                let trials = eval::with_compass(&scans, *mode, args.seed);
                 bar.set_message(format!("{}: {}, compass {}", m.name, c.name, mode.label()));
                 let ours: Vec<Outcome> = trials
                     .iter()
@@ -727,11 +723,14 @@ pub fn eval(args: &EvalArgs) -> Result<(), Failure> {
             }
         }
         bar.finish_and_clear();
+        let summaries: Vec<Summary> = rows
+            .iter()
+            .map(|r| eval::summarise(&r.trials, &r.ours))
+            .collect();
         // The error CDF of this map: ours per row, each peer per condition.
         let mut series: Vec<(String, Vec<f64>)> = Vec::new();
         let mut row_json = Vec::new();
-        for r in &rows {
-            let s = eval::summarise(&r.trials, &r.ours);
+        for (r, s) in rows.iter().zip(&summaries) {
             series.push((
                 format!("{} / {}", r.condition, r.compass),
                 s.position_errors.clone(),
@@ -807,10 +806,9 @@ pub fn eval(args: &EvalArgs) -> Result<(), Failure> {
                 .map(|(l, v)| (l.clone(), v.as_slice()))
                 .collect::<Vec<_>>(),
         );
-        std::fs::write(&cdf_path, svg)
-            .map_err(|e| Failure::io(format!("{}: {e}", cdf_path.display())))?;
+        crate::scan::write(&cdf_path, &svg)?;
         if !args.json {
-            print_table(m, &full, preprocess_s, &rows, &cdf_path);
+            print_table(m, &full, preprocess_s, &rows, &summaries, &cdf_path);
         }
         map_reports.push(json!({
             "map": m.name,
@@ -825,12 +823,11 @@ pub fn eval(args: &EvalArgs) -> Result<(), Failure> {
             "cdf_svg": cdf_path.display().to_string(),
         }));
         let mut counted: Vec<&str> = Vec::new();
-        for r in rows {
+        for (r, summary) in rows.into_iter().zip(summaries) {
             let label = format!("{} / {}", r.condition, r.compass);
             match overall_series.iter_mut().find(|(l, _)| *l == label) {
-                Some((_, v)) => v.extend(eval::summarise(&r.trials, &r.ours).position_errors),
-                None => overall_series
-                    .push((label, eval::summarise(&r.trials, &r.ours).position_errors)),
+                Some((_, v)) => v.extend(summary.position_errors),
+                None => overall_series.push((label, summary.position_errors)),
             }
             // Every compass row of a condition holds the same peer answers
             // (peers use no compass): count them once.
@@ -868,8 +865,7 @@ pub fn eval(args: &EvalArgs) -> Result<(), Failure> {
             .map(|(l, v)| (l.clone(), v.as_slice()))
             .collect::<Vec<_>>(),
     );
-    std::fs::write(&cdf_all, svg)
-        .map_err(|e| Failure::io(format!("{}: {e}", cdf_all.display())))?;
+    crate::scan::write(&cdf_all, &svg)?;
     let overall: Summary = eval::summarise(&all_trials, &all_ours);
     let mut report = overall.to_json();
     report["seed"] = json!(args.seed);
@@ -888,8 +884,7 @@ pub fn eval(args: &EvalArgs) -> Result<(), Failure> {
     report["cdf_svg"] = json!(cdf_all.display().to_string());
     let text = serde_json::to_string_pretty(&report).expect("plain JSON") + "\n";
     let json_path = args.out.join("eval.json");
-    std::fs::write(&json_path, &text)
-        .map_err(|e| Failure::io(format!("{}: {e}", json_path.display())))?;
+    crate::scan::write(&json_path, &text)?;
     if args.json {
         print!("{text}");
     } else {
@@ -919,7 +914,14 @@ pub fn eval(args: &EvalArgs) -> Result<(), Failure> {
     Ok(())
 }
 
-fn print_table(m: &EvalMap, loc: &ScanLocalizer, preprocess_s: f64, rows: &[Row], cdf: &Path) {
+fn print_table(
+    m: &EvalMap,
+    loc: &ScanLocalizer,
+    preprocess_s: f64,
+    rows: &[Row],
+    summaries: &[Summary],
+    cdf: &Path,
+) {
     println!(
         "\n{} ({}, units {}): n = {}, {} cells, {} sites, preprocessed in {preprocess_s:.2} s; {} poses",
         m.name,
@@ -957,12 +959,8 @@ fn print_table(m: &EvalMap, loc: &ScanLocalizer, preprocess_s: f64, rows: &[Row]
         );
     };
     let mut shown_peers: Vec<String> = Vec::new();
-    for r in rows {
-        line(
-            r.condition,
-            &format!("ours/{}", r.compass),
-            &eval::summarise(&r.trials, &r.ours),
-        );
+    for (r, s) in rows.iter().zip(summaries) {
+        line(r.condition, &format!("ours/{}", r.compass), s);
         for (name, outs) in &r.peers {
             let key = format!("{name}/{}", r.condition);
             if shown_peers.contains(&key) {

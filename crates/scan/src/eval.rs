@@ -218,19 +218,44 @@ pub fn trials(
         .iter()
         .enumerate()
         .map(|(i, p)| {
-            let s = seed ^ (i as u64).wrapping_mul(0x9E37_79B9_7F4A_7C15);
+            let s = trial_seed(seed, i);
             let obstacles =
                 crate::random_obstacles(map, p, condition.obstacles, condition.obstacle_side, s);
             let scan = crate::simulate(map, &obstacles, p, &condition.sensor, s)?;
-            let mut rng = ChaCha8Rng::seed_from_u64(s.rotate_left(17));
             Ok(Trial {
                 truth: *p,
                 obstacles,
                 scan,
-                compass: compass.reading(p.heading, &mut rng),
+                compass: compass_reading(compass, p.heading, s),
             })
         })
         .collect()
+}
+
+/// `trials` (made by [`trials`] with `seed`) with the readings of another
+/// compass: the same as [`trials`] with `compass` would give, without
+/// simulating the scans again.
+pub fn with_compass(trials: &[Trial], compass: CompassMode, seed: u64) -> Vec<Trial> {
+    trials
+        .iter()
+        .enumerate()
+        .map(|(i, t)| Trial {
+            compass: compass_reading(compass, t.truth.heading, trial_seed(seed, i)),
+            ..t.clone()
+        })
+        .collect()
+}
+
+/// The seed of trial `i` of a run seeded with `seed`.
+fn trial_seed(seed: u64, i: usize) -> u64 {
+    seed ^ (i as u64).wrapping_mul(0x9E37_79B9_7F4A_7C15)
+}
+
+/// The compass reading of a trial seeded with `s`, drawn apart from its
+/// scan's noise.
+fn compass_reading(compass: CompassMode, heading: f64, s: u64) -> crate::Compass {
+    let mut rng = ChaCha8Rng::seed_from_u64(s.rotate_left(17));
+    compass.reading(heading, &mut rng)
 }
 
 /// A localizer's answer to one trial.

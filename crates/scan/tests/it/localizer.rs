@@ -475,6 +475,18 @@ fn trials_are_seeded_and_the_same_scans_for_every_compass() {
             other => panic!("{other:?}"),
         }
     }
+    // Another compass's readings without simulating again: the same trials.
+    for (from, to) in [(&a, &n), (&n, &b), (&b, &a)] {
+        let mode = match to[0].compass {
+            Compass::Exact(_) => CompassMode::Exact,
+            Compass::None => CompassMode::None,
+            Compass::Noisy { .. } => CompassMode::Noisy(0.1),
+        };
+        let swapped = eval::with_compass(from, mode, 3);
+        for (x, y) in swapped.iter().zip(to) {
+            assert_eq!((x.truth, &x.scan, x.compass), (y.truth, &y.scan, y.compass));
+        }
+    }
     let again = eval::trials(&map, &poses[..2], c, CompassMode::Exact, 3).unwrap();
     assert_eq!(
         again[1].scan, a[1].scan,
