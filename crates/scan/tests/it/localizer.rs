@@ -18,19 +18,7 @@ use wai_scan::walls::Walls;
 use wai_scan::{icp, simulate, Compass, Near, Options, Pose, ScanLocalizer, Sensor};
 
 fn walls_of(map: &Map) -> Walls {
-    let s = map.scale().to_f64();
-    let v = map.vertices();
-    Walls::new(
-        (0..v.len())
-            .map(|i| {
-                let (a, b) = (v[i], v[(i + 1) % v.len()]);
-                [
-                    (a.x as f64 / s, a.y as f64 / s),
-                    (b.x as f64 / s, b.y as f64 / s),
-                ]
-            })
-            .collect(),
-    )
+    Walls::new(wai_scan::peer::map_walls(map))
 }
 
 fn noisy() -> Sensor {
