@@ -47,6 +47,8 @@ pub struct Signature {
     spectrum: Vec<Complex<f32>>,
     spectrum_sq: Vec<Complex<f32>>,
     magnitudes: Vec<f64>,
+    /// Σ_j V_j², in `f64`.
+    energy: f64,
 }
 
 /// Low frequencies whose magnitudes give the rotation-free lower bound.
@@ -122,6 +124,7 @@ impl Signature {
         let spectrum_sq = plans.fft(values.iter().map(|v| v * v));
         Signature {
             magnitudes: magnitudes(&spectrum),
+            energy: values.iter().map(|x| f64::from(*x).powi(2)).sum(),
             values,
             spectrum,
             spectrum_sq,
@@ -279,24 +282,25 @@ impl ScanSignature {
             .zip(&v.spectrum)
             .map(|(a, b)| a.conj() * b)
             .collect();
-        let mut sq: Vec<Complex<f32>> = self
-            .mask_spectrum
-            .iter()
-            .zip(&v.spectrum_sq)
-            .map(|(a, b)| a.conj() * b)
-            .collect();
         plans.inverse.process(&mut cross);
-        // A full scan has w ≡ 1: (w ⋆ V²)(s) = Σ V² whatever s.
-        let v_energy = if self.full {
-            v.values.iter().map(|x| f64::from(*x).powi(2)).sum::<f64>()
+        // A full scan has w ≡ 1: (w ⋆ V²)(s) = Σ V² whatever s; only a
+        // masked one needs the second correlation.
+        let sq: Vec<Complex<f32>> = if self.full {
+            Vec::new()
         } else {
+            let mut sq: Vec<Complex<f32>> = self
+                .mask_spectrum
+                .iter()
+                .zip(&v.spectrum_sq)
+                .map(|(a, b)| a.conj() * b)
+                .collect();
             plans.inverse.process(&mut sq);
-            0.0
+            sq
         };
         let scale = 1.0 / n as f64;
         let value = |s: usize| {
             let v2 = if self.full {
-                v_energy
+                v.energy
             } else {
                 f64::from(sq[s].re) * scale
             };
