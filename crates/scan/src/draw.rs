@@ -16,16 +16,7 @@ pub fn answer_svg(
     size: f64,
 ) -> String {
     let segs = walls.segments();
-    let (mut lo, mut hi) = (
-        (f64::INFINITY, f64::INFINITY),
-        (f64::NEG_INFINITY, f64::NEG_INFINITY),
-    );
-    for s in segs {
-        for p in s {
-            lo = (lo.0.min(p.0), lo.1.min(p.1));
-            hi = (hi.0.max(p.0), hi.1.max(p.1));
-        }
-    }
+    let (lo, hi) = walls.bounds();
     let span = (hi.0 - lo.0).max(hi.1 - lo.1).max(1e-9);
     let k = size / span;
     let margin = 10.0;

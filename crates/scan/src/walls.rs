@@ -26,7 +26,10 @@ pub struct Nearest {
 #[derive(Debug, Clone)]
 pub struct Walls {
     segments: Vec<Segment>,
+    /// The lower left corner of the walls' bounding box: the grid's origin.
     origin: (f64, f64),
+    /// The upper right corner of the walls' bounding box.
+    top: (f64, f64),
     cell: f64,
     cols: usize,
     rows: usize,
@@ -59,6 +62,7 @@ impl Walls {
         let mut walls = Walls {
             segments,
             origin: lo,
+            top: hi,
             cell,
             cols,
             rows,
@@ -79,6 +83,12 @@ impl Walls {
     /// The walls, in the order given.
     pub fn segments(&self) -> &[Segment] {
         &self.segments
+    }
+
+    /// The walls' bounding box, lower left and upper right corners (the
+    /// unit square when there are none).
+    pub fn bounds(&self) -> ((f64, f64), (f64, f64)) {
+        (self.origin, self.top)
     }
 
     fn cell_of(&self, p: (f64, f64)) -> (usize, usize) {
