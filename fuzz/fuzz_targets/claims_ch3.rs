@@ -1,9 +1,9 @@
 //! Bytes → a small valid map (`wai_gen::bytes`) → every checker of a
 //! chapter 3 claim (`wai_lemmas::checkers_of_chapter(3)`, through
-//! `wai_lemmas::run`).
+//! `wai_hunt::run`).
 //!
 //! Law: no violation other than the known failures
-//! (`wai_lemmas::is_known_failure`). A violation writes its replay file to
+//! (declared by its checker). A violation writes its replay file to
 //! `fuzz/artifacts/replay/` and panics naming the claim (`wai_fuzz::check_claims`).
 //! With `WAI_PLANT=<name>` the planted checker of that name replaces the
 //! real one of its claim when the claim is of chapter 3.

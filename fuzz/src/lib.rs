@@ -1,7 +1,6 @@
 //! What the fuzz targets share: the claims check of one chapter on a map
 //! built from bytes, with the planted bug of `WAI_PLANT` swapped in, and
-//! the replay file written before a violation panics (issue 11, "cargo fuzz
-//! over every claim").
+//! the replay file written before a violation panics.
 //!
 //! The maps come from [`wai_gen::bytes::map_from_bytes`]: valid by
 //! construction and small, so every checker runs on every input; a target
@@ -15,8 +14,8 @@ use std::path::PathBuf;
 use std::sync::{Once, OnceLock};
 
 use arbitrary::Unstructured;
-use wai_lemmas::driver::FoundViolation;
-use wai_lemmas::{chapter_of, planted, Checker};
+use wai_hunt::FoundViolation;
+use wai_lemmas::{planted, Checker};
 use wai_map::Map;
 
 /// One thread for rayon's global pool: libFuzzer runs one input at a time,
@@ -62,28 +61,24 @@ pub fn planted_name() -> Option<&'static str> {
 /// The checkers of every claim of `chapter`, with the planted checker of
 /// `WAI_PLANT` instead of the real one of its claim when its claim is of
 /// this chapter.
-pub fn checkers(chapter: u8) -> Vec<Box<dyn Checker>> {
-    let of_chapter = wai_lemmas::makers().filter(|(id, _)| chapter_of(id) == Some(chapter));
-    planted::swap_in(of_chapter, planted_name().and_then(planted::maker))
-        .map(|(_, make)| make())
-        .collect()
+pub fn checkers(chapter: u8) -> Vec<Checker> {
+    let of_chapter = wai_lemmas::checkers_of_chapter(chapter).into_iter();
+    planted::swap_in(of_chapter, planted_name().and_then(planted::checker)).collect()
 }
 
 /// Runs every checker of `chapter` (see [`checkers`]) on the map of
 /// `data`.
 ///
 /// # Panics
-/// On a violation that is not a known failure
-/// ([`wai_lemmas::is_known_failure`]), after writing its replay file
+/// On a violation that is not one of its checker's known failures, after
+/// writing its replay file
 /// ([`write_replay`]); the message names the claim, what broke, the map
 /// and the replay command.
 pub fn check_claims(chapter: u8, data: &[u8]) {
     init();
     let Some((map, _)) = map_of(data) else { return };
-    let checkers = checkers(chapter);
-    let refs: Vec<&dyn Checker> = checkers.iter().map(|c| c.as_ref()).collect();
-    let summary = wai_lemmas::run(&refs, [&map]);
-    let Some(v) = summary.violations().find(|v| !v.is_known_failure()) else {
+    let summary = wai_hunt::run(&checkers(chapter), [&map]);
+    let Some(v) = summary.counterexamples().next() else {
         return;
     };
     let target = format!("claims_ch{chapter}");
@@ -111,7 +106,7 @@ pub fn replay_dir() -> PathBuf {
 }
 
 /// The replay file of a violation, in the format of `counterexamples/`
-/// (its README, written by [`wai_lemmas::counterexample::file_text`]): the
+/// (its README, written by [`wai_hunt::counterexample::file_text`]): the
 /// map with `claim`, `kind: "violation"`, a `note` saying it is not known
 /// yet whether the thesis or our code is wrong, a `source` naming the
 /// target, and the checker's data under `meta`.
@@ -127,7 +122,7 @@ pub fn replay_json(v: &FoundViolation, target: &str) -> String {
         "data": v.violation.data,
         "check": { "planted": planted_name(), "target": target },
     });
-    wai_lemmas::counterexample::file_text(
+    wai_hunt::counterexample::file_text(
         &map,
         map_name,
         &format!("cargo fuzz target {target}, map {map_name}"),

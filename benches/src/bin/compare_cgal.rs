@@ -19,11 +19,11 @@
 //!   seeds 1, 2, …;
 //! - the thesis families of [`wai_gen::FAMILIES`] with the 4 least accepted
 //!   values of their one parameter, whose figure viewpoints
-//!   [`wai_lemmas::sample::viewpoints`] puts first;
+//!   [`wai_study::sample::viewpoints`] puts first;
 //! - every map of `agplib/{simple,ortho,vonkoch}` and `r2v` under the
 //!   datasets directory (`<repo>/../shared/datasets`, or `--datasets DIR`).
 //!
-//! Viewpoints per map: 4 of [`wai_lemmas::sample::viewpoints`] (midpoints of
+//! Viewpoints per map: 4 of [`wai_study::sample::viewpoints`] (midpoints of
 //! vertex pairs, meeting points of two lines through vertex pairs, points on
 //! edge extensions, a rational grid: the degenerate positions) and 2 of
 //! [`interior_viewpoints`] (random rationals with denominator 1000); for
@@ -487,7 +487,7 @@ impl Run {
         };
         let k_random = (k / 3).max(1);
         let k_sampled = k - k_random;
-        let mut views: Vec<(RatPoint, &str)> = wai_lemmas::sample::viewpoints(map, k_sampled)
+        let mut views: Vec<(RatPoint, &str)> = wai_study::sample::viewpoints(map, k_sampled)
             .into_iter()
             .map(|p| (p, "sampled"))
             .collect();

@@ -123,7 +123,7 @@ fn main() {
     let cells = arg(&args, "--cells", 200);
     let points = arg(&args, "--points", 20);
     let max_n = arg(&args, "--max-n", 400);
-    let mut maps = wai_lemmas::corpus::corpus_maps().unwrap_or_else(|e| {
+    let mut maps = wai_hunt::corpus::corpus_maps().unwrap_or_else(|e| {
         eprintln!("error: {e}");
         std::process::exit(1)
     });

@@ -3,7 +3,7 @@
 //! against r, max |EC| against n + r², decomposition time against N, the
 //! localizer's overlay time and size against N(n + r²) and its median
 //! query time against m and A, and chapter 5's counts per class from
-//! `wai_lemmas::Study` (|C_sing| against r², |C_mult| against r, wedge
+//! `wai_study::Study` (|C_sing| against r², |C_mult| against r, wedge
 //! edges W against r²) — with fitted log–log slopes, the commit and the
 //! date on every plot, and every slope in `slopes.csv`.
 //!
@@ -23,9 +23,9 @@ use plotters::prelude::*;
 use std::io::Write;
 use std::path::PathBuf;
 use std::time::Instant;
-use wai_lemmas::Study;
 use wai_localize::Localizer;
 use wai_map::Map;
+use wai_study::Study;
 
 /// Chapter 5's counts are taken on maps of at most this many 2-cells (the
 /// default of `--ch5-max-cells`). `Study` builds the embeddings, witness
@@ -41,7 +41,7 @@ use wai_map::Map;
 const CH5_MAX_CELLS: usize = 150_000;
 
 /// Chapter 5's counts on one map, each the maximum over its classes, all
-/// exact (`wai_lemmas::Study`): single and multiple candidate edges (Def
+/// exact (`wai_study::Study`): single and multiple candidate edges (Def
 /// 5.4) and wedge edges (Def 5.2, an edge on both a kernel and a wedge line
 /// counted as a wedge edge).
 #[derive(Debug, Clone, Copy)]
@@ -60,7 +60,7 @@ impl Ch5 {
         let sets = study.candidate_sets();
         let single = sets.iter().map(|c| c.single().len()).max().unwrap_or(0);
         let multiple = sets.iter().map(|c| c.multiple.len()).max().unwrap_or(0);
-        let wedge = wai_lemmas::wedge_counts::counts(study.cell_edges())
+        let wedge = wai_study::wedge_counts::counts(study.cell_edges())
             .iter()
             .map(|c| c.wedge)
             .max()
@@ -243,8 +243,8 @@ fn slope(points: &[(f64, f64)]) -> Option<f64> {
 fn stamp() -> String {
     format!(
         "commit {}, {}",
-        wai_lemmas::provenance::commit(),
-        wai_lemmas::provenance::utc_date()
+        wai_hunt::provenance::commit(),
+        wai_hunt::provenance::utc_date()
     )
 }
 

@@ -3,11 +3,9 @@
     reason = "approximate decimals of exact ratios, for people"
 )]
 //! `wai check`: the claim checkers over a stream of maps, hunting for
-//! counterexamples (issue 11). The engine is [`wai_lemmas::check`]; this
-//! module reads the command line, shows progress, prints the totals,
-//! shrinks each counterexample ([`wai_lemmas::shrink`]) and writes it to
-//! `counterexamples/` in that folder's format with the command that replays
-//! it, `wai check --replay FILE`.
+//! counterexamples. The engine is `wai_hunt` (the search, the shrinking and
+//! storing of counterexamples, the climb toward a proof case); this module
+//! reads the command line, shows progress and prints.
 //!
 //! Exit codes: 0 no counterexample (known failures, counted apart, do not
 //! count); 1 a counterexample was found (or, with `--replay`, the stored
@@ -18,11 +16,11 @@ use std::io::IsTerminal;
 use std::path::{Path, PathBuf};
 use std::time::{Duration, Instant};
 
-use serde_json::{json, Value};
-use wai_lemmas::check::{self, Limit, Maker, Outcome, Stream};
-use wai_lemmas::record::RunRecord;
-use wai_lemmas::Status;
-use wai_map::Map;
+use serde_json::Value;
+use wai_hunt::record::RunRecord;
+use wai_hunt::store::{StoreOptions, Stored};
+use wai_hunt::{Limit, Outcome, Stream};
+use wai_lemmas::Checker;
 
 use crate::Failure;
 
@@ -89,13 +87,27 @@ pub struct Args {
     /// Re-run the claim of a stored counterexample file on its map instead.
     #[arg(long, value_name = "FILE", conflicts_with_all = ["files", "count", "budget"])]
     pub replay: Option<PathBuf>,
+    /// Print where the time went: each study stage's and each checker's own
+    /// time, longest first (with --json, a "profile" object).
+    #[arg(long)]
+    pub profile: bool,
+    /// Instead of a run: climb toward a map that hits case CASE of claim
+    /// CLAIM (`wai claims` lists each claim's cases and which were never
+    /// hit), for --evals evaluations or --budget; a map found is stored as
+    /// a figure in --out (default counterexamples/).
+    #[arg(long, value_name = "CLAIM:CASE", conflicts_with_all = ["files", "replay", "plant"])]
+    pub target: Option<String>,
+    /// With --target: stop after this many evaluations (default 2000
+    /// without --budget).
+    #[arg(long, requires = "target")]
+    pub evals: Option<u64>,
 }
 
-/// The checkers of the run: (claim id, constructor), planted bug in place.
-fn makers(args: &Args) -> Result<Vec<(&'static str, Maker)>, Failure> {
+/// The checkers of the run, planted bug in place.
+fn checkers(args: &Args) -> Result<Vec<Checker>, Failure> {
     for id in &args.claims {
         match wai_lemmas::claim(id) {
-            Some(c) if c.status.has_checker() => {}
+            Some(c) if c.checker.is_some() => {}
             Some(_) => return Err(Failure::usage(format!("claim {id} has no checker yet"))),
             None => {
                 return Err(Failure::usage(format!(
@@ -111,29 +123,28 @@ fn makers(args: &Args) -> Result<Vec<(&'static str, Maker)>, Failure> {
     }
     let plant = match &args.plant {
         None => None,
-        Some(name) => Some(wai_lemmas::planted::maker(name).ok_or_else(|| {
+        Some(name) => Some(wai_lemmas::planted::checker(name).ok_or_else(|| {
             Failure::usage(format!(
                 "--plant {name}: the planted bugs are {}",
                 wai_lemmas::planted::names().join(", ")
             ))
         })?),
     };
-    let selected = wai_lemmas::makers()
-        .filter(|(id, _)| args.claims.is_empty() || args.claims.iter().any(|i| i == id))
-        .filter(|(id, _)| {
+    let selected = wai_lemmas::checkers()
+        .filter(|c| args.claims.is_empty() || args.claims.iter().any(|i| i == c.id))
+        .filter(|c| {
             args.chapter.is_empty()
-                || wai_lemmas::chapter_of(id).is_some_and(|ch| args.chapter.contains(&ch))
+                || wai_lemmas::chapter_of(c.id).is_some_and(|ch| args.chapter.contains(&ch))
         });
-    let chosen: Vec<(&'static str, Maker)> =
-        wai_lemmas::planted::swap_in(selected, plant).collect();
+    let chosen: Vec<Checker> = wai_lemmas::planted::swap_in(selected, plant).collect();
     if chosen.is_empty() {
         return Err(Failure::usage("no checker is selected"));
     }
-    if let Some(make) = plant {
-        let pid = make().id();
-        if !chosen.iter().any(|(id, _)| *id == pid) {
+    if let Some(p) = plant {
+        if !chosen.iter().any(|c| c.id == p.id) {
             return Err(Failure::usage(format!(
-                "--plant replaces the checker of {pid}, which is not selected"
+                "--plant replaces the checker of {}, which is not selected",
+                p.id
             )));
         }
     }
@@ -160,14 +171,14 @@ fn stream(args: &Args) -> Result<Stream, Failure> {
         return Ok(Stream::Fixed(maps));
     }
     if args.maps == "corpus" {
-        let maps = wai_lemmas::corpus::corpus_maps().map_err(Failure::io)?;
+        let maps = wai_hunt::corpus::corpus_maps().map_err(Failure::io)?;
         return Ok(Stream::Fixed(
             maps.into_iter()
                 .map(|m| (kind_of_name(m.name().unwrap_or("corpus")), m))
                 .collect(),
         ));
     }
-    let kinds = check::parse_kinds(&args.maps).map_err(Failure::usage)?;
+    let kinds = wai_hunt::parse_kinds(&args.maps).map_err(Failure::usage)?;
     Ok(Stream::Generated {
         kinds,
         seed: args.seed,
@@ -226,13 +237,16 @@ pub fn check(args: &Args) -> Result<(), Failure> {
     if let Some(file) = &args.replay {
         return replay(args, file);
     }
-    let makers = makers(args)?;
     let budget = args
         .budget
         .as_deref()
-        .map(crate::search::parse_duration)
+        .map(wai_hunt::climb::parse_duration)
         .transpose()
         .map_err(|e| Failure::usage(format!("--budget: {e}")))?;
+    if let Some(target) = &args.target {
+        return crate::target::target(args, target, budget);
+    }
+    let checkers = checkers(args)?;
     let stream = stream(args)?;
     if stream.is_empty() {
         return Err(Failure::usage("the stream has no map"));
@@ -258,11 +272,10 @@ pub fn check(args: &Args) -> Result<(), Failure> {
         Limit::Budget(_) => stream.len(),
     };
     // The checkout's commit when the run starts: the code that ran.
-    let commit = wai_lemmas::provenance::commit();
+    let commit = wai_hunt::provenance::commit();
     let progress = Progress::new(total, budget);
-    let only: Vec<Maker> = makers.iter().map(|(_, m)| *m).collect();
-    let outcome = check::search(
-        &only,
+    let outcome = wai_hunt::search(
+        &checkers,
         &stream,
         limit,
         4 * threads,
@@ -277,9 +290,23 @@ pub fn check(args: &Args) -> Result<(), Failure> {
             "counterexamples"
         })
     });
-    let stored = store_counterexamples(args, &makers, &outcome, &out_dir)?;
+    let options = StoreOptions {
+        no_shrink: args.no_shrink,
+        shrink_tries: args.shrink_tries,
+        seed: args.seed,
+        planted: args.plant.clone(),
+        command: command_line(),
+    };
+    let stored = wai_hunt::store::store_counterexamples(
+        &outcome,
+        &checkers,
+        &options,
+        &out_dir,
+        &mut |what| eprintln!("wai check: {what}"),
+    )
+    .map_err(Failure::io)?;
     if let Some(dir) = &args.largest {
-        write_largest(&outcome, dir)?;
+        wai_hunt::store::write_largest(&outcome, dir).map_err(Failure::io)?;
     }
     let record = record(&outcome, commit);
     if let Some(path) = &args.record {
@@ -288,6 +315,9 @@ pub fn check(args: &Args) -> Result<(), Failure> {
     if args.json {
         let mut all = record.to_json();
         all["counterexamples"] = Value::from(stored.iter().map(Stored::json).collect::<Vec<_>>());
+        if args.profile {
+            all["profile"] = profile_json(&outcome);
+        }
         println!(
             "{}",
             serde_json::to_string_pretty(&all).expect("plain JSON values")
@@ -297,6 +327,9 @@ pub fn check(args: &Args) -> Result<(), Failure> {
             "{}",
             text_summary(args, &outcome, &record, threads, &stored)
         );
+        if args.profile {
+            print!("{}", profile_text(&outcome));
+        }
     }
     let found = outcome.counterexamples().len();
     if found == 0 {
@@ -313,150 +346,61 @@ pub fn check(args: &Args) -> Result<(), Failure> {
     }
 }
 
-/// One counterexample written to a file.
-struct Stored {
-    claim: &'static str,
-    found_on: String,
-    from_n: usize,
-    map: Map,
-    steps: usize,
-    what: String,
-    path: PathBuf,
+/// Where the time went, as text: stages and checkers by own time.
+fn profile_text(outcome: &Outcome) -> String {
+    use std::fmt::Write;
+    let p = &outcome.profile;
+    let total = p.total().as_secs_f64().max(1e-9);
+    let maps = p.maps.max(1) as f64;
+    let mut s = format!(
+        "profile: {} maps, {:.1} s of work ({:.2} ms a map) over {:.1} s of wall time\n  {:<28} {:>10} {:>7} {:>12}\n",
+        p.maps,
+        total,
+        1000.0 * total / maps,
+        outcome.elapsed.as_secs_f64(),
+        "stage or checker",
+        "seconds",
+        "share",
+        "ms a map"
+    );
+    for (name, t) in p.ranked() {
+        let secs = t.as_secs_f64();
+        let _ = writeln!(
+            s,
+            "  {name:<28} {secs:>10.3} {:>6.1}% {:>12.3}",
+            100.0 * secs / total,
+            1000.0 * secs / maps
+        );
+    }
+    s
 }
 
-impl Stored {
-    fn replay(&self) -> String {
-        format!("wai check --replay {}", self.path.display())
-    }
-
-    fn json(&self) -> Value {
-        json!({
-            "claim": self.claim,
-            "found_on": self.found_on,
-            "n_found": self.from_n,
-            "n": self.map.n(),
-            "r": self.map.r(),
-            "shrink_steps": self.steps,
-            "what": self.what,
-            "file": self.path.display().to_string(),
-            "replay": self.replay(),
+/// Where the time went, as JSON: seconds by stage and by checker.
+fn profile_json(outcome: &Outcome) -> Value {
+    let p = &outcome.profile;
+    let stages: serde_json::Map<String, Value> = p
+        .stages
+        .stages
+        .iter()
+        .map(|(s, (t, builds))| {
+            (
+                (*s).to_owned(),
+                serde_json::json!({"seconds": t.as_secs_f64(), "builds": builds}),
+            )
         })
-    }
-}
-
-/// Per claim with a counterexample: the one on the smallest map, shrunk
-/// (unless --no-shrink) and written to `out`.
-fn store_counterexamples(
-    args: &Args,
-    makers: &[(&'static str, Maker)],
-    outcome: &Outcome,
-    out: &Path,
-) -> Result<Vec<Stored>, Failure> {
-    let mut stored = Vec::new();
-    let counterexamples = outcome.counterexamples();
-    for (claim, make) in makers {
-        let Some(first) = counterexamples
-            .iter()
-            .copied()
-            .filter(|v| v.claim == *claim)
-            .min_by_key(|v| (v.map_json.len(), v.map_index))
-        else {
-            continue;
-        };
-        let found = wai_map::json::from_json(first.map_json.as_bytes())
-            .map_err(|e| Failure::invalid(format!("the violating map does not read back: {e}")))?
-            .map;
-        let shrunk = if args.no_shrink {
-            None
-        } else {
-            eprintln!(
-                "wai check: shrinking the {claim} counterexample on {} (n = {})",
-                first.map_name.as_deref().unwrap_or("an unnamed map"),
-                found.n()
-            );
-            Some(wai_lemmas::shrink::shrink(
-                &found,
-                |m| check::still_violated(*make, m),
-                args.shrink_tries,
-            ))
-        };
-        let (map, steps) = match &shrunk {
-            Some(s) => (s.map.clone(), s.steps),
-            None => (found.clone(), 0),
-        };
-        // The violation as reported on the stored map.
-        let report = make().check(&map);
-        let violation = report.counterexamples().next().unwrap_or(&first.violation);
-        std::fs::create_dir_all(out).map_err(|e| Failure::io(format!("{}: {e}", out.display())))?;
-        let path = out.join(format!(
-            "{claim}-check-seed{}-map{}.json",
-            args.seed, first.map_index
-        ));
-        let s = Stored {
-            claim,
-            found_on: first
-                .map_name
-                .clone()
-                .unwrap_or_else(|| format!("map #{}", first.map_index)),
-            from_n: found.n(),
-            map,
-            steps,
-            what: violation.what.clone(),
-            path,
-        };
-        let meta = json!({"check": {
-            "command": command_line(),
-            "found_on": s.found_on,
-            "map_index": first.map_index,
-            "n_found": s.from_n,
-            "shrink_steps": steps,
-            "shrink_tries": shrunk.as_ref().map(|s| s.tries),
-            "planted": args.plant,
-            "violation": violation.data,
-            "replay": s.replay(),
-        }});
-        let note = format!(
-            "A violation of {claim} found by `wai check` on {} (n = {}) and shrunk to n = {}, \
-             r = {} in {steps} steps: {}. Whether the thesis or our code is wrong is not known \
-             yet.{} Replay: `{}`.",
-            s.found_on,
-            s.from_n,
-            s.map.n(),
-            s.map.r(),
-            s.what,
-            if args.plant.is_some() {
-                " (Planted bug: the checker was wrong on purpose.)"
-            } else {
-                ""
-            },
-            s.replay()
-        );
-        let text = wai_lemmas::counterexample::file_text(
-            &s.map,
-            &format!("{claim}-check-seed{}-map{}", args.seed, first.map_index),
-            &format!("found by `{}`", command_line()),
-            claim,
-            "violation",
-            &note,
-            &meta,
-        );
-        std::fs::write(&s.path, text)
-            .map_err(|e| Failure::io(format!("{}: {e}", s.path.display())))?;
-        stored.push(s);
-    }
-    Ok(stored)
-}
-
-fn write_largest(outcome: &Outcome, dir: &Path) -> Result<(), Failure> {
-    std::fs::create_dir_all(dir).map_err(|e| Failure::io(format!("{}: {e}", dir.display())))?;
-    for t in &outcome.summary.tallies {
-        if let Some(l) = &t.largest {
-            let path = dir.join(format!("{}-largest.json", t.claim));
-            std::fs::write(&path, &l.map_json)
-                .map_err(|e| Failure::io(format!("{}: {e}", path.display())))?;
-        }
-    }
-    Ok(())
+        .collect();
+    let checkers: serde_json::Map<String, Value> = p
+        .checkers
+        .iter()
+        .map(|(c, t)| ((*c).to_owned(), serde_json::json!(t.as_secs_f64())))
+        .collect();
+    serde_json::json!({
+        "maps": p.maps,
+        "wall_seconds": outcome.elapsed.as_secs_f64(),
+        "work_seconds": p.total().as_secs_f64(),
+        "stages": stages,
+        "checkers": checkers,
+    })
 }
 
 /// The run as a record (the claims dashboard reads one); `commit` as
@@ -466,7 +410,7 @@ fn record(outcome: &Outcome, commit: String) -> RunRecord {
         &outcome.summary,
         command_line(),
         commit,
-        wai_lemmas::provenance::utc_date(),
+        wai_hunt::provenance::utc_date(),
         outcome.elapsed.as_secs(),
         outcome.map_kinds.clone(),
     )
@@ -553,37 +497,16 @@ fn replay(args: &Args, file: &Path) -> Result<(), Failure> {
     let bytes = std::fs::read(file).map_err(|e| Failure::io(format!("{}: {e}", file.display())))?;
     let value: Value = serde_json::from_slice(&bytes)
         .map_err(|e| Failure::invalid(format!("{}: not JSON: {e}", file.display())))?;
-    let claim = value["claim"].as_str().ok_or_else(|| {
-        Failure::invalid(format!(
-            "{}: no \"claim\" field (the format of counterexamples/README.md)",
-            file.display()
-        ))
-    })?;
-    let map = crate::input::load(file, crate::input::Format::Auto)?.map;
+    let checker = wai_hunt::store::replay_checker(&value, args.plant.as_deref())
+        .map_err(|e| Failure::invalid(format!("{}: {e}", file.display())))?;
+    let claim = checker.id;
     let planted = args.plant.clone().or_else(|| {
         value["meta"]["check"]["planted"]
             .as_str()
             .map(str::to_owned)
     });
-    let make: Maker = match &planted {
-        Some(name) => wai_lemmas::planted::maker(name)
-            .ok_or_else(|| Failure::usage(format!("unknown planted bug {name}")))?,
-        None => match wai_lemmas::claim(claim).map(|c| c.status) {
-            Some(Status::Checker(make)) => make,
-            Some(Status::NoCheckerYet) => {
-                return Err(Failure::usage(format!("claim {claim} has no checker yet")))
-            }
-            None => {
-                return Err(Failure::invalid(format!(
-                    "{}: claim {claim} is not in the registry",
-                    file.display()
-                )))
-            }
-        },
-    };
-    let report = make().check(&map);
-    let open: Vec<_> = report.counterexamples().collect();
-    let known = report.violations.len() - open.len();
+    let map = crate::input::load(file, crate::input::Format::Auto)?.map;
+    let (report, open) = wai_hunt::store::replay(&checker, &map);
     println!(
         "wai check --replay {}: {claim}{} on {} (n = {}, r = {}): examined {}, violations {}, known failures {}",
         file.display(),
@@ -592,13 +515,13 @@ fn replay(args: &Args, file: &Path) -> Result<(), Failure> {
         map.n(),
         map.r(),
         report.examined,
-        open.len(),
-        known
+        open,
+        report.violations.len() - open
     );
-    for v in open.iter().take(5) {
+    for v in checker.counterexamples(&report).take(5) {
         println!("  VIOLATION: {}", v.what);
     }
-    if open.is_empty() {
+    if open == 0 {
         println!("  {claim} holds on this map");
         Ok(())
     } else {

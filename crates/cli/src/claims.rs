@@ -1,8 +1,9 @@
 //! `wai claims`: every claim of the registry (`wai_lemmas::CLAIMS`, in
 //! catalogue order) with its kind, its checker and what the last recorded
 //! run found about it — instances examined, violations, known failures, the
-//! largest ratio — read from a run record (`lemmas/last-run.json`, a
-//! [`RunRecord`]), so that a fresh clone shows it without running anything.
+//! largest ratio, the instances per case of its proof and the cases never
+//! hit — read from a run record (`lemmas/last-run.json`, a [`RunRecord`]),
+//! so that a fresh clone shows it without running anything.
 //!
 //! `--markdown` prints the same as the Markdown table of `README.md`, and
 //! `--write-readme FILE` rewrites the part of FILE between
@@ -22,8 +23,8 @@ use std::path::{Path, PathBuf};
 
 use rug::Rational;
 use serde_json::{json, Value};
-use wai_lemmas::record::{ClaimRecord, RunRecord};
-use wai_lemmas::{Claim, Status, CLAIMS};
+use wai_hunt::record::{ClaimRecord, RunRecord};
+use wai_lemmas::{Claim, CLAIMS};
 
 use crate::Failure;
 
@@ -44,7 +45,8 @@ const REGENERATE: &str =
 pub struct Args {
     /// Print JSON: {"run": {...}, "claims": [{"id", "kind", "checker",
     /// "examined", "violations", "known_failures", "max_ratio",
-    /// "max_ratio_approx", "max_ratio_map", ...}]}.
+    /// "max_ratio_approx", "max_ratio_map", "cases": {case: instances},
+    /// "cases_never_hit", ...}]}.
     #[arg(long, conflicts_with = "markdown")]
     pub json: bool,
     /// Read this run record instead of the workspace's lemmas/last-run.json.
@@ -131,6 +133,41 @@ impl Row<'_> {
         }
     }
 
+    /// The claim's declared cases with the run's instances of each (0 for a
+    /// case the record lacks).
+    fn cases(&self) -> Vec<(&'static str, u64)> {
+        let declared = self.claim.checker.map_or(&[][..], |c| c.cases);
+        declared
+            .iter()
+            .map(|c| {
+                let n = self.record.and_then(|r| r.cases.get(c.name)).copied();
+                (c.name, n.unwrap_or(0))
+            })
+            .collect()
+    }
+
+    /// `3 of 5`, or `—` for a claim without cases.
+    fn cases_text(&self) -> String {
+        let cases = self.cases();
+        if cases.is_empty() || self.record.is_none() {
+            return "—".to_owned();
+        }
+        let hit = cases.iter().filter(|(_, n)| *n > 0).count();
+        format!("{hit} of {}", cases.len())
+    }
+
+    /// The declared cases the run never hit.
+    fn never_hit(&self) -> Vec<&'static str> {
+        if self.record.is_none() {
+            return Vec::new();
+        }
+        self.cases()
+            .into_iter()
+            .filter(|(_, n)| *n == 0)
+            .map(|(c, _)| c)
+            .collect()
+    }
+
     fn ratio_map(&self) -> Option<&str> {
         self.record
             .filter(|r| r.max_ratio.is_some())
@@ -148,10 +185,10 @@ fn rows(record: &RunRecord) -> Vec<Row<'_>> {
         .iter()
         .map(|claim| Row {
             claim,
-            checker: match claim.status {
-                Status::Checker(_) => Some(format!("wai_lemmas::{}", claim.module_name())),
-                Status::NoCheckerYet => None,
-            },
+            checker: claim.checker.map(|_| {
+                let chapter = wai_lemmas::chapter_of(claim.id).unwrap_or(0);
+                format!("wai_lemmas::ch{chapter}::{}", claim.module_name())
+            }),
             record: record.claim(claim.id),
         })
         .collect()
@@ -199,7 +236,26 @@ fn totals(rows: &[Row<'_>]) -> String {
         "{} without a checker yet",
         ids(State::NoChecker).len()
     ));
+    let cased: Vec<&Row<'_>> = rows.iter().filter(|r| !r.cases().is_empty()).collect();
+    let all_cases: usize = cased.iter().map(|r| r.cases().len()).sum();
+    let never: usize = cased.iter().map(|r| r.never_hit().len()).sum();
+    parts.push(format!(
+        "{} claims name {all_cases} cases, {never} never hit by the run",
+        cased.len()
+    ));
     format!("{}.", parts.join("; "))
+}
+
+/// The lines naming, per claim, the cases the run never hit.
+fn never_hit_lines(rows: &[Row<'_>], bullet: &str) -> String {
+    let mut out = String::new();
+    for r in rows {
+        let never = r.never_hit();
+        if !never.is_empty() {
+            out.push_str(&format!("{bullet}{}: {}\n", r.claim.id, never.join(", ")));
+        }
+    }
+    out
 }
 
 /// The plain-text table.
@@ -224,9 +280,10 @@ fn text(record: &RunRecord, path: &Path, rows: &[Row<'_>]) -> String {
         "examined",
         "violations",
         "known failures",
+        "cases hit",
         "largest ratio",
     ];
-    let cells: Vec<[String; 7]> = rows
+    let cells: Vec<[String; 8]> = rows
         .iter()
         .map(|r| {
             let ratio = match r.ratio_map() {
@@ -240,6 +297,7 @@ fn text(record: &RunRecord, path: &Path, rows: &[Row<'_>]) -> String {
                 r.examined_text(),
                 r.number(|c| c.violations),
                 r.number(|c| c.known_failures),
+                r.cases_text(),
                 ratio,
             ]
         })
@@ -273,6 +331,13 @@ fn text(record: &RunRecord, path: &Path, rows: &[Row<'_>]) -> String {
     out.push('\n');
     out.push_str(&totals(rows));
     out.push('\n');
+    let never = never_hit_lines(rows, "  ");
+    if !never.is_empty() {
+        out.push_str(
+            "\ncases never hit by the run (`wai check --target CLAIM:CASE` searches for one):\n",
+        );
+        out.push_str(&never);
+    }
     out
 }
 
@@ -297,8 +362,8 @@ fn markdown(record: &RunRecord, rows: &[Row<'_>]) -> String {
         },
         record.seconds
     );
-    out.push_str("| id | thesis | kind | checker | examined | violations | known failures | largest ratio |\n");
-    out.push_str("|---|---|---|---|--:|--:|--:|---|\n");
+    out.push_str("| id | thesis | kind | checker | examined | violations | known failures | cases hit | largest ratio |\n");
+    out.push_str("|---|---|---|---|--:|--:|--:|--:|---|\n");
     for r in rows {
         let checker = match &r.checker {
             Some(c) => code(c),
@@ -313,7 +378,7 @@ fn markdown(record: &RunRecord, rows: &[Row<'_>]) -> String {
             None => r.ratio_text(),
         };
         out.push_str(&format!(
-            "| {} | {} | {} | {} | {} | {} | {} | {} |\n",
+            "| {} | {} | {} | {} | {} | {} | {} | {} | {} |\n",
             r.claim.id,
             cell(r.claim.reference),
             r.claim.kind,
@@ -321,12 +386,18 @@ fn markdown(record: &RunRecord, rows: &[Row<'_>]) -> String {
             examined,
             r.number(|c| c.violations),
             r.number(|c| c.known_failures),
+            r.cases_text(),
             cell(&ratio),
         ));
     }
     out.push('\n');
     out.push_str(&totals(rows));
     out.push('\n');
+    let never = never_hit_lines(rows, "- ");
+    if !never.is_empty() {
+        out.push_str("\nCases never hit by the run:\n\n");
+        out.push_str(&never);
+    }
     out
 }
 
@@ -354,6 +425,8 @@ fn to_json(record: &RunRecord, path: &Path, rows: &[Row<'_>]) -> Value {
                 "max_ratio": ratio.map(Rational::to_string),
                 "max_ratio_approx": ratio.and_then(|q| serde_json::Number::from_f64(q.to_f64())),
                 "max_ratio_map": r.ratio_map(),
+                "cases": r.cases().into_iter().collect::<std::collections::BTreeMap<_, _>>(),
+                "cases_never_hit": r.never_hit(),
                 "counts": rec.map(|c| &c.counts),
             })
         })

@@ -1,6 +1,6 @@
 //! `wai search-extremes`: a seeded local search for the maps that push one
-//! chapter 5 ratio highest (issue 10, "Search for the worst case"); the
-//! engine is [`crate::search`]. Writes the best maps to `counterexamples/`
+//! chapter 5 ratio highest; the engine is `wai_hunt::climb`, the ratios
+//! are read off the checkers' reports (`wai_hunt::extremes`). Writes the best maps to `counterexamples/`
 //! (kind `figure`, or `violation` for a k above Theorem 5.15's bound) and
 //! prints a summary beside what the start maps reach.
 
@@ -12,15 +12,36 @@ use rug::Rational;
 use serde_json::json;
 use wai_gen::mutate::Limits;
 
-use crate::search::{self, Config, Found, Outcome, Ratio, Starts, Status};
+use wai_hunt::climb::{self as search, Config, Found, Outcome, Starts, Status};
+use wai_hunt::extremes::Ratio;
+
 use crate::Failure;
+
+/// `--ratio`: one of [`Ratio::ALL`] by id.
+fn parse_ratio(text: &str) -> Result<Ratio, String> {
+    Ratio::named(text).ok_or_else(|| {
+        let ids: Vec<&str> = Ratio::ALL.iter().map(|r| r.id()).collect();
+        format!("{text:?} is not a ratio; the ratios are {}", ids.join(", "))
+    })
+}
+
+/// `--start`: one of [`Starts::ALL`] by name.
+pub(crate) fn parse_starts(text: &str) -> Result<Starts, String> {
+    Starts::named(text).ok_or_else(|| {
+        let names: Vec<&str> = Starts::ALL.iter().map(|(_, n)| *n).collect();
+        format!(
+            "{text:?} is not a start; the starts are {}",
+            names.join(", ")
+        )
+    })
+}
 
 #[derive(clap::Args, Debug)]
 pub struct Args {
     /// The ratio to maximise: ec = max |EC| / (n + r²) (T5.17), cmult =
     /// max |C_mult| / r (T5.12), wedge = max W / r² (T5.16), k = Theorem
     /// 5.15's k.
-    #[arg(long, value_enum)]
+    #[arg(long, value_parser = parse_ratio)]
     pub ratio: Ratio,
     /// Stop after this much wall-clock time: 90s, 10m, 1h30m (whole units).
     #[arg(long, required_unless_present = "evals")]
@@ -34,7 +55,7 @@ pub struct Args {
     pub seed: u64,
     /// Start maps: random maps of every random kind, the thesis families,
     /// or both.
-    #[arg(long, value_enum, default_value_t = Starts::Both)]
+    #[arg(long, value_parser = parse_starts, default_value = "both")]
     pub start: Starts,
     /// Also start from this map file (repeatable; evaluated first). Its
     /// vertices must fit --max-n.
@@ -199,6 +220,7 @@ pub fn search_extremes(args: &Args) -> Result<(), Failure> {
         keep: args.keep,
         stall: args.stall,
         min_r: args.min_r,
+        goal: None,
     };
     let mut progress = Progress::new(args, budget);
     let ratio = args.ratio;
@@ -271,13 +293,13 @@ fn note(args: &Args, f: &Found, outcome: &Outcome, rank: usize) -> String {
         format!(
             "The value k = {v} is above Theorem 5.15's bound {}: a violation found by search; whether the \
              thesis or our code is wrong is not known yet",
-            wai_lemmas::t5_15::BOUND
+            wai_lemmas::ch5::t5_15::BOUND
         )
     } else if ratio == Ratio::K {
         format!(
             "The value k is within Theorem 5.15's bound {}: nothing here is a violation; neither the \
              thesis nor our code is wrong",
-            wai_lemmas::t5_15::BOUND
+            wai_lemmas::ch5::t5_15::BOUND
         )
     } else {
         let side = if *v > ratio.ceiling() {
@@ -361,7 +383,7 @@ fn file_text(
             "command": cmd,
         }
     });
-    wai_lemmas::counterexample::file_text(
+    wai_hunt::counterexample::file_text(
         map,
         &name,
         &format!("found by `{cmd}`"),
@@ -438,7 +460,7 @@ fn summary(args: &Args, o: &Outcome, written: &[PathBuf]) -> String {
                 let _ = writeln!(
                     s,
                     "  above Theorem 5.15's bound {}: a violation",
-                    wai_lemmas::t5_15::BOUND
+                    wai_lemmas::ch5::t5_15::BOUND
                 );
             }
         }

@@ -25,7 +25,7 @@ mod input;
 mod localize;
 mod scan;
 mod scan_eval;
-mod search;
+mod target;
 mod vis;
 
 // The allocator of every binary of the workspace (see Cargo.toml).

@@ -6,8 +6,8 @@ use std::path::Path;
 use serde_json::Value;
 use wai_embed::{interiors_overlap, Mutual, Pt};
 use wai_exact::{orientation, Orientation, RatPoint};
-use wai_lemmas::Study;
 use wai_map::{json::from_json, Map};
+use wai_study::Study;
 use wai_visibility::{Skeleton, SkeletonKey};
 
 use crate::counterexamples::{viewpoint, DIR};
@@ -88,12 +88,12 @@ fn fig_3_10_an_embedding_without_witness() {
 }
 
 /// The embedded skeleton polygon h(V◇) of `h`.
-fn skeleton_ring(map: &Map, h: &wai_lemmas::study::Embedded) -> Vec<Pt> {
+fn skeleton_ring(map: &Map, h: &wai_study::Embedded) -> Vec<Pt> {
     h.embedding.polygon(map).into_iter().map(Pt::from).collect()
 }
 
 /// The embedded kernel h(ker V*) of `h`.
-fn kernel_ring(h: &wai_lemmas::study::Embedded) -> Vec<Pt> {
+fn kernel_ring(h: &wai_study::Embedded) -> Vec<Pt> {
     h.kernel.vertices().iter().map(Pt::from).collect()
 }
 
@@ -109,8 +109,8 @@ struct Relations {
 fn artificial_edge_relations(
     map: &Map,
     key: &SkeletonKey,
-    h: &wai_lemmas::study::Embedded,
-    g: &wai_lemmas::study::Embedded,
+    h: &wai_study::Embedded,
+    g: &wai_study::Embedded,
 ) -> Relations {
     let (vh, vg) = (&h.embedding.vertices, &g.embedding.vertices);
     let k = vh.len();
@@ -166,7 +166,7 @@ fn fig_4_1_overlapping_kernels_with_artificial_edges_that_share_vertices() {
         .iter()
         .position(|v| *v == wai_exact::Point::new(35, 0))
         .expect("the vertex between the funnels");
-    let touching = |h: &wai_lemmas::study::Embedded| {
+    let touching = |h: &wai_study::Embedded| {
         let v = &h.embedding.vertices;
         (0..v.len())
             .filter(|&a| key.labels[a].is_some())
@@ -256,7 +256,7 @@ fn lemma_4_17_corollary_fails_for_def_3_11_candidate_edges_only() {
     assert_eq!(shared(&h.candidates), 2);
     // … but valid candidates of one each.
     assert_eq!(shared(study.valid_candidates(class, 0)), 0);
-    let report = wai_lemmas::l4_17::checker().check_study(&study);
+    let report = wai_lemmas::ch4::l4_17::CHECKER.run(&study);
     assert!(report.violations.is_empty(), "{:?}", report.violations);
     assert!(report.counts["shared_def_3_11"] > 0);
 }
@@ -278,7 +278,7 @@ fn fig_4_16_four_type_5_edges_and_no_map_vertex() {
     let x = study.intersection(pair).expect("they overlap");
     let rings = study.skeleton_rings();
     let vertices: HashSet<Pt> = map.vertices().iter().map(|&p| Pt::from(p)).collect();
-    let types = wai_lemmas::l4_7::types(x, &rings[class][0], &rings[class][1], &vertices);
+    let types = wai_lemmas::ch4::l4_7::types(x, &rings[class][0], &rings[class][1], &vertices);
     assert_eq!(types, vec![Some(EdgeType::TwoCrossings); 4]);
     assert!(x
         .cycles
@@ -295,7 +295,7 @@ fn fig_4_16_four_type_5_edges_and_no_map_vertex() {
 
 #[test]
 fn fig_4_31_candidate_edges_of_two_rooms_cross_in_one_neck() {
-    use wai_lemmas::{c4_20, t4_19};
+    use wai_lemmas::ch4::{c4_20, t4_19};
     let (map, points) = load("T4.19-fig-4-31-bottles.json");
     // The stored map is the generator's, with its viewpoints.
     assert_eq!(map.vertices(), wai_gen::bottled_niches(0).vertices());
@@ -366,10 +366,10 @@ fn fig_4_31_candidate_edges_of_two_rooms_cross_in_one_neck() {
     }
     assert_eq!(shared, 2, "the two necks between the rooms");
     // The checkers examine these triples and quadruples and find nothing.
-    let t = t4_19::checker().check_study(&study);
+    let t = t4_19::CHECKER.run(&study);
     assert!(t.violations.is_empty(), "{:?}", t.violations);
     assert!(t.counts["crosses_both"] > 0);
-    let q = c4_20::checker().check_study(&study);
+    let q = c4_20::CHECKER.run(&study);
     assert!(q.violations.is_empty(), "{:?}", q.violations);
     assert!(q.counts["mutually_crossing"] > 0);
 }

@@ -9,7 +9,8 @@ use std::collections::BTreeMap;
 
 use wai_embed::GapRelation;
 use wai_exact::{Point, RatPoint};
-use wai_lemmas::{Report, Study};
+use wai_lemmas::Report;
+use wai_study::Study;
 use wai_visibility::{Skeleton, SkeletonKey};
 
 /// The reports of the claims `ids` on one study of `study`'s map, by id;
@@ -17,11 +18,9 @@ use wai_visibility::{Skeleton, SkeletonKey};
 fn check(study: &Study<'_>, ids: &[&str]) -> BTreeMap<String, Report> {
     let mut out = BTreeMap::new();
     for id in ids {
-        let make = match wai_lemmas::claim(id).map(|c| c.status) {
-            Some(wai_lemmas::Status::Checker(make)) => make,
-            _ => panic!("claim {id} has no checker"),
-        };
-        let report = make().check_study(study);
+        let checker =
+            wai_lemmas::checker(id).unwrap_or_else(|| panic!("claim {id} has no checker"));
+        let report = checker.run(study);
         assert!(
             report.violations.is_empty(),
             "{id} on {:?}: {:?}",

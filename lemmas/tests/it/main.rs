@@ -1,16 +1,12 @@
 //! The integration tests of `wai-lemmas`: the claims registry against
-//! `shared/CLAIMS.md`, the stored maps of `counterexamples/`, the
-//! chapter 3 visibility checkers over generated and real maps, and the
-//! chapter 5 checkers on the layouts that reach their premises, and bounded
-//! property tests of every checker.
+//! `shared/CLAIMS.md`, the stored maps of `counterexamples/` and the
+//! figures they show, and the chapter 5 checkers on the layouts that reach
+//! their premises.
 
-mod cell_claims;
 mod counterexamples;
 mod figures;
 mod interweave;
-mod properties;
 mod registry;
-mod visibility_claims;
 
 use std::path::PathBuf;
 

@@ -2,10 +2,10 @@
 
 use std::collections::{BTreeMap, BTreeSet};
 
-use wai_lemmas::{claim, claims_without_checker, Kind, Status, CLAIMS};
+use wai_lemmas::{claim, claims_without_checker, Kind, CLAIMS};
 
 /// Claims whose checker module has landed. Add an id here when its row in
-/// `CLAIMS` becomes `Status::Checker`.
+/// `CLAIMS` gets its checker.
 const WITH_CHECKER: &[&str] = &[
     "L3.1a", "L3.1b", "L3.1c", "D3.5", "T3.2", "T3.3a", "T3.3b", "A3.6", "L3.5", "L3.7", "L3.7t",
     "T3.9a", "T3.9b", "T3.10", "L4.1", "T4.2", "T4.3", "L4.5", "L4.6", "L4.7", "L4.8", "L4.9",
@@ -180,13 +180,13 @@ fn statuses_match_the_list_of_landed_checkers() {
     for c in CLAIMS {
         let listed = WITH_CHECKER.contains(&c.id);
         assert_eq!(
-            c.status.has_checker(),
+            c.checker.is_some(),
             listed,
             "{}: status and WITH_CHECKER disagree",
             c.id
         );
-        if let Status::Checker(make) = c.status {
-            assert_eq!(make().id(), c.id, "the checker of {} has another id", c.id);
+        if let Some(checker) = c.checker {
+            assert_eq!(checker.id, c.id, "the checker of {} has another id", c.id);
         }
     }
 }
@@ -211,92 +211,111 @@ fn untested_claims_are_named() {
     assert_eq!(untested.len(), CLAIMS.len() - WITH_CHECKER.len());
 }
 
-/// The shared modules of `lemmas/src` that are not a claim's: the crate
-/// root, the driver, the viewpoint sampler, the bound ratios, the study,
-/// the family recogniser of the tight checkers, the stress runs' map corpus
-/// and the kernel and wedge edge counts of the chapter 5 bounds. Nothing
+/// The files of `lemmas/src` that are not a claim's module: the crate
+/// root, the registry, the planted bugs, the unit tests' fixtures, and the
+/// framework's folder; and of each chapter's folder: its `mod.rs`. Nothing
 /// else may be there.
-const NOT_CLAIMS: &[&str] = &[
-    "lib",
-    "driver",
-    "sample",
-    "ratio",
-    "study",
-    "family",
-    "corpus",
-    "wedge_counts",
-    "edge_pairs",
-    "planted",
-    "shrink",
-    "check",
-    "counterexample",
-    "provenance",
-    "record",
-];
+const NOT_CLAIMS: &[&str] = &["lib", "registry", "planted", "fixtures"];
 
-/// The module files of `lemmas/src` that are not in [`NOT_CLAIMS`] but are
-/// not the module of any claim either (`names`: the claims' module names).
-fn stray_modules(src: &std::path::Path, names: &BTreeSet<String>) -> Vec<String> {
-    let mut stray: Vec<String> = std::fs::read_dir(src)
-        .unwrap_or_else(|e| panic!("{} is not readable: {e}", src.display()))
+/// The `.rs` files and folders of `dir` (stems for files).
+fn entries(dir: &std::path::Path) -> Vec<(String, bool)> {
+    let mut out: Vec<(String, bool)> = std::fs::read_dir(dir)
+        .unwrap_or_else(|e| panic!("{} is not readable: {e}", dir.display()))
         .map(|e| e.expect("directory entry").path())
-        .filter(|p| p.extension().is_some_and(|x| x == "rs"))
-        .filter_map(|p| p.file_stem().map(|s| s.to_string_lossy().into_owned()))
-        .filter(|m| !NOT_CLAIMS.contains(&m.as_str()) && !names.contains(m))
+        .filter_map(|p| {
+            if p.is_dir() {
+                p.file_name()
+                    .map(|s| (s.to_string_lossy().into_owned(), true))
+            } else if p.extension().is_some_and(|x| x == "rs") {
+                p.file_stem()
+                    .map(|s| (s.to_string_lossy().into_owned(), false))
+            } else {
+                None
+            }
+        })
         .collect();
-    stray.sort();
+    out.sort();
+    out
+}
+
+/// What is out of place in a `lemmas/src` laid out as `src`: a file at the
+/// top other than [`NOT_CLAIMS`], a folder other than `framework` and
+/// `ch3`–`ch5`, and in a chapter's folder a file that is not `mod.rs` or
+/// the module of a claim of that chapter.
+fn stray_modules(src: &std::path::Path) -> Vec<String> {
+    let mut stray = Vec::new();
+    for (name, is_dir) in entries(src) {
+        match (is_dir, name.as_str()) {
+            (false, m) if NOT_CLAIMS.contains(&m) => {}
+            (true, "framework") => {}
+            (true, ch) if ["ch3", "ch4", "ch5"].contains(&ch) => {
+                let chapter = ch[2..].parse::<u8>().expect("a digit");
+                let names: BTreeSet<String> = CLAIMS
+                    .iter()
+                    .filter(|c| wai_lemmas::chapter_of(c.id) == Some(chapter))
+                    .map(|c| c.module_name())
+                    .collect();
+                for (m, sub) in entries(&src.join(ch)) {
+                    if sub || (m != "mod" && !names.contains(&m)) {
+                        stray.push(format!("{ch}/{m}"));
+                    }
+                }
+            }
+            _ => stray.push(name),
+        }
+    }
     stray
 }
 
-/// Every module file of `lemmas/src` other than the shared ones is a
-/// claim's module, and every claim with a checker has its module (STYLE.md
-/// 15).
+/// Every module file of `lemmas/src` other than the shared ones is the
+/// module of a claim, in its chapter's folder, and every claim with a
+/// checker has its module (STYLE.md 15).
 #[test]
 fn claim_modules_and_ids_correspond() {
     let src = std::path::Path::new(concat!(env!("CARGO_MANIFEST_DIR"), "/src"));
-    let names: BTreeSet<String> = CLAIMS.iter().map(|c| c.module_name()).collect();
-    let stray = stray_modules(src, &names);
+    let stray = stray_modules(src);
     assert!(
         stray.is_empty(),
-        "lemmas/src/{{{}}}.rs: not the module of any claim",
+        "lemmas/src/{{{}}}: not the module of any claim of its chapter",
         stray.join(", ")
     );
-    for m in NOT_CLAIMS {
+    for c in CLAIMS.iter().filter(|c| c.checker.is_some()) {
+        let chapter = wai_lemmas::chapter_of(c.id).expect("a chapter");
+        let file = src.join(format!("ch{chapter}/{}.rs", c.module_name()));
         assert!(
-            src.join(format!("{m}.rs")).is_file(),
-            "the shared module lemmas/src/{m}.rs is missing"
-        );
-    }
-    for c in CLAIMS.iter().filter(|c| c.status.has_checker()) {
-        assert!(
-            src.join(format!("{}.rs", c.module_name())).is_file(),
-            "{} has a checker but no module {}.rs",
+            file.is_file(),
+            "{} has a checker but no module {}",
             c.id,
-            c.module_name()
+            file.display()
         );
     }
 }
 
-/// The test above can fail: a stray file next to the shared modules is
-/// named, and claim modules and the shared modules are not.
+/// The test above can fail: a stray file at the top, a claim module in
+/// another chapter's folder and a stray folder are named; the shared files
+/// and the claim modules in place are not.
 #[test]
 fn a_stray_module_is_named() {
     let dir = std::env::temp_dir().join(format!("wai-lemmas-stray-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
+    for sub in ["framework", "ch3", "ch4", "extra"] {
+        std::fs::create_dir_all(dir.join(sub)).unwrap();
+    }
     for f in [
         "lib.rs",
-        "driver.rs",
-        "sample.rs",
-        "l3_1a.rs",
+        "registry.rs",
         "helpers.rs",
         "notes.txt",
+        "framework/report.rs",
+        "ch3/mod.rs",
+        "ch3/l3_1a.rs",
+        "ch3/t4_2.rs",
+        "ch4/t4_2.rs",
     ] {
         std::fs::write(dir.join(f), "").unwrap();
     }
-    let names: BTreeSet<String> = CLAIMS.iter().map(|c| c.module_name()).collect();
-    let stray = stray_modules(&dir, &names);
+    let stray = stray_modules(&dir);
     std::fs::remove_dir_all(&dir).unwrap();
-    assert_eq!(stray, vec!["helpers".to_owned()]);
+    assert_eq!(stray, vec!["ch3/t4_2", "extra", "helpers"]);
 }
 
 /// Every checker of the registry belongs to exactly one of chapters 3-5, so
@@ -306,13 +325,13 @@ fn every_checker_is_in_one_chapter() {
     let ids = |ch: u8| -> Vec<&'static str> {
         wai_lemmas::checkers_of_chapter(ch)
             .iter()
-            .map(|c| c.id())
+            .map(|c| c.id)
             .collect()
     };
     let all: Vec<&str> = (3..=5).flat_map(ids).collect();
     let with_checker: Vec<&str> = wai_lemmas::CLAIMS
         .iter()
-        .filter(|c| c.status.has_checker())
+        .filter(|c| c.checker.is_some())
         .map(|c| c.id)
         .collect();
     assert_eq!(all, with_checker);

@@ -89,7 +89,7 @@ fn a_tiny_budget_writes_the_same_figures_twice() {
         // The stored ratio is exact and is the map's.
         let value = search["value"].as_str().unwrap();
         let c = wai_cells::Decomposition::new(&map).counts();
-        assert_eq!(value, wai_lemmas::t5_17::measure(&c).to_string());
+        assert_eq!(value, wai_lemmas::ch5::t5_17::measure(&c).to_string());
         // `wai info` reads it back.
         let info = wai(&["info", "-"], &bytes);
         assert!(info.status.success(), "{}", text(&info.stderr));

@@ -1,0 +1,257 @@
+//! The maps a search goes through: a [`Stream`].
+//!
+//! A stream is either **generated** — map i of a list of [`MapKind`]s taken
+//! round robin, kind `kinds[i mod K]` with seed `seed + i` and, for kinds
+//! with a size, n (or the family parameter) cycling through the kind's
+//! range — or **fixed**: a list of maps (the corpus, files). Map i of a
+//! generated stream is a function of i and the seed alone.
+
+use std::ops::RangeInclusive;
+
+use wai_map::Map;
+
+/// One kind of generated map.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum MapKind {
+    /// A random kind of [`wai_gen::RANDOM_KINDS`], with about n vertices.
+    Random(&'static str),
+    /// A layout of [`wai_gen::LAYOUTS`] (its seed is its only parameter).
+    Layout(&'static str),
+    /// Every family of [`wai_gen::FAMILIES`] in turn, at parameter k.
+    Family,
+    /// [`wai_gen::bytes::map_from_seed`]: the fuzz targets' maps, shaped
+    /// from random bytes.
+    Bytes,
+}
+
+impl MapKind {
+    /// The name used by `--maps`.
+    pub fn id(&self) -> &'static str {
+        match self {
+            MapKind::Random(id) | MapKind::Layout(id) => id,
+            MapKind::Family => "family",
+            MapKind::Bytes => "bytes",
+        }
+    }
+
+    /// The size range used when `--maps` gives none: n for random kinds,
+    /// the parameter k for families, ignored by layouts and bytes.
+    pub fn default_range(&self) -> RangeInclusive<usize> {
+        match self {
+            MapKind::Random(_) => 8..=30,
+            MapKind::Family => 1..=4,
+            MapKind::Layout(_) | MapKind::Bytes => 0..=0,
+        }
+    }
+
+    /// Every kind, in the order `all` cycles through them.
+    pub fn all() -> Vec<MapKind> {
+        let mut kinds: Vec<MapKind> = wai_gen::RANDOM_KINDS
+            .iter()
+            .map(|k| MapKind::Random(k.id))
+            .collect();
+        kinds.extend(wai_gen::LAYOUTS.iter().map(|l| MapKind::Layout(l.id)));
+        kinds.push(MapKind::Family);
+        kinds.push(MapKind::Bytes);
+        kinds
+    }
+
+    /// The kind named `id`.
+    pub fn named(id: &str) -> Option<MapKind> {
+        MapKind::all().into_iter().find(|k| k.id() == id)
+    }
+}
+
+/// A kind with the sizes to cycle through.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct KindSpec {
+    pub kind: MapKind,
+    pub sizes: RangeInclusive<usize>,
+}
+
+/// Parses `--maps`: comma-separated `KIND[:a-b]` (or `KIND:a`), where KIND
+/// is a name of [`MapKind::all`] or a group: `all` (every kind), `random`
+/// (every random kind), `layouts` (every layout). Random kinds' ranges are
+/// clamped to what the kind accepts.
+pub fn parse_kinds(spec: &str) -> Result<Vec<KindSpec>, String> {
+    let mut out = Vec::new();
+    for part in spec.split(',').map(str::trim).filter(|p| !p.is_empty()) {
+        let (name, range) = match part.split_once(':') {
+            Some((name, range)) => (name, Some(range)),
+            None => (part, None),
+        };
+        let kinds = if name == "all" {
+            MapKind::all()
+        } else if name == "random" {
+            let all = MapKind::all();
+            all.into_iter()
+                .filter(|k| matches!(k, MapKind::Random(_)))
+                .collect()
+        } else if name == "layouts" {
+            let all = MapKind::all();
+            all.into_iter()
+                .filter(|k| matches!(k, MapKind::Layout(_)))
+                .collect()
+        } else {
+            vec![MapKind::named(name).ok_or_else(|| {
+                let names: Vec<&str> = MapKind::all().iter().map(MapKind::id).collect();
+                format!(
+                    "unknown map kind {name:?}; the kinds are {}, the groups all, random \
+                     and layouts, and the fixed stream corpus",
+                    names.join(", ")
+                )
+            })?]
+        };
+        for kind in kinds {
+            let sizes = match range {
+                None => kind.default_range(),
+                Some(r) => parse_range(r).map_err(|e| format!("--maps {part}: {e}"))?,
+            };
+            let sizes = match kind {
+                MapKind::Random(id) => {
+                    let info = wai_gen::RANDOM_KINDS
+                        .iter()
+                        .find(|k| k.id == id)
+                        .expect("a random kind of RANDOM_KINDS");
+                    let (a, b) = (
+                        (*sizes.start()).max(info.min_n),
+                        (*sizes.end()).min(info.max_n),
+                    );
+                    if a > b {
+                        return Err(format!(
+                            "--maps {part}: {id} takes n from {} to {}",
+                            info.min_n, info.max_n
+                        ));
+                    }
+                    a..=b
+                }
+                MapKind::Family if *sizes.start() == 0 => {
+                    return Err(format!("--maps {part}: family parameters start at 1"))
+                }
+                _ => sizes,
+            };
+            out.push(KindSpec { kind, sizes });
+        }
+    }
+    if out.is_empty() {
+        return Err("--maps names no kind".into());
+    }
+    Ok(out)
+}
+
+fn parse_range(r: &str) -> Result<RangeInclusive<usize>, String> {
+    let num = |s: &str| {
+        s.trim()
+            .parse::<usize>()
+            .map_err(|_| format!("{s:?} is not a size"))
+    };
+    let (a, b) = match r.split_once('-') {
+        Some((a, b)) => (num(a)?, num(b)?),
+        None => (num(r)?, num(r)?),
+    };
+    if a > b {
+        return Err(format!("the range {a}-{b} is empty"));
+    }
+    Ok(a..=b)
+}
+
+/// Where the maps come from.
+#[derive(Debug, Clone)]
+pub enum Stream {
+    /// Map i: kind `kinds[i mod K]`, seed `seed + i`.
+    Generated { kinds: Vec<KindSpec>, seed: u64 },
+    /// These maps, each with the name of its kind.
+    Fixed(Vec<(String, Map)>),
+}
+
+impl Stream {
+    /// How many maps the stream holds (`None`: unbounded).
+    pub fn len(&self) -> Option<u64> {
+        match self {
+            Stream::Generated { .. } => None,
+            Stream::Fixed(maps) => Some(maps.len() as u64),
+        }
+    }
+
+    /// True for a fixed stream without maps.
+    pub fn is_empty(&self) -> bool {
+        self.len() == Some(0)
+    }
+
+    /// Map `i` and its kind's name; the map's name says how to make it
+    /// again. `None` past the end of a fixed stream.
+    pub fn map(&self, i: u64) -> Option<(String, Map)> {
+        match self {
+            Stream::Fixed(maps) => maps.get(i as usize).cloned(),
+            Stream::Generated { kinds, seed } => {
+                let k = kinds.len() as u64;
+                let spec = &kinds[(i % k) as usize];
+                let round = i / k;
+                let span = (*spec.sizes.end() - *spec.sizes.start() + 1) as u64;
+                let size = *spec.sizes.start() + (round % span) as usize;
+                let seed = seed.wrapping_add(i);
+                let map = match spec.kind {
+                    MapKind::Random(id) => wai_gen::random(id, size, seed)
+                        .expect("sizes are clamped to the kind's range")
+                        .with_name(format!("{id} n={size} seed={seed}")),
+                    MapKind::Layout(id) => wai_gen::layout(id, seed)
+                        .expect("a layout of LAYOUTS")
+                        .with_name(format!("{id} seed={seed}")),
+                    MapKind::Family => {
+                        let families = wai_gen::FAMILIES;
+                        let f = &families[(round % families.len() as u64) as usize];
+                        let k =
+                            *spec.sizes.start() + ((round / families.len() as u64) % span) as usize;
+                        // Families whose parameter must be larger take the
+                        // next parameter they accept; the name says which.
+                        let (k, map) = (k..k + 8)
+                            .find_map(|k| wai_gen::family(f.id, &[k as u32]).ok().map(|m| (k, m)))
+                            .expect("every family has a map within 8 parameters of k");
+                        map.with_name(format!("{} k={k}", f.id))
+                    }
+                    MapKind::Bytes => wai_gen::bytes::map_from_seed(seed),
+                };
+                Some((spec.kind.id().to_owned(), map))
+            }
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn kinds_parse_with_ranges_and_clamp() {
+        let k = parse_kinds("random-orthogonal:2-12, family:2").unwrap();
+        assert_eq!(k[0].kind, MapKind::Random("random-orthogonal"));
+        assert_eq!(k[0].sizes, 4..=12);
+        assert_eq!((k[1].kind, k[1].sizes.clone()), (MapKind::Family, 2..=2));
+        assert_eq!(parse_kinds("all").unwrap().len(), MapKind::all().len());
+        assert_eq!(
+            parse_kinds("random").unwrap().len(),
+            wai_gen::RANDOM_KINDS.len()
+        );
+        assert_eq!(
+            parse_kinds("layouts:3").unwrap().len(),
+            wai_gen::LAYOUTS.len()
+        );
+        for bad in ["nope", "family:0", "random-orthogonal:9-3", "bytes:x", ""] {
+            assert!(parse_kinds(bad).is_err(), "{bad}");
+        }
+    }
+
+    #[test]
+    fn a_generated_stream_is_a_function_of_the_index() {
+        let stream = Stream::Generated {
+            kinds: parse_kinds("all").unwrap(),
+            seed: 7,
+        };
+        for i in 0..2 * MapKind::all().len() as u64 {
+            let (kind, a) = stream.map(i).unwrap();
+            let (_, b) = stream.map(i).unwrap();
+            assert_eq!(a, b);
+            assert_eq!(kind, MapKind::all()[i as usize % MapKind::all().len()].id());
+        }
+    }
+}

@@ -1,0 +1,690 @@
+//! One study per map: the structures the checkers read, each built the
+//! first time a checker asks for it and then shared by every checker of a
+//! run on that map.
+//!
+//! map → visibility index → decomposition (rays, arrangement, the skeleton
+//! of every cell of every dimension, classes) → sampled visibility
+//! polygons; → the embeddings of every class's skeleton (Def 3.11) with
+//! their candidate edges and kernels. Later chapters add their structures
+//! here, so a stress run builds each once per map.
+
+use std::cell::{OnceCell, RefCell};
+use std::collections::{BTreeMap, HashMap};
+use std::rc::Rc;
+
+use wai_cells::{Arrangement, Decomposition, VisibilityRay};
+use wai_embed::wedge::{classify_cell_edges, embedding_wedge_lines, CellEdgeKind};
+use wai_embed::{
+    crossing, gap_chains, interiors_overlap, kernels_overlap, sight_fans, witness_regions,
+    witness_views, Bounds, CandidateSets, Crossing, EmbeddedEdge, Embedder, Embedding, GapChain,
+    GapRelation, Intersection, Interweavement, Mutual, SightFan, Sightlines, SkeletonRing,
+    Witnesses,
+};
+use wai_map::Map;
+use wai_visibility::{ConvexRegion, VisibilityIndex, VisibilityPolygon};
+
+use crate::profile::{StageTimes, Timer};
+use crate::sample;
+
+/// A map and what has been computed about it so far.
+pub struct Study<'m> {
+    map: &'m Map,
+    index: OnceCell<VisibilityIndex<'m>>,
+    decomposition: OnceCell<Decomposition<'m>>,
+    /// By sample limit: V_p of [`sample::viewpoints`]`(map, limit)`.
+    polygons: RefCell<BTreeMap<usize, Rc<Vec<VisibilityPolygon>>>>,
+    /// By class of the decomposition: its skeleton's embeddings.
+    embeddings: OnceCell<Vec<Vec<Embedded>>>,
+    /// By class, by embedding: the witness regions (Def 4.1).
+    witnesses: OnceCell<Vec<Vec<Witnesses>>>,
+    sightlines: OnceCell<Sightlines<'m>>,
+    /// Every pair of valid embeddings of one skeleton whose skeleton
+    /// polygons overlap, with the verdict on their witnesses.
+    overlapping: OnceCell<Vec<OverlappingPair>>,
+    /// By class and embedding: h(V◇) with its artificial edges marked.
+    rings: OnceCell<Vec<Vec<SkeletonRing>>>,
+    /// The pairs of valid embeddings the sec. 4.4 checkers examine.
+    pairs: OnceCell<Vec<EmbeddingPair>>,
+    /// By class, embedding and witness cell, by skeleton edge: the map
+    /// edge seen through it (`wai_embed::witness_views`).
+    views: OnceCell<Vec<Vec<Views>>>,
+    /// By class and embedding: the valid candidate edges, read off `views`.
+    valid: OnceCell<Vec<Vec<Vec<Vec<usize>>>>>,
+    /// By class: C_{i,j} over its valid embeddings (Defs 5.4, 5.5).
+    candidate_sets: OnceCell<Vec<CandidateSets>>,
+    /// By class, by cell: its edges as Def 5.2 classifies them.
+    cell_edges: OnceCell<Vec<Vec<CellEdges>>>,
+    /// By class: its gaps as boundary chains and the interweavement graph.
+    gaps: OnceCell<Vec<GapStructure>>,
+    /// By class and embedding: the sight fans of its witness cells, each
+    /// embedding's built when first asked for.
+    fans: OnceCell<Vec<Vec<OnceCell<Vec<SightFan>>>>>,
+    /// Def 4.4, decided so far: by (overlapping pair, (artificial edge,
+    /// candidate edge) of its first embedding, of its second).
+    crossings: RefCell<HashMap<CrossingKey, Option<Crossing>>>,
+    /// The time each stage took.
+    timer: Timer,
+}
+
+/// (index in [`Study::overlapping_pairs`], (artificial edge, candidate
+/// edge) of the pair's embedding `a`, the same of `b`).
+type CrossingKey = (usize, (usize, usize), (usize, usize));
+
+/// By witness cell, by skeleton edge: the map edge seen through it.
+pub type Views = Vec<Vec<Option<usize>>>;
+
+/// Maps of at most this many vertices have the sec. 4.4 claims (L4.5 to
+/// C4.10, which allow different skeletons) checked on pairs of valid
+/// embeddings of different skeletons too; larger maps on pairs of one
+/// skeleton only (a map of 52 vertices has about 190,000 overlapping pairs
+/// of different skeletons).
+pub const CROSS_SKELETON_MAX_N: usize = 14;
+
+/// Two valid embeddings, (class, index in [`Study::embeddings`]) each, whose
+/// skeleton polygons' bounding boxes meet: whether their interiors
+/// overlap, and their intersection, traced when first asked for
+/// ([`Study::intersection`]).
+#[derive(Debug, Clone)]
+pub struct EmbeddingPair {
+    pub first: (usize, usize),
+    pub second: (usize, usize),
+    overlap: bool,
+    intersection: OnceCell<Intersection>,
+}
+
+impl EmbeddingPair {
+    pub fn same_skeleton(&self) -> bool {
+        self.first.0 == self.second.0
+    }
+
+    pub fn overlap(&self) -> bool {
+        self.overlap
+    }
+}
+
+/// Two different valid embeddings of one skeleton whose embedded skeleton
+/// polygons overlap (the premise of Theorem 4.2), by class and position in
+/// [`Study::embeddings`], `a < b`.
+#[derive(Debug, Clone)]
+pub struct OverlappingPair {
+    pub class: usize,
+    pub a: usize,
+    pub b: usize,
+    /// Its index in [`Study::embedding_pairs`].
+    pub pair: usize,
+    /// Whether the embedded kernels overlap too (Theorem 4.3's premise).
+    pub kernels_overlap: bool,
+    /// Whether a witness of one sees a witness of the other, by
+    /// [`Sightlines::regions_by_lines`].
+    pub sight: Mutual,
+}
+
+/// The edges of one 2-cell of a class, classified by Def 5.2 in the
+/// embedding the cell lies in.
+#[derive(Debug, Clone)]
+pub struct CellEdges {
+    pub cell: wai_cells::FaceId,
+    /// Its embedding: the index in [`Study::embeddings`] of the class.
+    pub embedding: usize,
+    /// By edge of the cell (from vertex k to k + 1 of its face points).
+    pub kinds: Vec<CellEdgeKind>,
+}
+
+/// The gaps of one class's skeleton (Def 5.5) as boundary chains, the
+/// pairs of them Def 5.6 relates, which valid embeddings overlap, and the
+/// interweavement graph (Def 5.9) they make. Embeddings are named by their
+/// position j in the class's [`CandidateSets::embeddings`].
+#[derive(Debug, Clone, Default)]
+pub struct GapStructure {
+    /// One chain per (gap, set C_{i,j} it is consecutive in).
+    pub chains: Vec<GapChain>,
+    /// (a, b, relation) for chains a < b of different pairs of map edges
+    /// that are nested or interweaved.
+    pub related: Vec<(usize, usize, GapRelation)>,
+    /// The pairs j1 < j2 of valid embeddings whose skeleton polygons'
+    /// interiors overlap (Def 5.7's relation).
+    pub overlapping: Vec<(usize, usize)>,
+    pub graph: Interweavement,
+}
+
+impl GapStructure {
+    /// From the chains of a class's gaps, the overlapping pairs of its `t`
+    /// valid embeddings: relates every two chains of different pairs of
+    /// map edges and builds the graph.
+    pub fn new(chains: Vec<GapChain>, overlapping: Vec<(usize, usize)>, t: usize) -> GapStructure {
+        let mut related = Vec::new();
+        for a in 0..chains.len() {
+            for b in a + 1..chains.len() {
+                if chains[a].same_edges(&chains[b]) {
+                    continue;
+                }
+                let rel = chains[a].relation(&chains[b]);
+                if rel != GapRelation::Apart {
+                    related.push((a, b, rel));
+                }
+            }
+        }
+        let mut g = GapStructure {
+            chains,
+            related,
+            overlapping,
+            graph: Interweavement::default(),
+        };
+        g.graph = Interweavement::new(t, &g.overlapping, &g.interweaved());
+        g
+    }
+
+    /// The interweaved pairs ((j1, i1), (j2, i2)) of different embeddings.
+    pub fn interweaved(&self) -> Vec<(EmbeddedEdge, EmbeddedEdge)> {
+        self.related
+            .iter()
+            .filter(|r| r.2 == GapRelation::Interweaved)
+            .map(|&(a, b, _)| (&self.chains[a], &self.chains[b]))
+            .filter(|(g, h)| g.j != h.j)
+            .map(|(g, h)| ((g.j, g.i), (h.j, h.i)))
+            .collect()
+    }
+
+    /// Whether valid embeddings j1 and j2 overlap.
+    pub fn overlap(&self, j1: usize, j2: usize) -> bool {
+        self.overlapping.contains(&(j1.min(j2), j1.max(j2)))
+    }
+}
+
+/// An embedding of a class's skeleton (Def 3.11) and its kernel
+/// h(ker V*) (Def 3.12), in map coordinates.
+#[derive(Debug, Clone)]
+pub struct Embedded {
+    pub embedding: Embedding,
+    pub kernel: ConvexRegion,
+}
+
+impl<'m> Study<'m> {
+    /// A study of `map` with nothing computed yet.
+    pub fn new(map: &'m Map) -> Study<'m> {
+        Study {
+            map,
+            index: OnceCell::new(),
+            decomposition: OnceCell::new(),
+            polygons: RefCell::new(BTreeMap::new()),
+            embeddings: OnceCell::new(),
+            witnesses: OnceCell::new(),
+            sightlines: OnceCell::new(),
+            overlapping: OnceCell::new(),
+            rings: OnceCell::new(),
+            pairs: OnceCell::new(),
+            views: OnceCell::new(),
+            valid: OnceCell::new(),
+            candidate_sets: OnceCell::new(),
+            cell_edges: OnceCell::new(),
+            gaps: OnceCell::new(),
+            fans: OnceCell::new(),
+            crossings: RefCell::new(HashMap::new()),
+            timer: Timer::default(),
+        }
+    }
+
+    pub fn map(&self) -> &'m Map {
+        self.map
+    }
+
+    /// The own time of each stage built so far ([`crate::profile`]).
+    pub fn stage_times(&self) -> StageTimes {
+        self.timer.times()
+    }
+
+    /// The time spent building stages so far: a reader's own time is its
+    /// wall time minus this total's growth while it ran.
+    pub fn stage_total(&self) -> std::time::Duration {
+        self.timer.total()
+    }
+
+    /// The production visibility index of the map.
+    pub fn index(&self) -> &VisibilityIndex<'m> {
+        self.index
+            .get_or_init(|| self.timer.stage("index", || VisibilityIndex::new(self.map)))
+    }
+
+    /// The visibility cell decomposition (Def 3.8) with its cells of every
+    /// dimension, their skeletons and classes.
+    pub fn decomposition(&self) -> &Decomposition<'m> {
+        self.decomposition.get_or_init(|| {
+            self.timer
+                .stage("decomposition", || Decomposition::new(self.map))
+        })
+    }
+
+    /// The decomposition's arrangement of map edges and rays.
+    pub fn arrangement(&self) -> &Arrangement {
+        self.decomposition().arrangement()
+    }
+
+    /// The visibility rays (Def 3.8).
+    pub fn rays(&self) -> &[VisibilityRay] {
+        self.decomposition().rays()
+    }
+
+    /// By class of the decomposition (its index in
+    /// [`Decomposition::skeletons`]): every embedding of its skeleton in
+    /// the map, by ascending h(v0), with its kernel.
+    pub fn embeddings(&self) -> &[Vec<Embedded>] {
+        self.embeddings.get_or_init(|| {
+            self.timer.stage("embeddings", || {
+                let embedder = Embedder::new(self.index());
+                self.decomposition()
+                    .skeletons()
+                    .iter()
+                    .map(|key| {
+                        embedder
+                            .embeddings(key)
+                            .into_iter()
+                            .map(|embedding| Embedded {
+                                kernel: embedding.kernel(self.map),
+                                embedding,
+                            })
+                            .collect()
+                    })
+                    .collect()
+            })
+        })
+    }
+
+    /// By class and embedding (as [`Study::embeddings`]): the witness
+    /// region (Def 4.1), the class's cells at the embedding's own v0.
+    pub fn witnesses(&self) -> &[Vec<Witnesses>] {
+        self.witnesses.get_or_init(|| {
+            self.timer.stage("witnesses", || {
+                let d = self.decomposition();
+                self.embeddings()
+                    .iter()
+                    .enumerate()
+                    .map(|(class, all)| {
+                        let origins: Vec<usize> = all.iter().map(|h| h.embedding.origin).collect();
+                        witness_regions(d, class, &origins)
+                    })
+                    .collect()
+            })
+        })
+    }
+
+    /// The map prepared for exact mutual-visibility tests of regions.
+    pub fn sightlines(&self) -> &Sightlines<'m> {
+        self.sightlines
+            .get_or_init(|| self.timer.stage("sightlines", || Sightlines::new(self.map)))
+    }
+
+    /// Every pair of different valid embeddings of one skeleton whose
+    /// skeleton polygons overlap, with whether their kernels overlap and
+    /// whether their witnesses see each other.
+    pub fn overlapping_pairs(&self) -> &[OverlappingPair] {
+        self.overlapping.get_or_init(|| {
+            self.timer.stage("overlapping pairs", || {
+                let witnesses = self.witnesses();
+                let embeddings = self.embeddings();
+                self.embedding_pairs()
+                    .iter()
+                    .enumerate()
+                    .filter(|(_, p)| p.same_skeleton() && p.overlap())
+                    .map(|(pair, p)| {
+                        let (class, a, b) = (p.first.0, p.first.1, p.second.1);
+                        let kernels_overlap = kernels_overlap(
+                            &embeddings[class][a].kernel,
+                            &embeddings[class][b].kernel,
+                        );
+                        let ws = &witnesses[class];
+                        let sight = self
+                            .sightlines()
+                            .regions_by_lines(&ws[a].pieces(), &ws[b].pieces());
+                        OverlappingPair {
+                            class,
+                            a,
+                            b,
+                            pair,
+                            kernels_overlap,
+                            sight,
+                        }
+                    })
+                    .collect()
+            })
+        })
+    }
+
+    /// The intersection of the skeleton polygons of `pair` (one of
+    /// [`Study::embedding_pairs`]), if their interiors overlap; traced once.
+    pub fn intersection<'s>(&'s self, pair: &'s EmbeddingPair) -> Option<&'s Intersection> {
+        if !pair.overlap {
+            return None;
+        }
+        let rings = self.skeleton_rings();
+        Some(pair.intersection.get_or_init(|| {
+            self.timer.stage("intersections", || {
+                let (p, q) = (
+                    &rings[pair.first.0][pair.first.1],
+                    &rings[pair.second.0][pair.second.1],
+                );
+                Intersection::of(&p.ring, &q.ring)
+            })
+        }))
+    }
+
+    /// By class and embedding: the embedded skeleton polygon h(V◇) with its
+    /// artificial edges marked.
+    pub fn skeleton_rings(&self) -> &[Vec<SkeletonRing>] {
+        self.rings.get_or_init(|| {
+            self.timer.stage("skeleton rings", || {
+                let keys = self.decomposition().skeletons();
+                self.embeddings()
+                    .iter()
+                    .enumerate()
+                    .map(|(class, all)| {
+                        let artificial: Vec<bool> =
+                            keys[class].labels.iter().map(Option::is_some).collect();
+                        all.iter()
+                            .map(|h| {
+                                SkeletonRing::new(
+                                    &h.embedding.polygon(self.map),
+                                    artificial.clone(),
+                                )
+                            })
+                            .collect()
+                    })
+                    .collect()
+            })
+        })
+    }
+
+    /// The pairs of valid embeddings the sec. 4.4 claims examine: of one
+    /// skeleton always, of different skeletons on maps of at most
+    /// [`CROSS_SKELETON_MAX_N`] vertices; those whose polygons' bounding
+    /// boxes meet, and whether their interiors overlap.
+    pub fn embedding_pairs(&self) -> &[EmbeddingPair] {
+        self.pairs.get_or_init(|| {
+            self.timer.stage("embedding pairs", || {
+                let rings = self.skeleton_rings();
+                let valid: Vec<(usize, usize)> = self
+                    .witnesses()
+                    .iter()
+                    .enumerate()
+                    .flat_map(|(c, ws)| {
+                        ws.iter()
+                            .enumerate()
+                            .filter(|(_, w)| w.is_valid())
+                            .map(move |(i, _)| (c, i))
+                    })
+                    .collect();
+                let cross = self.map.n() <= CROSS_SKELETON_MAX_N;
+                let bounds: Vec<Bounds> = valid
+                    .iter()
+                    .map(|&(c, i)| Bounds::of(&rings[c][i].ring))
+                    .collect();
+                let mut out = Vec::new();
+                for a in 0..valid.len() {
+                    for b in a + 1..valid.len() {
+                        if valid[a].0 != valid[b].0 && !cross {
+                            continue;
+                        }
+                        if !bounds[a].meets_box(&bounds[b]) {
+                            continue;
+                        }
+                        let (p, q) = (
+                            &rings[valid[a].0][valid[a].1],
+                            &rings[valid[b].0][valid[b].1],
+                        );
+                        out.push(EmbeddingPair {
+                            first: valid[a],
+                            second: valid[b],
+                            overlap: interiors_overlap(&p.ring, &q.ring),
+                            intersection: OnceCell::new(),
+                        });
+                    }
+                }
+                out
+            })
+        })
+    }
+
+    /// By class, embedding and witness cell: the map edge seen through
+    /// each skeleton edge (`None` for full edges), from V_w of the cell's
+    /// representative point.
+    pub fn views(&self) -> &[Vec<Views>] {
+        self.views.get_or_init(|| {
+            self.timer.stage("views", || {
+                let witnesses = self.witnesses();
+                self.embeddings()
+                    .iter()
+                    .zip(witnesses)
+                    .map(|(hs, ws)| {
+                        hs.iter()
+                            .zip(ws)
+                            .map(|(h, w)| witness_views(self.index(), &h.embedding, w))
+                            .collect()
+                    })
+                    .collect()
+            })
+        })
+    }
+
+    /// Of embedding `i` of class `class`: one sight fan per witness cell
+    /// and artificial edge (Def 4.4's lines of sight,
+    /// `wai_embed::SightFan`); built when first asked for, as most
+    /// embeddings' fans are never needed (building all of them costs more
+    /// than every other chapter 4 structure together).
+    pub fn fans(&self, class: usize, i: usize) -> &[SightFan] {
+        let slots = self.fans.get_or_init(|| {
+            self.embeddings()
+                .iter()
+                .map(|hs| hs.iter().map(|_| OnceCell::new()).collect())
+                .collect()
+        });
+        slots[class][i].get_or_init(|| {
+            self.timer.stage("sight fans", || {
+                sight_fans(
+                    self.map,
+                    &self.embeddings()[class][i].embedding,
+                    &self.witnesses()[class][i],
+                    &self.views()[class][i],
+                )
+            })
+        })
+    }
+
+    /// Def 4.4 on pair `pair` of [`Study::overlapping_pairs`]: whether
+    /// candidate edge `first.1` of artificial edge `first.0` (a skeleton
+    /// edge's index) in the pair's embedding `a` crosses candidate edge
+    /// `second.1` of `second.0` in embedding `b`, with two lines of sight
+    /// that show it. Exact over whole witness regions
+    /// (`wai_embed::crossing`, each witness cell's fan against each);
+    /// decided once.
+    pub fn crosses(
+        &self,
+        pair: usize,
+        first: (usize, usize),
+        second: (usize, usize),
+    ) -> Option<Crossing> {
+        let key = (pair, first, second);
+        if let Some(x) = self.crossings.borrow().get(&key) {
+            return x.clone();
+        }
+        let p = &self.overlapping_pairs()[pair];
+        let ring = self.map.vertices();
+        let found = self.timer.stage("crossings", || {
+            (first.1 != second.1)
+                .then(|| {
+                    self.fans_seeing(p.class, p.a, first)
+                        .flat_map(|f| self.fans_seeing(p.class, p.b, second).map(move |g| (f, g)))
+                        .find_map(|(f, g)| crossing(ring, f, g, false))
+                })
+                .flatten()
+        });
+        self.crossings.borrow_mut().insert(key, found.clone());
+        found
+    }
+
+    /// The fans of embedding `i` of class `class` (as [`Study::fans`])
+    /// whose witness cells see candidate edge `key.1` through artificial
+    /// edge `key.0`.
+    pub fn fans_seeing(
+        &self,
+        class: usize,
+        i: usize,
+        (a, c): (usize, usize),
+    ) -> impl Iterator<Item = &SightFan> + '_ {
+        self.fans(class, i)
+            .iter()
+            .filter(move |f| f.artificial == a && f.edge == c)
+    }
+
+    /// By class and embedding: the valid candidate edges (Def 4.1) of
+    /// each skeleton edge (empty for full edges), read off the witness
+    /// views once.
+    pub fn valid_candidates(&self, class: usize, embedding: usize) -> &[Vec<usize>] {
+        &self.valid.get_or_init(|| {
+            self.timer.stage("valid candidates", || {
+                self.embeddings()
+                    .iter()
+                    .zip(self.views())
+                    .map(|(hs, views)| {
+                        hs.iter()
+                            .zip(views)
+                            .map(|(h, v)| {
+                                wai_embed::valid_from_views(h.embedding.vertices.len(), v)
+                            })
+                            .collect()
+                    })
+                    .collect()
+            })
+        })[class][embedding]
+    }
+
+    /// By class: the sets C_{i,j} of valid candidate edges over the valid
+    /// embeddings of its skeleton, with its single and multiple candidate
+    /// edges (Def 5.4) and gaps (Def 5.5).
+    pub fn candidate_sets(&self) -> &[CandidateSets] {
+        self.candidate_sets.get_or_init(|| {
+            self.timer.stage("candidate sets", || {
+                let keys = self.decomposition().skeletons();
+                (0..keys.len())
+                    .map(|class| {
+                        let artificial: Vec<usize> = keys[class]
+                            .labels
+                            .iter()
+                            .enumerate()
+                            .filter_map(|(i, l)| l.as_ref().map(|_| i))
+                            .collect();
+                        let valid: Vec<(usize, Vec<Vec<usize>>)> = self.witnesses()[class]
+                            .iter()
+                            .enumerate()
+                            .filter(|(_, w)| w.is_valid())
+                            .map(|(j, _)| (j, self.valid_candidates(class, j).to_vec()))
+                            .collect();
+                        CandidateSets::new(self.map, artificial, valid)
+                    })
+                    .collect()
+            })
+        })
+    }
+
+    /// By class: the gaps as boundary chains, the nested and interweaved
+    /// pairs (Def 5.6), and the interweavement graph (Defs 5.7–5.9).
+    pub fn gap_structures(&self) -> &[GapStructure] {
+        self.gaps.get_or_init(|| {
+            self.timer.stage("gap structures", || {
+                let sets = self.candidate_sets();
+                let mut overlapping: Vec<Vec<(usize, usize)>> = vec![Vec::new(); sets.len()];
+                for p in self.embedding_pairs() {
+                    if p.same_skeleton() && p.overlap() {
+                        let class = p.first.0;
+                        let j = |i: usize| sets[class].embeddings.binary_search(&i).expect("valid");
+                        let (a, b) = (j(p.first.1), j(p.second.1));
+                        overlapping[class].push((a.min(b), a.max(b)));
+                    }
+                }
+                sets.iter()
+                    .zip(overlapping)
+                    .map(|(c, overlapping)| {
+                        GapStructure::new(gap_chains(self.map, &c.sets), overlapping, c.t())
+                    })
+                    .collect()
+            })
+        })
+    }
+
+    /// By class, by 2-cell: the cell's edges as kernel or wedge edges
+    /// (Def 5.2) of the embedding it lies in (the one whose origin is the
+    /// cell's skeleton origin), the wedges those of its valid candidate
+    /// edges.
+    pub fn cell_edges(&self) -> &[Vec<CellEdges>] {
+        self.cell_edges.get_or_init(|| {
+            self.timer.stage("cell edges", || {
+                let d = self.decomposition();
+                let arr = self.arrangement();
+                d.classes()
+                    .iter()
+                    .enumerate()
+                    .map(|(class, cells)| {
+                        let hs = &self.embeddings()[class];
+                        let mut lines: BTreeMap<usize, Vec<(wai_exact::Point, wai_exact::Point)>> =
+                            BTreeMap::new();
+                        cells
+                            .iter()
+                            .map(|&f| {
+                                let o = d.origin_of(f);
+                                let j = hs
+                                    .iter()
+                                    .position(|h| h.embedding.origin == o)
+                                    .expect("a cell's skeleton is embedded at its own origin");
+                                let lines = lines.entry(j).or_insert_with(|| {
+                                    embedding_wedge_lines(
+                                        self.map,
+                                        &hs[j].embedding,
+                                        self.valid_candidates(class, j),
+                                    )
+                                });
+                                let kinds =
+                                    classify_cell_edges(&hs[j].kernel, lines, &arr.face_points(f));
+                                CellEdges {
+                                    cell: f,
+                                    embedding: j,
+                                    kinds,
+                                }
+                            })
+                            .collect()
+                    })
+                    .collect()
+            })
+        })
+    }
+
+    /// V_p of each of [`sample::viewpoints`]`(map, limit)`, by the
+    /// production algorithm.
+    pub fn sampled_polygons(&self, limit: usize) -> Rc<Vec<VisibilityPolygon>> {
+        if let Some(v) = self.polygons.borrow().get(&limit) {
+            return Rc::clone(v);
+        }
+        let v = Rc::new(self.timer.stage("sampled polygons", || {
+            sample::visibility_polygons_with(self.map, self.index(), limit)
+        }));
+        self.polygons.borrow_mut().insert(limit, Rc::clone(&v));
+        v
+    }
+}
+
+impl std::fmt::Debug for Study<'_> {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_struct("Study")
+            .field("map", &sample::map_name(self.map))
+            .field("index", &self.index.get().is_some())
+            .field("decomposition", &self.decomposition.get().is_some())
+            .field(
+                "sampled",
+                &self.polygons.borrow().keys().collect::<Vec<_>>(),
+            )
+            .finish()
+    }
+}
+
+impl<'m> From<&'m Map> for Study<'m> {
+    fn from(map: &'m Map) -> Self {
+        Study::new(map)
+    }
+}

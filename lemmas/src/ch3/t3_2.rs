@@ -1,0 +1,403 @@
+//! Claim T3.2 (Theorem 3.2): if p and q have the same position relative to
+//! the origins v0 of their skeletons, then V_p = V_q if and only if
+//! V*_p = V*_q (polygons compared relative to v0).
+//!
+//! The constructive reading: V_p is determined by V*_p and p − v0 alone.
+//!
+//! ## Trust
+//! Sampled viewpoints; every comparison is exact. For each map the checker
+//! computes V_p with the production algorithm for
+//! [`wai_study::sample::viewpoints`] and examines:
+//! - **every viewpoint**: V*_p is built ([`wai_visibility::Skeleton::of`];
+//!   failing to build it is a violation) and V_p is rebuilt from the
+//!   skeleton key and p − v0 alone ([`wai_visibility::reconstruct`]); the
+//!   rebuilt vertex sequence must equal V_p's, exactly, relative to v0;
+//! - **every pair in different embeddings**: the sampled viewpoints are
+//!   grouped by skeleton key; for p in a group and every other origin o of
+//!   the group (o ≠ v0 of p), the translate q = p + (o − v0) must lie inside
+//!   the map (p lies in ker V◇_p, Lemma 3.4, and V◇_p ⊆ V_p), and with V_q
+//!   computed afresh both directions of the theorem are tested:
+//!   V_q = V_p + (o − v0) (points, spurious flags and edge kinds) holds iff
+//!   V*_q = V*_p with origin o. When neither holds, q is a point of the
+//!   embedding's kernel that is no witness (Remark 3.4) and the instance
+//!   holds trivially; [`Stats::same_skeleton`] counts the pairs where the
+//!   premise held;
+//! - **every translate onto another reflex map vertex**: the same test with
+//!   v0 moved onto each other reflex vertex of M (the only candidates for an
+//!   origin) that no sampled viewpoint of the group has as origin, whenever
+//!   the translate lies inside the map. Mostly the skeletons differ and the
+//!   "only if" direction is what is tested; where they agree, both.
+//!
+//! Pairs in different embeddings are rare on random maps; the thesis
+//! families contribute them on purpose (`corridor-niches`: the viewpoint
+//! deep in each niche has the same skeleton, Fig 3.12), because
+//! [`wai_study::sample::viewpoints`] starts with a family's own viewpoints. What
+//! is not covered: viewpoints outside the sample, and pairs of embeddings
+//! the sample does not hit.
+
+use std::collections::BTreeMap;
+
+use serde_json::json;
+use wai_exact::{locate_rat, Containment, Point, RatPoint};
+use wai_map::Map;
+use wai_visibility::{reconstruct, Skeleton, SkeletonKey, VisibilityIndex, VisibilityPolygon};
+
+use crate::framework::{Checker, Report, Violation};
+use wai_study::sample::{self, translate};
+use wai_study::Study;
+
+const ID: &str = "T3.2";
+
+/// The checker of this claim.
+pub const CHECKER: Checker = Checker::new(ID, check_study);
+
+/// What one map contributed, beyond the report.
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub struct Stats {
+    /// Viewpoints whose V_p was rebuilt from its skeleton.
+    pub rebuilt: u64,
+    /// Viewpoints translated into another embedding of their skeleton met
+    /// in the sample.
+    pub pairs: u64,
+    /// Viewpoints translated to put their origin v0 on another reflex map
+    /// vertex (not an origin met in the sample), landing inside the map.
+    pub translates: u64,
+    /// Of all translates, those whose skeleton was the same, with the
+    /// target origin: the premise of the "if" direction held.
+    pub same_skeleton: u64,
+}
+
+/// Checks T3.2 on the sampled viewpoints of a map.
+fn check_study(study: &Study<'_>) -> Report {
+    check_with_stats(study, sample::VIEWPOINTS).0
+}
+
+/// The check on `viewpoints` sampled viewpoints, with the counts of each
+/// kind of instance.
+pub fn check_with_stats(study: &Study<'_>, viewpoints: usize) -> (Report, Stats) {
+    let map = study.map();
+    let index = study.index();
+    let mut report = Report::new(ID);
+    let mut stats = Stats::default();
+    let mut groups: BTreeMap<SkeletonKey, Vec<(usize, Point)>> = BTreeMap::new();
+    let vps: Vec<VisibilityPolygon> = sample::viewpoints(map, viewpoints)
+        .iter()
+        .map(|p| {
+            index.visibility_polygon(p).unwrap_or_else(|e| {
+                panic!(
+                    "V_p of interior viewpoint {p} of {}: {e}",
+                    sample::map_name(map)
+                )
+            })
+        })
+        .collect();
+    for (k, vp) in vps.iter().enumerate() {
+        let (r, skeleton) = rebuild(map, vp);
+        report.examined += r.examined;
+        report.violations.extend(r.violations);
+        stats.rebuilt += 1;
+        if let Some(sk) = skeleton {
+            groups.entry(sk.key()).or_default().push((k, sk.origin()));
+        }
+    }
+    let reflex: Vec<Point> = map
+        .reflex_vertices()
+        .iter()
+        .map(|&m| map.vertices()[m])
+        .collect();
+    for members in groups.values() {
+        let mut origins: Vec<Point> = members.iter().map(|&(_, o)| o).collect();
+        origins.sort_by_key(|o| (o.x, o.y));
+        origins.dedup();
+        for &(k, own) in members {
+            // Other embeddings of the skeleton met in the sample.
+            for &o in origins.iter().filter(|&&o| o != own) {
+                let (r, outcome) = check_translated(index, &vps[k], o, true);
+                report.examined += r.examined;
+                report.violations.extend(r.violations);
+                stats.pairs += 1;
+                stats.same_skeleton += u64::from(outcome == Some(true));
+            }
+            // Every other reflex map vertex as a would-be origin: the
+            // "only if" direction, and the "if" direction where the
+            // skeleton happens to be the same.
+            for &o in reflex
+                .iter()
+                .filter(|&&o| o != own && !origins.contains(&o))
+            {
+                let (r, outcome) = check_translated(index, &vps[k], o, false);
+                report.examined += r.examined;
+                report.violations.extend(r.violations);
+                stats.translates += u64::from(outcome.is_some());
+                stats.same_skeleton += u64::from(outcome == Some(true));
+            }
+        }
+    }
+    (report, stats)
+}
+
+/// T3.2 on one V_p of `map`: rebuild it from (V*_p, p − v0) and compare.
+/// One instance.
+pub fn check_polygon(map: &Map, vp: &VisibilityPolygon) -> Report {
+    rebuild(map, vp).0
+}
+
+/// [`check_polygon`] with V_p rebuilt from `key_of(V*_p's key)` instead of
+/// the key itself: how [`crate::planted`] feeds the checker a wrong key, to
+/// show that the search finds and shrinks the violations this causes.
+pub fn check_polygon_with_key(
+    map: &Map,
+    vp: &VisibilityPolygon,
+    key_of: fn(SkeletonKey) -> SkeletonKey,
+) -> Report {
+    rebuild_keyed(map, vp, key_of).0
+}
+
+fn violation(
+    map: &Map,
+    vp: &VisibilityPolygon,
+    what: String,
+    extra: serde_json::Value,
+) -> Violation {
+    let mut data = sample::replay(map, vp);
+    data.insert("instance".into(), extra);
+    Violation::with_data(
+        format!(
+            "map {}, viewpoint {}: {what}",
+            sample::map_name(map),
+            vp.viewpoint()
+        ),
+        data.into(),
+    )
+}
+
+/// The rebuild instance, and the skeleton if it could be built.
+fn rebuild(map: &Map, vp: &VisibilityPolygon) -> (Report, Option<Skeleton>) {
+    rebuild_keyed(map, vp, |key| key)
+}
+
+/// [`rebuild`] from `key_of` of the skeleton's key.
+fn rebuild_keyed(
+    map: &Map,
+    vp: &VisibilityPolygon,
+    key_of: fn(SkeletonKey) -> SkeletonKey,
+) -> (Report, Option<Skeleton>) {
+    let mut report = Report::new(ID);
+    let sk = match Skeleton::of(map, vp) {
+        Ok(sk) => sk,
+        Err(e) => {
+            report.record(Some(violation(
+                map,
+                vp,
+                format!("V*_p cannot be built: {e}"),
+                json!({"skeleton_error": e.to_string()}),
+            )));
+            return (report, None);
+        }
+    };
+    let o = sk.origin();
+    let rebuilt = reconstruct(&key_of(sk.key()), &translate(vp.viewpoint(), -o.x, -o.y));
+    let points = vp.points();
+    let expected = points
+        .iter()
+        .position(|q| *q == RatPoint::from(o))
+        .map(|start| {
+            let mut rel: Vec<RatPoint> = points.iter().map(|q| translate(q, -o.x, -o.y)).collect();
+            rel.rotate_left(start);
+            rel
+        });
+    let ok = expected.as_ref() == Some(&rebuilt);
+    report.record((!ok).then(|| {
+        let show = |v: &[RatPoint]| v.iter().map(ToString::to_string).collect::<Vec<_>>();
+        violation(
+            map,
+            vp,
+            format!(
+                "V_p rebuilt from V*_p and p - v0 (v0 = {o:?}) differs from V_p{}",
+                if expected.is_none() {
+                    ": v0 is not a vertex of V_p"
+                } else {
+                    ""
+                }
+            ),
+            json!({"origin": [o.x.to_string(), o.y.to_string()],
+                   "rebuilt_relative": show(&rebuilt),
+                   "vp_relative": expected.as_deref().map(show)}),
+        )
+    }));
+    (report, Some(sk))
+}
+
+/// T3.2 across embeddings, one instance: translate the viewpoint of `vp` by
+/// `target − v0` (v0 the origin of V*_p) and test that V_q equals the
+/// translate of V_p iff V*_q equals V*_p with origin `target`. Returns the
+/// report and, if an instance was examined, whether the skeletons were
+/// equal (the premise held).
+///
+/// If `embedding` is true, `target` is the origin of another embedding of
+/// V*_p (the origin of a sampled viewpoint with the same skeleton), and the
+/// translate must lie inside the map: a translate outside is a violation.
+/// Otherwise a translate that is not inside the map is no instance.
+///
+/// `vp` must be a visibility polygon of `index`'s map whose skeleton can be
+/// built.
+pub fn check_translated(
+    index: &VisibilityIndex<'_>,
+    vp: &VisibilityPolygon,
+    target: Point,
+    embedding: bool,
+) -> (Report, Option<bool>) {
+    let map = index.map();
+    let mut report = Report::new(ID);
+    let sk = Skeleton::of(map, vp).expect("the caller built this skeleton");
+    let o = sk.origin();
+    let (dx, dy) = (target.x - o.x, target.y - o.y);
+    let q = translate(vp.viewpoint(), dx, dy);
+    let base = json!({"origin": [o.x.to_string(), o.y.to_string()],
+                      "target_origin": [target.x.to_string(), target.y.to_string()],
+                      "translated_viewpoint": q.to_string(),
+                      "translated_viewpoint_file_units": sample::point_json(map, &q)});
+    if locate_rat(map.vertices(), &q) != Containment::Inside {
+        if !embedding {
+            return (report, None);
+        }
+        report.record(Some(violation(
+            map,
+            vp,
+            format!(
+                "the translate {q} of p into the embedding at {target:?} is not inside the map"
+            ),
+            base,
+        )));
+        return (report, Some(false));
+    }
+    let vq = index
+        .visibility_polygon(&q)
+        .expect("an interior point has a visibility polygon");
+    let same_skeleton =
+        Skeleton::of(map, &vq).is_ok_and(|skq| skq.origin() == target && skq.key() == sk.key());
+    let translated: Vec<RatPoint> = vp.points().iter().map(|x| translate(x, dx, dy)).collect();
+    let same_polygon = vq.points() == translated
+        && vq
+            .vertices()
+            .iter()
+            .zip(vp.vertices())
+            .all(|(a, b)| a.spurious == b.spurious)
+        && vq
+            .edges()
+            .iter()
+            .zip(vp.edges())
+            .all(|(a, b)| a.kind == b.kind);
+    report.record((same_skeleton != same_polygon).then(|| {
+        let mut extra = base.clone();
+        extra["same_skeleton"] = json!(same_skeleton);
+        extra["same_polygon"] = json!(same_polygon);
+        extra["vq"] = json!(vq
+            .points()
+            .iter()
+            .map(ToString::to_string)
+            .collect::<Vec<_>>());
+        violation(
+            map,
+            vp,
+            format!(
+                "translated to {q} (embedding at {target:?}): V*_q = V*_p is {same_skeleton} \
+                 but V_q = V_p + t is {same_polygon}"
+            ),
+            extra,
+        )
+    }));
+    (report, Some(same_skeleton))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn corridor(k: u32) -> (Map, Vec<RatPoint>) {
+        let map = wai_gen::family("corridor-niches", &[k]).unwrap();
+        let views = wai_gen::corridor_niches_viewpoints(k)
+            .into_iter()
+            .map(RatPoint::from)
+            .collect();
+        (map, views)
+    }
+
+    #[test]
+    fn a_correct_polygon_passes() {
+        let (map, views) = corridor(3);
+        let index = VisibilityIndex::new(&map);
+        let vp = index.visibility_polygon(&views[0]).unwrap();
+        let r = check_polygon(&map, &vp);
+        assert_eq!(
+            (r.examined, r.violations.len()),
+            (1, 0),
+            "{:?}",
+            r.violations
+        );
+        let (r, stats) = check_with_stats(&Study::new(&map), sample::VIEWPOINTS);
+        assert!(r.violations.is_empty(), "{:?}", r.violations);
+        // Every niche viewpoint is translated into the two other niches.
+        assert!(stats.pairs >= 6, "{stats:?}");
+        assert!(stats.same_skeleton >= 6, "{stats:?}");
+        assert_eq!(r.examined, stats.rebuilt + stats.pairs + stats.translates);
+        assert!(stats.translates > 0, "{stats:?}");
+    }
+
+    /// V_p of the first niche viewpoint with its first spurious vertex
+    /// moved one unit along its edge direction.
+    fn moved_spurious_vertex(vp: &VisibilityPolygon) -> VisibilityPolygon {
+        let mut vertices = vp.vertices().to_vec();
+        let s = vertices
+            .iter()
+            .position(|v| v.spurious)
+            .expect("a spurious vertex");
+        vertices[s].point = translate(&vertices[s].point, 1, 0);
+        VisibilityPolygon::from_parts(vp.viewpoint().clone(), vertices, vp.edges().to_vec())
+    }
+
+    #[test]
+    fn a_moved_vertex_is_reported() {
+        let (map, views) = corridor(3);
+        let vp = VisibilityIndex::new(&map)
+            .visibility_polygon(&views[0])
+            .unwrap();
+        let r = check_polygon(&map, &moved_spurious_vertex(&vp));
+        assert_eq!(r.violations.len(), 1);
+        let v = &r.violations[0];
+        assert_eq!(v.data["map"], "corridor-niches/k=3");
+        assert_eq!(v.data["viewpoint"], json!(["5", "-3"]));
+        assert!(v.data["instance"]["rebuilt_relative"].is_array());
+        // Moving a non-spurious vertex: the skeleton keeps the map vertex,
+        // so the rebuilt polygon differs from the moved one.
+        let mut vertices = vp.vertices().to_vec();
+        let k = vertices.iter().position(|v| !v.spurious).unwrap();
+        vertices[k].point = translate(&vertices[k].point, 0, 1);
+        let broken =
+            VisibilityPolygon::from_parts(vp.viewpoint().clone(), vertices, vp.edges().to_vec());
+        assert_eq!(check_polygon(&map, &broken).violations.len(), 1);
+    }
+
+    #[test]
+    fn a_moved_vertex_is_reported_across_embeddings() {
+        let (map, views) = corridor(3);
+        let index = VisibilityIndex::new(&map);
+        let vp = index.visibility_polygon(&views[0]).unwrap();
+        let other = Skeleton::of(&map, &index.visibility_polygon(&views[2]).unwrap())
+            .unwrap()
+            .origin();
+        let (r, same) = check_translated(&index, &vp, other, true);
+        assert!(
+            same == Some(true) && r.violations.is_empty(),
+            "{:?}",
+            r.violations
+        );
+        let (r, same) = check_translated(&index, &moved_spurious_vertex(&vp), other, true);
+        assert_eq!(same, Some(true), "the skeleton ignores spurious vertices");
+        assert_eq!(r.violations.len(), 1, "{:?}", r.violations);
+        let v = &r.violations[0];
+        assert_eq!(v.data["instance"]["same_skeleton"], true);
+        assert_eq!(v.data["instance"]["same_polygon"], false);
+        assert_eq!(v.data["instance"]["translated_viewpoint"], "(13, -3)");
+    }
+}

@@ -1,0 +1,264 @@
+//! Claim T3.3a (Theorem 3.3(1)): every visibility cell — every bounded face
+//! of the arrangement of the map edges and all visibility rays (Def 3.8) —
+//! is a convex polygon.
+//!
+//! Convex means: walking the cell's boundary counter-clockwise never turns
+//! clockwise (no reflex vertex), never reverses (no spike), and the edge
+//! directions turn once around (winding 1). Straight (180°) vertices are
+//! allowed — the thesis's proof only excludes reflex vertices — and
+//! counted ([`Stats::straight`]). They are rare: rays end only on ∂M, so no
+//! ray ends on another ray inside the map; a cell gets one only where its
+//! boundary passes straight through a vertex of degree ≥ 3 whose other
+//! edges lie outside the cell.
+//!
+//! ## Trust
+//! Exhaustive over the cells of each map, exact. The checker builds the
+//! decomposition with the production code ([`wai_cells::visibility_rays`],
+//! [`wai_cells::Arrangement::new`]) and examines **every** cell: each turn
+//! of its boundary is an exact orientation of three rational points, and
+//! the winding is counted from the exact angular order of the edge
+//! directions. The verdict rests on the arrangement's faces being the
+//! faces of the true arrangement (its `sanity_check` — topology, and
+//! geometry: every edge on its support, faces of positive area — is run
+//! first, and a failure is a violation of this claim, since then no cell
+//! can be vouched for) and on the rays being all rays of Def 3.8 (tested in
+//! `wai-cells` against a brute-force enumeration).
+
+use rug::Rational;
+use serde_json::json;
+use wai_exact::{orientation_rat, Orientation, RatPoint};
+
+use crate::framework::{Checker, Report, Violation};
+use wai_study::sample;
+use wai_study::Study;
+
+const ID: &str = "T3.3a";
+
+/// The checker of this claim.
+pub const CHECKER: Checker = Checker::new(ID, check_study);
+
+/// What one map contributed, beyond the report.
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub struct Stats {
+    /// Cells examined.
+    pub cells: u64,
+    /// Cell vertices examined.
+    pub vertices: u64,
+    /// Of these, straight (180°) vertices.
+    pub straight: u64,
+}
+
+/// Checks T3.3a on every cell of a map.
+fn check_study(study: &Study<'_>) -> Report {
+    check_with_stats(study).0
+}
+
+/// [`Checker::check`] with the vertex counts.
+pub fn check_with_stats(study: &Study<'_>) -> (Report, Stats) {
+    let map = study.map();
+    let arr = study.arrangement();
+    let mut report = Report::new(ID);
+    let mut stats = Stats::default();
+    if let Err(e) = arr.sanity_check() {
+        report.record(Some(Violation::with_data(
+            format!(
+                "map {}: the arrangement fails its sanity check: {e}",
+                sample::map_name(map)
+            ),
+            json!({"map": sample::map_name(map), "sanity_check": e}),
+        )));
+        return (report, stats);
+    }
+    for f in arr.cells() {
+        let ring: Vec<RatPoint> = arr.face_points(f);
+        let (r, s) = check_cell(sample::map_name(map), f, &ring);
+        report.examined += r.examined;
+        report.violations.extend(r.violations);
+        stats.cells += 1;
+        stats.vertices += s.vertices;
+        stats.straight += s.straight;
+    }
+    (report, stats)
+}
+
+/// The upper or lower half of the directions, for the angular order from
+/// the positive x axis: 0 for angles in [0, π), 1 for [π, 2π).
+fn half(d: &(Rational, Rational)) -> u8 {
+    if d.1 > 0 || (d.1 == 0 && d.0 > 0) {
+        0
+    } else {
+        1
+    }
+}
+
+fn cross(a: &(Rational, Rational), b: &(Rational, Rational)) -> Rational {
+    Rational::from(&a.0 * &b.1) - Rational::from(&a.1 * &b.0)
+}
+
+fn dot(a: &(Rational, Rational), b: &(Rational, Rational)) -> Rational {
+    Rational::from(&a.0 * &b.0) + Rational::from(&a.1 * &b.1)
+}
+
+/// Whether direction `a` comes strictly before `b` counter-clockwise from
+/// the positive x axis.
+fn angle_less(a: &(Rational, Rational), b: &(Rational, Rational)) -> bool {
+    let (ha, hb) = (half(a), half(b));
+    ha < hb || (ha == hb && cross(a, b) > 0)
+}
+
+fn coords(p: &RatPoint) -> (Rational, Rational) {
+    (
+        Rational::from((p.hx().clone(), p.hw().clone())),
+        Rational::from((p.hy().clone(), p.hw().clone())),
+    )
+}
+
+/// T3.3a on one cell polygon, its vertices in boundary order
+/// (counter-clockwise): one instance, violated if some vertex is reflex (a
+/// clockwise turn), a spike (the boundary reverses), a repeated point, or
+/// the boundary winds other than once around. The violation names the map
+/// (`map_name`), the cell's index and every offending vertex as an exact
+/// point. Also returns the vertex counts.
+pub fn check_cell(map_name: &str, cell: usize, ring: &[RatPoint]) -> (Report, Stats) {
+    let mut report = Report::new(ID);
+    let k = ring.len();
+    let mut stats = Stats {
+        cells: 1,
+        vertices: k as u64,
+        straight: 0,
+    };
+    let dirs: Vec<(Rational, Rational)> = (0..k)
+        .map(|i| {
+            let (a, b) = (coords(&ring[i]), coords(&ring[(i + 1) % k]));
+            (b.0 - a.0, b.1 - a.1)
+        })
+        .collect();
+    let mut reflex = Vec::new();
+    let mut spikes = Vec::new();
+    let mut repeated = Vec::new();
+    let mut descents = 0usize;
+    for i in 0..k {
+        let (prev, cur, next) = (&ring[(i + k - 1) % k], &ring[i], &ring[(i + 1) % k]);
+        let (din, dout) = (&dirs[(i + k - 1) % k], &dirs[i]);
+        if (din.0 == 0 && din.1 == 0) || (dout.0 == 0 && dout.1 == 0) {
+            repeated.push(cur.to_string());
+            continue;
+        }
+        match orientation_rat(prev, cur, next) {
+            Orientation::Clockwise => reflex.push(cur.to_string()),
+            Orientation::Collinear if dot(din, dout) < 0 => spikes.push(cur.to_string()),
+            Orientation::Collinear => stats.straight += 1,
+            Orientation::CounterClockwise => {}
+        }
+        if angle_less(dout, din) {
+            descents += 1;
+        }
+    }
+    let winding_ok = k >= 3 && descents == 1;
+    let ok = reflex.is_empty() && spikes.is_empty() && repeated.is_empty() && winding_ok;
+    report.record((!ok).then(|| {
+        let what = if let Some(v) = reflex.first() {
+            format!("reflex vertex {v}")
+        } else if let Some(v) = spikes.first() {
+            format!("spike at {v}")
+        } else if let Some(v) = repeated.first() {
+            format!("repeated vertex {v}")
+        } else {
+            format!("the boundary winds {descents} times around")
+        };
+        Violation::with_data(
+            format!("map {map_name}, cell {cell} is not convex: {what}"),
+            json!({
+                "map": map_name,
+                "cell": cell,
+                "reflex_vertices": reflex,
+                "spikes": spikes,
+                "repeated_vertices": repeated,
+                "winding": descents,
+                "cell_vertices": ring.iter().map(ToString::to_string).collect::<Vec<_>>(),
+            }),
+        )
+    }));
+    (report, stats)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use wai_exact::Point;
+
+    fn ring(pts: &[(i128, i128)]) -> Vec<RatPoint> {
+        pts.iter()
+            .map(|&(x, y)| RatPoint::from(Point::new(x, y)))
+            .collect()
+    }
+
+    #[test]
+    fn the_l_room_has_five_convex_cells() {
+        let pts = [(0, 0), (4, 0), (4, 2), (2, 2), (2, 4), (0, 4)];
+        let map = wai_map::Map::from_ring(pts.iter().map(|&(x, y)| Point::new(x, y)).collect())
+            .unwrap()
+            .0;
+        let (r, stats) = check_with_stats(&Study::new(&map));
+        assert_eq!(
+            (r.examined, r.violations.len()),
+            (5, 0),
+            "{:?}",
+            r.violations
+        );
+        assert_eq!(stats.cells, 5);
+    }
+
+    #[test]
+    fn generated_maps_pass() {
+        let map = wai_gen::family("corridor-niches", &[2]).unwrap();
+        let (r, _) = check_with_stats(&Study::new(&map));
+        assert!(r.examined > 5);
+        assert!(r.violations.is_empty(), "{:?}", r.violations);
+        let map = wai_gen::random("special-orthogonal", 16, 3).unwrap();
+        let (r, stats) = check_with_stats(&Study::new(&map));
+        assert!(r.violations.is_empty(), "{:?}", r.violations);
+        assert_eq!(r.examined, stats.cells);
+        assert!(stats.vertices >= 3 * stats.cells, "{stats:?}");
+    }
+
+    #[test]
+    fn a_square_with_a_straight_vertex_is_convex() {
+        let (r, s) = check_cell(
+            "planted",
+            1,
+            &ring(&[(0, 0), (1, 0), (2, 0), (2, 2), (0, 2)]),
+        );
+        assert_eq!((r.examined, r.violations.len(), s.straight), (1, 0, 1));
+    }
+
+    #[test]
+    fn a_reflex_vertex_is_reported() {
+        // An L-shaped "cell": (2, 2) is reflex.
+        let l = ring(&[(0, 0), (4, 0), (4, 2), (2, 2), (2, 4), (0, 4)]);
+        let (r, _) = check_cell("planted", 7, &l);
+        assert_eq!((r.examined, r.violations.len()), (1, 1));
+        let v = &r.violations[0];
+        assert_eq!(v.data["map"], "planted");
+        assert_eq!(v.data["cell"], 7);
+        assert_eq!(v.data["reflex_vertices"], json!(["(2, 2)"]));
+        assert!(v.what.contains("reflex vertex (2, 2)"), "{}", v.what);
+    }
+
+    #[test]
+    fn a_clockwise_or_doubly_wound_ring_is_reported() {
+        let mut cw = ring(&[(0, 0), (2, 0), (2, 2), (0, 2)]);
+        cw.reverse();
+        assert_eq!(check_cell("planted", 1, &cw).0.violations.len(), 1);
+        // A pentagram: every turn is left, but it winds twice.
+        let star = ring(&[(0, 4), (-3, -4), (4, 1), (-4, 1), (3, -4)]);
+        let (r, _) = check_cell("planted", 1, &star);
+        assert_eq!(r.violations.len(), 1);
+        assert_eq!(r.violations[0].data["winding"], 2);
+        // A spike: the boundary runs out and back.
+        let spike = ring(&[(0, 0), (2, 0), (2, 2), (2, 3), (2, 2), (0, 2)]);
+        let (r, _) = check_cell("planted", 1, &spike);
+        assert_eq!(r.violations.len(), 1);
+        assert_eq!(r.violations[0].data["spikes"], json!(["(2, 3)"]));
+    }
+}

@@ -1,0 +1,98 @@
+//! Claim C4.15 (Corollary 4.15): for two overlapping valid embeddings of
+//! one skeleton, the intersection of their skeleton polygons lies entirely
+//! on one side of the line through any witness w of one and w' of the
+//! other.
+//!
+//! ## Trust
+//! Exact over whole witness regions, on every pair of T4.2
+//! ([`wai_study::Study::overlapping_pairs`]). A line crosses the inside of
+//! the intersection I (one region, L4.6) iff it has vertices of I strictly
+//! on both sides, i.e. iff it meets the interior of I's convex hull. So the
+//! claim fails iff one line meets a witness cell of each and the open hull
+//! — three open convex sets — which [`wai_embed::transversal`] decides
+//! exactly and completely; a violation comes with the two witnesses.
+
+use serde_json::json;
+use wai_embed::{transversal, Intersection, Piece, Pt};
+
+use crate::framework::{Checker, Report, Violation};
+use wai_study::Study;
+
+const ID: &str = "C4.15";
+
+/// The checker of this claim.
+pub const CHECKER: Checker = Checker::new(ID, check_study);
+
+/// Checks C4.15 on every overlapping pair of valid embeddings of one
+/// skeleton.
+fn check_study(study: &Study<'_>) -> Report {
+    let mut report = Report::new(ID);
+    for pair in study.overlapping_pairs() {
+        let x = study
+            .intersection(&study.embedding_pairs()[pair.pair])
+            .expect("an overlapping pair has an intersection");
+        let ws = &study.witnesses()[pair.class];
+        report.record(
+            check(x, &ws[pair.a].pieces(), &ws[pair.b].pieces()).map(|mut v| {
+                v.data["class"] = json!(pair.class);
+                v.data["pair"] = json!([pair.a, pair.b]);
+                v
+            }),
+        );
+    }
+    report
+}
+
+/// The open convex hull of the intersection `x`.
+fn open_hull(x: &Intersection) -> Option<Piece> {
+    let points: Vec<Pt> = x.cycles.iter().flatten().map(|e| e.from.clone()).collect();
+    let h = wai_embed::piece::convex_hull(points);
+    (h.len() >= 3).then_some(Piece::Polygon(h))
+}
+
+/// One pair: no line through a witness of each crosses the intersection.
+pub fn check(x: &Intersection, w: &[Piece], w2: &[Piece]) -> Option<Violation> {
+    let hull = open_hull(x)?;
+    for a in w {
+        for b in w2 {
+            if let Some((x, y)) = transversal(a, b, &hull) {
+                return Some(Violation::with_data(
+                    format!("the line through witnesses {x} and {y} crosses the intersection of their embeddings"),
+                    json!({ "witnesses": [x.to_string(), y.to_string()] }),
+                ));
+            }
+        }
+    }
+    None
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use rug::Rational;
+
+    #[test]
+    fn holds_on_repeated_niches() {
+        let mut examined = 0;
+        for seed in [195, 12] {
+            let map = wai_gen::repeated_niches(seed);
+            let report = CHECKER.run(&Study::new(&map));
+            examined += report.examined;
+            assert!(report.violations.is_empty(), "{:?}", report.violations);
+        }
+        assert!(examined > 0);
+    }
+
+    #[test]
+    fn planted_witnesses_across_the_intersection_are_reported() {
+        let ring = wai_embed::piece::ints;
+        let p = ring(&[(0, 0), (4, 0), (4, 4), (0, 4)]);
+        let q = ring(&[(2, 2), (6, 2), (6, 6), (2, 6)]);
+        let pt = |x: i64, y: i64| Piece::Point(Pt::new(Rational::from(x), Rational::from(y)));
+        // Witnesses on the diagonal through the overlap: violated.
+        let x = Intersection::of(&p, &q);
+        assert!(check(&x, &[pt(1, 1)], &[pt(5, 5)]).is_some());
+        // Witnesses beside it, their line passing below: holds.
+        assert!(check(&x, &[pt(1, 1)], &[pt(5, 1)]).is_none());
+    }
+}

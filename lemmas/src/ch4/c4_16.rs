@@ -1,0 +1,109 @@
+//! Claim C4.16 (Corollary 4.16): for two overlapping valid embeddings h, h'
+//! of one skeleton, every line parallel to t = h'(v0) − h(v0) that crosses
+//! their intersection has the witnesses w and w' on the same side.
+//!
+//! ## Trust
+//! Exact over whole witness regions, on every pair of T4.2
+//! ([`wai_study::Study::overlapping_pairs`]). Project onto the normal of t:
+//! the lines parallel to t crossing the intersection's inside are those
+//! whose offset lies strictly between the least and greatest projection of
+//! its vertices, (l, u); the witnesses' projections range over (or to) the
+//! least and greatest projection of their cells' vertices. Some line has
+//! a witness of each strictly on either side iff max(inf W, l) < min(sup W', u)
+//! or the same with W and W' swapped.
+
+use rug::Rational;
+use serde_json::json;
+use wai_embed::piece::projection;
+use wai_embed::{Intersection, Piece, Pt};
+
+use crate::framework::{Checker, Report, Violation};
+use wai_study::Study;
+
+const ID: &str = "C4.16";
+
+/// The checker of this claim.
+pub const CHECKER: Checker = Checker::new(ID, check_study);
+
+/// Checks C4.16 on every overlapping pair of valid embeddings of one
+/// skeleton.
+fn check_study(study: &Study<'_>) -> Report {
+    let map = study.map().vertices();
+    let mut report = Report::new(ID);
+    for pair in study.overlapping_pairs() {
+        let all = &study.embeddings()[pair.class];
+        let (o, o2) = (
+            map[all[pair.a].embedding.origin],
+            map[all[pair.b].embedding.origin],
+        );
+        let t = Pt::from(o2).sub(&Pt::from(o));
+        let x = study
+            .intersection(&study.embedding_pairs()[pair.pair])
+            .expect("an overlapping pair has an intersection");
+        let ws = &study.witnesses()[pair.class];
+        report.record(
+            check(x, &t, &ws[pair.a].pieces(), &ws[pair.b].pieces()).map(|mut v| {
+                v.data["class"] = json!(pair.class);
+                v.data["pair"] = json!([pair.a, pair.b]);
+                v
+            }),
+        );
+    }
+    report
+}
+
+/// The least and greatest of `n · v` over the vertices, if any.
+fn range(n: &Pt, vertices: impl Iterator<Item = Pt>) -> Option<(Rational, Rational)> {
+    let v: Vec<Pt> = vertices.collect();
+    (!v.is_empty()).then(|| projection(n, &v))
+}
+
+/// One pair, with translation `t` from the first origin to the second.
+pub fn check(x: &Intersection, t: &Pt, w: &[Piece], w2: &[Piece]) -> Option<Violation> {
+    let n = t.perp();
+    let (l, u) = range(&n, x.cycles.iter().flatten().map(|e| e.from.clone()))?;
+    let (a_lo, a_hi) = range(&n, w.iter().flat_map(Piece::vertices))?;
+    let (b_lo, b_hi) = range(&n, w2.iter().flat_map(Piece::vertices))?;
+    let split =
+        |lo: &Rational, hi: &Rational| lo.clone().max(l.clone()) < hi.clone().min(u.clone());
+    (split(&a_lo, &b_hi) || split(&b_lo, &a_hi)).then(|| {
+        Violation::with_data(
+            "a line parallel to the translation between the embeddings crosses their intersection with their witnesses on either side",
+            json!({
+                "intersection": [l.to_string(), u.to_string()],
+                "first_witnesses": [a_lo.to_string(), a_hi.to_string()],
+                "second_witnesses": [b_lo.to_string(), b_hi.to_string()],
+            }),
+        )
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn holds_on_repeated_niches() {
+        let mut examined = 0;
+        for seed in [195, 12] {
+            let map = wai_gen::repeated_niches(seed);
+            let report = CHECKER.run(&Study::new(&map));
+            examined += report.examined;
+            assert!(report.violations.is_empty(), "{:?}", report.violations);
+        }
+        assert!(examined > 0);
+    }
+
+    #[test]
+    fn planted_witnesses_on_either_side_are_reported() {
+        let ring = wai_embed::piece::ints;
+        let p = ring(&[(0, 0), (4, 0), (4, 4), (0, 4)]);
+        let q = ring(&[(2, 0), (6, 0), (6, 4), (2, 4)]);
+        let t = Pt::new(Rational::from(2), Rational::new());
+        let pt = |x: i64, y: i64| Piece::Point(Pt::new(Rational::from(x), Rational::from(y)));
+        // t horizontal: the lines y = c, 0 < c < 4, cross the overlap.
+        let x = Intersection::of(&p, &q);
+        assert!(check(&x, &t, &[pt(1, 1)], &[pt(5, 3)]).is_some());
+        assert!(check(&x, &t, &[pt(1, 5)], &[pt(5, 6)]).is_none());
+    }
+}

@@ -1,0 +1,187 @@
+//! Claim L4.17 (Lemma 4.17): within one embedding h, a line of sight from
+//! inside h(V◇) through h(a) to a candidate edge of a and one through
+//! h(a') to a candidate edge of a' ≠ a never meet outside h(V◇); so a map
+//! edge is a candidate edge of at most one artificial edge of h.
+//!
+//! ## Trust
+//! Two parts, each exact.
+//! - **Lines of sight from the witnesses**, on every valid embedding: for
+//!   each two (artificial edge, valid candidate edge) of h on different
+//!   artificial edges (`examined`), whether a line of sight from a witness
+//!   through one and one through the other meet behind them (outside
+//!   h(V◇)). Such lines lie in the open hull of the artificial edge and
+//!   its candidate edge, or on the open candidate edge; where those
+//!   regions of the two are apart (`apart`) nothing can meet, and
+//!   otherwise the sight fans ([`wai_embed::SightFan`]) of every witness
+//!   cell that sees the one against every cell that sees the other
+//!   (`fan_pairs` counts these cell pairs, pruned or not) are intersected
+//!   exactly; a violation comes with two certified lines of sight and the
+//!   point where they meet. The lemma speaks of lines from anywhere
+//!   inside h(V◇); those from points that are not witnesses are not
+//!   examined.
+//! - **The corollary**, on every valid embedding: no map edge is a valid
+//!   candidate edge (Def 4.1) of two artificial edges (counted as
+//!   `embeddings`).
+//!
+//! ## A finding: the corollary fails for Def 3.11's candidate edges
+//! Def 3.11 asks of a candidate edge only a point that both ends of h(a)
+//! see. A map edge on the label line can meet that through one point, an
+//! end of it that h(v) sees *along* the label line, over a niche's mouth
+//! (h(v) the niche's other corner): no line of sight crosses h(a) to it,
+//! so the lemma says nothing about it, yet it is a candidate of h(a), and
+//! of another artificial edge with the same label line that sees it
+//! properly. Such shared edges are counted as `shared_def_3_11`, not as
+//! violations; `counterexamples/L4.17-shared-candidate-edge.json` keeps
+//! one. Chapter 5 counts valid candidate edges (the sets C_{i,j}), which
+//! the corollary covers.
+
+use serde_json::json;
+use wai_embed::piece::convex_hull;
+use wai_embed::{crossing, Bounds, Piece, Pt, SightFan};
+
+use crate::framework::{Checker, Report, Violation};
+use wai_study::Study;
+
+const ID: &str = "L4.17";
+
+/// The checker of this claim.
+pub const CHECKER: Checker = Checker::new(ID, check_study);
+
+/// Checks L4.17 on every embedding.
+fn check_study(study: &Study<'_>) -> Report {
+    let mut report = Report::new(ID);
+    let ring = study.map().vertices();
+    for (class, hs) in study.embeddings().iter().enumerate() {
+        for (i, h) in hs.iter().enumerate() {
+            if check_candidates(&h.embedding.candidates).is_some() {
+                report.count("shared_def_3_11", 1);
+            }
+            if !study.witnesses()[class][i].is_valid() {
+                continue;
+            }
+            let tag = |mut v: Violation| {
+                v.data["class"] = json!(class);
+                v.data["embedding"] = json!(i);
+                v
+            };
+            report.count("embeddings", 1);
+            let valid = study.valid_candidates(class, i);
+            report.record(check_candidates(valid).map(tag));
+            // The sight regions: (artificial edge, candidate edge), the
+            // number of witness cells that see it, and the region its
+            // lines of sight behind the artificial edge lie in.
+            let views = &study.views()[class][i];
+            let polygon = h.embedding.polygon(study.map());
+            let k = polygon.len();
+            let mut regions = Vec::new();
+            for (a, edges) in valid.iter().enumerate() {
+                for &c in edges {
+                    let cells = views.iter().filter(|v| v[a] == Some(c)).count();
+                    let pt = |p: wai_exact::Point| Pt::from(p);
+                    let window = (pt(polygon[a]), pt(polygon[(a + 1) % k]));
+                    let edge = (pt(ring[c]), pt(ring[(c + 1) % ring.len()]));
+                    let region = behind(&window, &edge);
+                    let bounds = Bounds::of(&[window.0, window.1, edge.0, edge.1]);
+                    regions.push(((a, c), cells, region, bounds));
+                }
+            }
+            for (x, (k1, n1, r1, b1)) in regions.iter().enumerate() {
+                for (k2, n2, r2, b2) in regions[x + 1..].iter().filter(|r| r.0 .0 != k1.0) {
+                    report.count("fan_pairs", (n1 * n2) as u64);
+                    if !b1.meets_box(b2) || !meets(r1, r2) {
+                        report.count("apart", 1);
+                        report.record(None);
+                        continue;
+                    }
+                    let found = study
+                        .fans_seeing(class, i, *k1)
+                        .flat_map(|f| study.fans_seeing(class, i, *k2).map(move |g| (f, g)))
+                        .find_map(|(f, g)| violation(ring, f, g));
+                    report.record(found.map(tag));
+                }
+            }
+        }
+    }
+    report
+}
+
+/// A region that holds every line of sight through the artificial edge
+/// `window` to the map edge `edge` behind it, beyond the window: the open
+/// hull of the two (B° and the region of a fan lie inside it) and the
+/// open edge (where the seen intervals lie).
+fn behind(window: &(Pt, Pt), edge: &(Pt, Pt)) -> Vec<Piece> {
+    let hull = convex_hull(vec![
+        window.0.clone(),
+        window.1.clone(),
+        edge.0.clone(),
+        edge.1.clone(),
+    ]);
+    let mut out = vec![Piece::Segment(edge.0.clone(), edge.1.clone())];
+    if hull.len() >= 3 {
+        out.push(Piece::Polygon(hull));
+    }
+    out
+}
+
+fn meets(a: &[Piece], b: &[Piece]) -> bool {
+    a.iter().any(|p| b.iter().any(|q| p.meets(q)))
+}
+
+/// The corollary on one embedding's (valid) candidate edges, by skeleton
+/// edge.
+pub fn check_candidates(candidates: &[Vec<usize>]) -> Option<Violation> {
+    for (a, ea) in candidates.iter().enumerate() {
+        for (b, eb) in candidates.iter().enumerate().skip(a + 1) {
+            if let Some(e) = ea.iter().find(|e| eb.contains(e)) {
+                return Some(Violation::with_data(
+                    format!("map edge {e} is a candidate edge of artificial edges {a} and {b} of one embedding"),
+                    json!({ "map_edge": e, "artificial_edges": [a, b] }),
+                ));
+            }
+        }
+    }
+    None
+}
+
+/// Two fans of one embedding on different artificial edges: their lines
+/// of sight meet behind the artificial edges (outside h(V◇)).
+pub fn violation(ring: &[wai_exact::Point], f: &SightFan, g: &SightFan) -> Option<Violation> {
+    crossing(ring, f, g, true).map(|x| {
+        Violation::with_data(
+            format!(
+                "lines of sight through artificial edges {} and {} of one embedding meet at {} outside it",
+                f.artificial, g.artificial, x.at
+            ),
+            json!({
+                "artificial_edges": [f.artificial, g.artificial],
+                "map_edges": [f.edge, g.edge],
+                "at": x.at.to_string(),
+                "first": [x.first.0.to_string(), x.first.1.to_string()],
+                "second": [x.second.0.to_string(), x.second.1.to_string()],
+            }),
+        )
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn holds_on_repeated_niches() {
+        let mut report = Report::new(ID);
+        for seed in [195, 114] {
+            let map = wai_gen::repeated_niches(seed);
+            report.absorb(CHECKER.run(&Study::new(&map)));
+        }
+        assert!(report.violations.is_empty(), "{:?}", report.violations);
+        assert!(report.counts["fan_pairs"] > 0);
+        assert!(report.examined > report.counts["apart"]);
+    }
+
+    #[test]
+    fn planted_shared_candidate_edge_is_reported() {
+        assert!(check_candidates(&[vec![3], vec![], vec![5, 7]]).is_none());
+        assert!(check_candidates(&[vec![3, 7], vec![], vec![5, 7]]).is_some());
+    }
+}

@@ -1,0 +1,130 @@
+//! Claim L5.3 (Lemma 5.3, exact and tight): a skeleton has at most s·t
+//! single candidate edges (Def 5.4), s its artificial edges and t its
+//! valid embeddings, so O(min{n, r²}); and Ω(r²) is reached by the
+//! construction of Fig 5.4 (family `convex-niches`, f = t = k: f·t
+//! distinct single candidate edges).
+//!
+//! ## Trust
+//! Exact, on every class with a valid embedding: C_{i,j} from the witness
+//! views of [`wai_study::Study`] (Def 4.1), C_sing counted as a set of map
+//! edges, compared with s·t and with n. The tight part runs on the
+//! family's maps only (recognised by their vertices,
+//! [`wai_study::family::parameter_of`]): some class must reach k² single
+//! candidate edges. Counts: `single` sums |C_sing| over the classes
+//! examined, `largest_single` the largest per map (the driver sums both
+//! over maps).
+
+use serde_json::json;
+use wai_embed::CandidateSets;
+
+use crate::framework::{Checker, Report, Violation};
+use wai_study::family::parameter_of;
+use wai_study::Study;
+
+const ID: &str = "L5.3";
+
+/// The checker of this claim.
+pub const CHECKER: Checker = Checker::new(ID, check_study);
+const FAMILY: &str = "convex-niches";
+
+/// Checks L5.3 on every class, and its tightness on `convex-niches`.
+fn check_study(study: &Study<'_>) -> Report {
+    let tight = parameter_of(study.map(), FAMILY).map(|k| (k as usize).pow(2));
+    check_classes(study.map().n(), study.candidate_sets(), tight)
+}
+
+/// The bound on one class: |C_sing| ≤ s·t and ≤ n.
+pub fn check_class(n: usize, c: &CandidateSets) -> Option<Violation> {
+    let single = c.single().len();
+    let bound = (c.s() * c.t()).min(n);
+    (single > bound).then(|| {
+        Violation::with_data(
+            format!(
+                "{single} single candidate edges, above min(s·t, n) = min({}·{}, {n})",
+                c.s(),
+                c.t()
+            ),
+            json!({
+                "single": c.single(),
+                "s": c.s(),
+                "t": c.t(),
+                "n": n,
+                "sets": c.sets,
+            }),
+        )
+    })
+}
+
+/// Every class with a valid embedding; with `tight = Some(k²)`, some
+/// class must reach k² single candidate edges.
+pub fn check_classes(n: usize, classes: &[CandidateSets], tight: Option<usize>) -> Report {
+    let mut report = Report::new(ID);
+    let mut largest = 0;
+    for (class, c) in classes.iter().enumerate() {
+        if c.t() == 0 {
+            continue;
+        }
+        let mut one = Report::new(ID);
+        one.record(check_class(n, c));
+        let single = c.single().len();
+        let bound = (c.s() * c.t()).min(n);
+        one.measure(
+            crate::framework::over(single, bound as u128),
+            json!({"single": single, "s": c.s(), "t": c.t()}),
+        );
+        one.tag("class", json!(class));
+        report.absorb(one);
+        report.count("single", single as u64);
+        largest = largest.max(single);
+    }
+    report.count("largest_single", largest as u64);
+    if let Some(want) = tight {
+        report.record((largest < want).then(|| {
+            Violation::with_data(
+                format!(
+                    "the convex-niches construction has at most {largest} single candidate edges for one skeleton, not k² = {want}"
+                ),
+                json!({ "expected": want, "largest": largest }),
+            )
+        }));
+    }
+    report
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_construction_reaches_k_squared() {
+        for k in 1..=3u32 {
+            let map = wai_gen::family(FAMILY, &[k]).unwrap();
+            let report = CHECKER.run(&Study::new(&map));
+            assert!(
+                report.violations.is_empty(),
+                "k = {k}: {:?}",
+                report.violations
+            );
+            assert!(report.counts["largest_single"] >= u64::from(k * k));
+            // The classes, plus the tightness instance.
+            assert!(report.examined >= 2, "k = {k}");
+        }
+    }
+
+    #[test]
+    fn planted_excess_and_shortfall_are_reported() {
+        // One artificial edge, one valid embedding: at most 1 single edge,
+        // but 2 planted (two sets of one edge each would need t = 2).
+        let c = CandidateSets::from_sets(vec![0], vec![0], vec![vec![vec![5]]]);
+        let mut planted = c.clone();
+        planted.all.insert(6);
+        let report = check_classes(10, &[c, planted], None);
+        assert_eq!((report.examined, report.violations.len()), (2, 1));
+        assert!(report.violations[0].what.contains("above min(s·t, n)"));
+        // The construction's count not reached.
+        let c = CandidateSets::from_sets(vec![0], vec![0], vec![vec![vec![5]]]);
+        let report = check_classes(10, &[c], Some(4));
+        assert_eq!(report.violations.len(), 1);
+        assert!(report.violations[0].what.contains("not k² = 4"));
+    }
+}

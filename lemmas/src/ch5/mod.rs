@@ -1,0 +1,66 @@
+//! The checkers of chapter 5's claims (the complexity of an equivalence
+//! class), one module per claim id, and what several of them share.
+
+pub mod l5_1;
+pub mod l5_13;
+pub mod l5_14;
+pub mod l5_2;
+pub mod l5_3;
+pub mod l5_4;
+pub mod l5_5;
+pub mod l5_6;
+pub mod l5_7;
+pub mod l5_8;
+pub mod l5_9;
+pub mod o5_3;
+pub mod t5_12;
+pub mod t5_15;
+pub mod t5_16;
+pub mod t5_17;
+pub mod t5_17t;
+
+use wai_embed::CandidateSets;
+use wai_study::{GapStructure, Study};
+
+use crate::framework::Report;
+
+/// Runs `check` on every class's gap structure and sets C_{i,j}, tags each
+/// violation with its class and the class's valid embeddings (indices in
+/// [`Study::embeddings`], by position j), and sums the reports (L5.5–L5.9).
+pub fn over_gap_classes(
+    study: &Study<'_>,
+    id: &'static str,
+    check: impl Fn(&GapStructure, &CandidateSets) -> Report,
+) -> Report {
+    let mut report = Report::new(id);
+    let classes = study.gap_structures().iter().zip(study.candidate_sets());
+    for (class, (g, c)) in classes.enumerate() {
+        let mut one = check(g, c);
+        one.tag("class", serde_json::json!(class));
+        one.tag("embeddings", serde_json::json!(c.embeddings));
+        report.absorb(one);
+    }
+    report
+}
+
+#[cfg(test)]
+pub(crate) mod tests {
+    use crate::framework::{Ceiling, Checker};
+
+    /// The test every bound on Def 5.2's counts passes: on `convex-niches`
+    /// k = 2 it examines the map once with a positive ratio under its
+    /// ceiling, and reports a violation under a ceiling below that ratio.
+    pub(crate) fn assert_measures_and_can_fail(checker: &Checker) {
+        let map = wai_gen::family("convex-niches", &[2]).unwrap();
+        let report = checker.check_map(&map);
+        let id = checker.id;
+        assert_eq!((report.examined, report.violations.len()), (1, 0), "{id}");
+        let ratio = report.largest.expect("a ratio").ratio;
+        assert!(ratio > 0, "{id}");
+        let low = checker.with_ceiling(Ceiling(1, 1_000_000_000));
+        assert!(ratio > low.ceiling().unwrap(), "{id}");
+        let report = low.check_map(&map);
+        assert_eq!(report.violations.len(), 1, "{id}");
+        assert!(report.violations[0].what.contains("above the ceiling"));
+    }
+}

@@ -1,0 +1,157 @@
+//! Claim T5.15 (Theorem 5.15): if e is a valid candidate edge and f a valid
+//! *multiple* candidate edge of different artificial edges in each of k
+//! embeddings of one skeleton, then k ≤ 6. Eq. (5.9) turns it into the
+//! O(|C_mult|²) count of wedge-edge pairs behind Theorem 5.16.
+//!
+//! "Multiple" is read as in the proof and in eq. (5.9): f shares its set
+//! C_{ĩ,j} with another candidate edge in that embedding
+//! ([`wai_study::edge_pairs::Shared::f_multiple`]), not merely somewhere.
+//!
+//! ## Trust
+//! Exact, on every class with a valid embedding: the sets C_{i,j} of
+//! [`wai_study::Study::candidate_sets`]; every ordered pair (e, f) of map edges
+//! with at least one such embedding is one instance (`examined`), its k
+//! the number of embeddings. Counts: `pairs_k_ge_2` (instances with
+//! k ≥ 2, where the theorem has content), `largest_k` (the largest k per
+//! map, summed over maps by the driver) and `premise_embeddings` (per map,
+//! the most valid embeddings of one skeleton with an artificial edge of two
+//! or more valid candidate edges beside another artificial edge: an upper
+//! bound on k, and the guide of a search for large k).
+
+use serde_json::json;
+use wai_embed::CandidateSets;
+
+use crate::framework::{Checker, Report, Violation};
+use wai_study::edge_pairs::shared_embeddings;
+use wai_study::Study;
+
+const ID: &str = "T5.15";
+
+/// The checker of this claim.
+pub const CHECKER: Checker = Checker::new(ID, check_study);
+
+/// The theorem's bound on k.
+pub const BOUND: usize = 6;
+
+/// Checks T5.15 on every class with a valid embedding.
+fn check_study(study: &Study<'_>) -> Report {
+    let mut report = Report::new(ID);
+    let mut largest = 0;
+    for (class, c) in study.candidate_sets().iter().enumerate() {
+        let (mut one, k) = check_class(c, BOUND);
+        one.tag("class", json!(class));
+        report.absorb(one);
+        largest = largest.max(k);
+    }
+    report.count("largest_k", largest as u64);
+    let premise = study.candidate_sets().iter().map(premise_embeddings).max();
+    report.count("premise_embeddings", premise.unwrap_or(0) as u64);
+    report
+}
+
+/// The valid embeddings of one skeleton with an artificial edge of two or
+/// more valid candidate edges beside another artificial edge (so that some
+/// pair (e, f) could count them): an upper bound on k.
+pub fn premise_embeddings(c: &CandidateSets) -> usize {
+    c.sets
+        .iter()
+        .filter(|by_edge| by_edge.len() >= 2 && by_edge.iter().any(|set| set.len() >= 2))
+        .count()
+}
+
+/// For each ordered pair (e, f): the embeddings (positions j in
+/// [`CandidateSets::embeddings`]) where e is a candidate edge of one
+/// artificial edge and f a multiple candidate edge of another.
+pub fn k_of_pairs(c: &CandidateSets) -> Vec<((usize, usize), Vec<usize>)> {
+    shared_embeddings(c)
+        .into_iter()
+        .map(|(pair, shared)| {
+            let js: Vec<usize> = shared
+                .iter()
+                .filter(|s| s.f_multiple)
+                .map(|s| s.j)
+                .collect();
+            (pair, js)
+        })
+        .filter(|(_, js)| !js.is_empty())
+        .collect()
+}
+
+/// One class against a bound on k: the report and the largest k.
+pub fn check_class(c: &CandidateSets, bound: usize) -> (Report, usize) {
+    let mut report = Report::new(ID);
+    let mut largest = 0;
+    for ((e, f), js) in k_of_pairs(c) {
+        let k = js.len();
+        largest = largest.max(k);
+        if k >= 2 {
+            report.count("pairs_k_ge_2", 1);
+        }
+        let embeddings: Vec<usize> = js.iter().map(|&j| c.embeddings[j]).collect();
+        report.measure(
+            rug::Rational::from((k, BOUND)),
+            json!({"e": e, "f": f, "k": k, "embeddings": embeddings}),
+        );
+        report.record((k > bound).then(|| {
+            Violation::with_data(
+                format!(
+                    "map edges {e} and {f}: a candidate edge and a multiple candidate edge of different artificial edges in {k} embeddings, above {bound}"
+                ),
+                json!({ "e": e, "f": f, "k": k, "embeddings": embeddings }),
+            )
+        }));
+    }
+    (report, largest)
+}
+
+/// The largest k of Theorem 5.15 over the classes of a map (0 when no
+/// pair qualifies): the quantity `wai search-extremes --ratio k` climbs.
+pub fn largest_k(study: &Study<'_>) -> usize {
+    study
+        .candidate_sets()
+        .iter()
+        .flat_map(k_of_pairs)
+        .map(|(_, js)| js.len())
+        .max()
+        .unwrap_or(0)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn holds_and_measures_on_maps_with_multiple_candidate_edges() {
+        let mut examined = 0;
+        let mut largest = 0;
+        for seed in 0..6 {
+            let map = wai_gen::bottled_niches(seed);
+            let study = Study::new(&map);
+            let report = CHECKER.run(&study);
+            assert!(report.violations.is_empty(), "{:?}", report.violations);
+            examined += report.examined;
+            largest = largest.max(largest_k(&study));
+        }
+        assert!(
+            examined > 0 && largest >= 1,
+            "{examined} pairs, k ≤ {largest}"
+        );
+    }
+
+    #[test]
+    fn planted_seven_embeddings_are_reported() {
+        // Seven embeddings, each with e = 1 on a_0 and f = 2 sharing a_1
+        // with edge 3: k = 7 for (1, 2) and (1, 3).
+        let sets = vec![vec![vec![1], vec![2, 3]]; 7];
+        let c = CandidateSets::from_sets(vec![0, 1], (0..7).collect(), sets);
+        let (report, largest) = check_class(&c, BOUND);
+        assert_eq!(largest, 7);
+        assert_eq!(report.violations.len(), 2);
+        // (2, 1) and (3, 1): f = 1 is single in its set, no instance.
+        assert_eq!(report.examined, 2);
+        // Six embeddings: within the bound.
+        let sets = vec![vec![vec![1], vec![2, 3]]; 6];
+        let c = CandidateSets::from_sets(vec![0, 1], (0..6).collect(), sets);
+        assert!(check_class(&c, BOUND).0.violations.is_empty());
+    }
+}

@@ -1,0 +1,182 @@
+//! The checker of one claim: a [`Checker`] value, declared once per claim
+//! module as `pub const CHECKER`.
+//!
+//! A checker is data: its claim's id, the cases of the claim's proof whose
+//! instances it counts ([`Case`]), the known failures it counts apart
+//! ([`Known`]), the ceiling of a bound's ratio ([`Ceiling`]), and the
+//! function that examines one study. [`Checker::run`] calls that function
+//! and holds the report to the checker's declarations, so no claim module
+//! repeats the bookkeeping.
+//!
+//! **Invariant:** `check` never mutates what it checks and is deterministic.
+
+use rug::Rational;
+use wai_map::Map;
+use wai_study::Study;
+
+use crate::framework::report::{Report, Violation};
+
+/// A named case of a claim: a case of its proof, a type of a lemma (Lemma
+/// 4.7's five edge types), a configuration of a theorem (Theorem 5.15's k,
+/// kernels overlapping or not). The checker counts instances per case, so a
+/// run shows which parts of the proof its maps exercised.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Case {
+    /// The name counted in [`Report::cases`] (`"type 5"`, `"k=3"`).
+    pub name: &'static str,
+    /// What an instance of the case is, in the thesis's terms.
+    pub what: &'static str,
+}
+
+/// A known failure: a violation of the claim as the thesis states it that is
+/// understood, stored in `counterexamples/`, and counted apart from the
+/// counterexamples. Its violations carry `data["kind"] == kind`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Known {
+    /// The value of `data["kind"]`.
+    pub kind: &'static str,
+    /// What the failure is.
+    pub what: &'static str,
+}
+
+/// The ceiling of a bound claim's ratio, `numerator / denominator`: far
+/// above every ratio seen, so a ratio above it is reported.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Ceiling(pub u64, pub u64);
+
+impl Ceiling {
+    /// The ceiling as an exact rational.
+    pub fn rational(self) -> Rational {
+        Rational::from((self.0, self.1.max(1)))
+    }
+}
+
+/// The checker of one claim.
+#[derive(Debug, Clone, Copy)]
+pub struct Checker {
+    /// The claim's id (`"T4.2"`).
+    pub id: &'static str,
+    /// The cases it counts; every case a report hits is one of them.
+    pub cases: &'static [Case],
+    /// The known failures it counts apart.
+    pub known: &'static [Known],
+    /// For a bound: the ceiling of its ratio.
+    pub ceiling: Option<Ceiling>,
+    /// Examines every instance the study's map offers.
+    pub check: fn(&Study<'_>) -> Report,
+}
+
+impl Checker {
+    /// A checker of claim `id` with no cases, known failures or ceiling.
+    pub const fn new(id: &'static str, check: fn(&Study<'_>) -> Report) -> Checker {
+        Checker {
+            id,
+            cases: &[],
+            known: &[],
+            ceiling: None,
+            check,
+        }
+    }
+
+    /// The same checker counting `cases`.
+    pub const fn with_cases(self, cases: &'static [Case]) -> Checker {
+        Checker { cases, ..self }
+    }
+
+    /// The same checker counting `known` apart.
+    pub const fn with_known(self, known: &'static [Known]) -> Checker {
+        Checker { known, ..self }
+    }
+
+    /// The same checker as a bound with this ceiling.
+    pub const fn with_ceiling(self, ceiling: Ceiling) -> Checker {
+        Checker {
+            ceiling: Some(ceiling),
+            ..self
+        }
+    }
+
+    /// The ceiling as a rational (a bound's; `None` for other claims).
+    pub fn ceiling(&self) -> Option<Rational> {
+        self.ceiling.map(Ceiling::rational)
+    }
+
+    /// A bound's report on one map: the largest ratio over the map's
+    /// instances (`None`: the map has none to measure), one instance
+    /// examined. [`Checker::run`] holds it to the ceiling.
+    pub fn bound_report(&self, largest: Option<(Rational, serde_json::Value)>) -> Report {
+        let mut report = Report::new(self.id);
+        if let Some((ratio, at)) = largest {
+            report.record(None);
+            report.measure(ratio, at);
+        }
+        report
+    }
+
+    /// Holds `report` to the checker's declarations: a bound's largest
+    /// ratio to its ceiling ([`Report::hold_to`]).
+    ///
+    /// # Panics
+    ///
+    /// On a checker bug (see [`Checker::run`]).
+    pub fn judge(&self, mut report: Report) -> Report {
+        if let Some(ceiling) = self.ceiling() {
+            report.hold_to(&ceiling);
+        }
+        self.assert_consistent(&report);
+        report
+    }
+
+    /// Checks the claim on the study's map.
+    ///
+    /// # Panics
+    ///
+    /// On a checker bug, never on a claim violation: a report for another
+    /// claim, more violations than instances examined, or a case that the
+    /// checker does not declare. A bound's report has at most one
+    /// violation per map (its largest ratio above the ceiling), so a map
+    /// with a ratio examined is enough.
+    pub fn run(&self, study: &Study<'_>) -> Report {
+        self.judge((self.check)(study))
+    }
+
+    /// Checks the claim on `map` alone (a study of its own).
+    pub fn check_map(&self, map: &Map) -> Report {
+        self.run(&Study::new(map))
+    }
+
+    /// True if `violation` is one of this checker's known failures.
+    pub fn is_known(&self, violation: &Violation) -> bool {
+        violation
+            .kind()
+            .is_some_and(|k| self.known.iter().any(|known| known.kind == k))
+    }
+
+    /// The violations of `report` that are not known failures: the
+    /// counterexamples among them.
+    pub fn counterexamples<'r>(&self, report: &'r Report) -> impl Iterator<Item = &'r Violation> {
+        let me = *self;
+        report.violations.iter().filter(move |v| !me.is_known(v))
+    }
+
+    fn assert_consistent(&self, report: &Report) {
+        let id = self.id;
+        assert_eq!(
+            report.claim, id,
+            "checker {id} returned a report for {}",
+            report.claim
+        );
+        assert!(
+            report.violations.len() as u64 <= report.examined,
+            "checker {id} reported {} violations but examined only {} instances",
+            report.violations.len(),
+            report.examined
+        );
+        for case in report.cases.keys().chain(report.toward.keys()) {
+            assert!(
+                self.cases.iter().any(|c| c.name == *case),
+                "checker {id} counted case {case:?}, which it does not declare"
+            );
+        }
+    }
+}
