@@ -162,14 +162,86 @@ pub enum Stream {
     Generated { kinds: Vec<KindSpec>, seed: u64 },
     /// These maps, each with the name of its kind.
     Fixed(Vec<(String, Map)>),
+    /// The fixed maps first, then the generated stream: map `fixed.len() +
+    /// i` is map i of `Generated { kinds, seed }`.
+    Mixed {
+        fixed: Vec<(String, Map)>,
+        kinds: Vec<KindSpec>,
+        seed: u64,
+    },
+}
+
+/// One lane of a stream: the indices `start + j·step` for `j < len` (or
+/// every j when `len` is `None`), the maps of one kind (or the fixed
+/// maps). A budgeted search gives every lane an equal share of the time.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Lane {
+    /// The kind's name (`fixed` for the fixed maps).
+    pub name: String,
+    pub start: u64,
+    pub step: u64,
+    pub len: Option<u64>,
+}
+
+impl Lane {
+    /// The stream index of the lane's j-th map, if the lane has one.
+    pub fn index(&self, j: u64) -> Option<u64> {
+        if self.len.is_some_and(|len| j >= len) {
+            return None;
+        }
+        Some(self.start + j * self.step)
+    }
 }
 
 impl Stream {
     /// How many maps the stream holds (`None`: unbounded).
     pub fn len(&self) -> Option<u64> {
         match self {
-            Stream::Generated { .. } => None,
+            Stream::Generated { .. } | Stream::Mixed { .. } => None,
             Stream::Fixed(maps) => Some(maps.len() as u64),
+        }
+    }
+
+    /// The lanes of the stream: the fixed maps (if any), then one lane per
+    /// generated kind, kind `k` of `K` holding the indices ≡ k (mod K) of
+    /// the generated part. A kind without seeds (`family`: the thesis
+    /// families at each parameter of its range) holds its distinct maps
+    /// only, once each.
+    pub fn lanes(&self) -> Vec<Lane> {
+        let generated = |kinds: &[KindSpec], shift: u64| -> Vec<Lane> {
+            let k = kinds.len() as u64;
+            kinds
+                .iter()
+                .enumerate()
+                .map(|(i, spec)| Lane {
+                    name: spec.kind.id().to_owned(),
+                    start: shift + i as u64,
+                    step: k,
+                    len: match spec.kind {
+                        MapKind::Family => {
+                            let span = (*spec.sizes.end() - *spec.sizes.start() + 1) as u64;
+                            Some(span * wai_gen::FAMILIES.len() as u64)
+                        }
+                        _ => None,
+                    },
+                })
+                .collect()
+        };
+        let fixed_lane = |fixed: &[(String, Map)]| Lane {
+            name: "fixed".to_owned(),
+            start: 0,
+            step: 1,
+            len: Some(fixed.len() as u64),
+        };
+        match self {
+            Stream::Fixed(maps) => vec![fixed_lane(maps)],
+            Stream::Generated { kinds, .. } => generated(kinds, 0),
+            Stream::Mixed { fixed, kinds, .. } => {
+                let mut lanes = vec![fixed_lane(fixed)];
+                lanes.extend(generated(kinds, fixed.len() as u64));
+                lanes.retain(|l| l.len != Some(0));
+                lanes
+            }
         }
     }
 
@@ -183,6 +255,14 @@ impl Stream {
     pub fn map(&self, i: u64) -> Option<(String, Map)> {
         match self {
             Stream::Fixed(maps) => maps.get(i as usize).cloned(),
+            Stream::Mixed { fixed, kinds, seed } => match fixed.get(i as usize) {
+                Some(m) => Some(m.clone()),
+                None => Stream::Generated {
+                    kinds: kinds.clone(),
+                    seed: *seed,
+                }
+                .map(i - fixed.len() as u64),
+            },
             Stream::Generated { kinds, seed } => {
                 let k = kinds.len() as u64;
                 let spec = &kinds[(i % k) as usize];
@@ -238,6 +318,46 @@ mod tests {
         );
         for bad in ["nope", "family:0", "random-orthogonal:9-3", "bytes:x", ""] {
             assert!(parse_kinds(bad).is_err(), "{bad}");
+        }
+    }
+
+    #[test]
+    fn lanes_partition_the_stream_by_kind() {
+        let kinds = parse_kinds("random-orthogonal,family:1-2,bytes").unwrap();
+        let fixed = vec![(
+            "fixed".to_owned(),
+            wai_gen::family("corridor-niches", &[1]).unwrap(),
+        )];
+        let stream = Stream::Mixed {
+            fixed,
+            kinds: kinds.clone(),
+            seed: 5,
+        };
+        let lanes = stream.lanes();
+        let names: Vec<&str> = lanes.iter().map(|l| l.name.as_str()).collect();
+        assert_eq!(names, ["fixed", "random-orthogonal", "family", "bytes"]);
+        assert_eq!(lanes[0].len, Some(1));
+        // The family lane holds each family at parameters 1 and 2 once.
+        let family = &lanes[2];
+        assert_eq!(family.len, Some(2 * wai_gen::FAMILIES.len() as u64));
+        let maps: Vec<Map> = (0..family.len.unwrap())
+            .map(|j| stream.map(family.index(j).unwrap()).unwrap().1)
+            .collect();
+        for (a, m) in maps.iter().enumerate() {
+            assert!(
+                maps[..a].iter().all(|o| o.vertices() != m.vertices()),
+                "{a}"
+            );
+        }
+        assert_eq!(family.index(family.len.unwrap()), None);
+        // Lane k's maps are the generated stream's maps of kind k.
+        let generated = Stream::Generated { kinds, seed: 5 };
+        for (k, lane) in lanes[1..].iter().enumerate() {
+            for j in 0..3 {
+                let (kind, a) = stream.map(lane.index(j).unwrap()).unwrap();
+                let (_, b) = generated.map(j * 3 + k as u64).unwrap();
+                assert_eq!((kind.as_str(), &a), (lane.name.as_str(), &b));
+            }
         }
     }
 
