@@ -523,7 +523,7 @@ pub(crate) fn rat_point_small(p: &RatPoint) -> Option<[i128; 3]> {
 
 /// The turn of `a → b → c`: the sign of `(b − a) × (c − a)`, `Greater` for
 /// a left (counter-clockwise) turn, `Equal` when the three are collinear
-/// (coincident points included). [`Orientation::from_sign`] names it.
+/// (coincident points included). [`crate::Orientation::from_sign`] names it.
 ///
 /// ```
 /// use wai_exact::{turn, QPoint, Point};
