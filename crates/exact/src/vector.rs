@@ -457,6 +457,79 @@ impl fmt::Display for QPoint {
 }
 
 // ---------------------------------------------------------------------------
+// RatPoint as a position vector.
+
+/// The products of two `i64` values as `i128`s: exact, each below `2^126`
+/// in magnitude.
+#[inline]
+fn products(a: &Integer, b: &Integer, c: &Integer, d: &Integer) -> Option<(i128, i128)> {
+    let f = |v: &Integer| v.to_i64().map(i128::from);
+    Some((f(a)? * f(b)?, f(c)? * f(d)?))
+}
+
+/// A [`RatPoint`] read as its position vector (from the origin): the
+/// vocabulary of [`QPoint`] on homogeneous coordinates, for code that keeps
+/// its points canonical (the localizer's views relative to the robot).
+impl RatPoint {
+    /// `self − o`, in lowest terms.
+    pub fn sub(&self, o: &RatPoint) -> RatPoint {
+        let (aw, bw) = (self.hw(), o.hw());
+        RatPoint::new(
+            Integer::from(self.hx() * bw) - Integer::from(o.hx() * aw),
+            Integer::from(self.hy() * bw) - Integer::from(o.hy() * aw),
+            Integer::from(aw * bw),
+        )
+        .expect("positive denominators")
+    }
+
+    /// `−self`.
+    pub fn neg(&self) -> RatPoint {
+        RatPoint::new(
+            Integer::from(-self.hx()),
+            Integer::from(-self.hy()),
+            self.hw().clone(),
+        )
+        .expect("w > 0")
+    }
+
+    /// The sign of `self × o` of the position vectors (`Greater`: `o` is
+    /// counter-clockwise from `self` around the origin).
+    ///
+    /// Implementation note: the denominators are positive, so the sign is
+    /// that of `X_a·Y_b − Y_a·X_b`, compared as two products; with the
+    /// numerators in `i64` each product is below `2^126` and exact in
+    /// `i128`, otherwise GMP.
+    pub fn cross_sign(&self, o: &RatPoint) -> Ordering {
+        if let Some((p, q)) = products(self.hx(), o.hy(), self.hy(), o.hx()) {
+            return p.cmp(&q);
+        }
+        Integer::from(self.hx() * o.hy()).cmp(&Integer::from(self.hy() * o.hx()))
+    }
+
+    /// The sign of `self · o` of the position vectors (the same note as
+    /// [`RatPoint::cross_sign`]: `p + q` is compared as `p` against `−q`,
+    /// which no product of two `i64` overflows).
+    pub fn dot_sign(&self, o: &RatPoint) -> Ordering {
+        if let Some((p, q)) = products(self.hx(), o.hx(), self.hy(), o.hy()) {
+            return p.cmp(&-q);
+        }
+        (Integer::from(self.hx() * o.hx()) + Integer::from(self.hy() * o.hy())).cmp0()
+    }
+
+    /// Whether the position vector lies in `[0, π)` counter-clockwise from
+    /// the positive x axis (`y > 0`, or `y = 0 < x`).
+    pub fn upper_half(&self) -> bool {
+        upper(self.hx().cmp0(), self.hy().cmp0())
+    }
+
+    /// The counter-clockwise angular order of nonzero position vectors from
+    /// the positive x axis, as [`Vector::compare_angle`].
+    pub fn compare_angle(&self, o: &RatPoint) -> Ordering {
+        angle_order(self.upper_half(), o.upper_half(), || self.cross_sign(o))
+    }
+}
+
+// ---------------------------------------------------------------------------
 // Predicates and the convex hull.
 
 /// Homogeneous coordinates below `2^HOMOGENEOUS_FAST_BITS` in magnitude

@@ -94,6 +94,20 @@ fn collinear(bits: u32) -> impl Strategy<Value = [QPoint; 3]> {
         .prop_map(|(a, d, s, t)| [a.clone(), a.along(&d, &s), a.along(&d, &t)])
 }
 
+/// Rational points whose homogeneous numerators straddle the `i64` range
+/// of `RatPoint::cross_sign`'s fast path.
+fn ratpoint() -> impl Strategy<Value = RatPoint> {
+    let num = prop_oneof![
+        2 => -1000i128..=1000,
+        1 => Just(i128::from(i64::MIN)),
+        1 => Just(i128::from(i64::MAX)),
+        1 => Just(i128::from(i64::MAX) + 1),
+        2 => any::<i64>().prop_map(i128::from),
+        2 => -(1i128 << 100)..=1i128 << 100,
+    ];
+    (num.clone(), num, 1i128..=1 << 40).prop_map(|(x, y, w)| rat(x, y, w))
+}
+
 const H: u32 = HOMOGENEOUS_FAST_BITS;
 
 fn check_turn(a: &QPoint, b: &QPoint, c: &QPoint) {
@@ -189,6 +203,20 @@ proptest! {
         let (ra, rb, rc) = (a.to_rat_point(), b.to_rat_point(), c.to_rat_point());
         let plain = rational_turn(&a, &b, &c);
         prop_assert_eq!(orientation_rat(&ra, &rb, &rc), Orientation::from_sign(plain));
+    }
+
+    // RatPoint as a position vector, against its affine coordinates, with
+    // numerators around the i64 edge of the fast path.
+    #[test]
+    fn ratpoint_vector_ops_equal_rationals(a in ratpoint(), b in ratpoint()) {
+        let (qa, qb) = (QPoint::from(&a), QPoint::from(&b));
+        prop_assert_eq!(a.cross_sign(&b), qa.cross(&qb).cmp0());
+        prop_assert_eq!(a.dot_sign(&b), qa.dot(&qb).cmp0());
+        prop_assert_eq!(QPoint::from(&a.sub(&b)), qa.sub(&qb));
+        prop_assert_eq!(QPoint::from(&a.neg()), qa.neg());
+        if !qa.is_zero() && !qb.is_zero() {
+            prop_assert_eq!(a.compare_angle(&b), qa.compare_angle(&qb));
+        }
     }
 
     #[test]
