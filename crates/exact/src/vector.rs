@@ -180,6 +180,59 @@ impl fmt::Display for Vector {
     }
 }
 
+impl std::ops::Add for Vector {
+    type Output = Vector;
+
+    /// `self + o`.
+    ///
+    /// # Panics
+    /// If a component overflows an `i128` (never for vectors below
+    /// `2^126`, such as differences of points below `2^MAX_COORD_BITS`).
+    #[inline]
+    fn add(self, o: Vector) -> Vector {
+        let sum = || {
+            Some(Vector::new(
+                self.x.checked_add(o.x)?,
+                self.y.checked_add(o.y)?,
+            ))
+        };
+        sum().expect("a sum of vectors below 2^126")
+    }
+}
+
+impl std::ops::Sub for Vector {
+    type Output = Vector;
+
+    /// `self − o`.
+    ///
+    /// # Panics
+    /// If a component overflows an `i128`, as for `+`.
+    #[inline]
+    fn sub(self, o: Vector) -> Vector {
+        let diff = || {
+            Some(Vector::new(
+                self.x.checked_sub(o.x)?,
+                self.y.checked_sub(o.y)?,
+            ))
+        };
+        diff().expect("a difference of vectors below 2^126")
+    }
+}
+
+impl std::ops::Neg for Vector {
+    type Output = Vector;
+
+    /// `−self`.
+    ///
+    /// # Panics
+    /// If a component is `i128::MIN`, whose negation an `i128` lacks.
+    #[inline]
+    fn neg(self) -> Vector {
+        let neg = || Some(Vector::new(self.x.checked_neg()?, self.y.checked_neg()?));
+        neg().expect("a vector above i128::MIN")
+    }
+}
+
 impl std::ops::Sub for Point {
     type Output = Vector;
 
