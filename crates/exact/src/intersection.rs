@@ -9,6 +9,7 @@ use crate::line::Line;
 use crate::point::{fits_bits, Point, RatPoint};
 use crate::predicates::Side;
 use crate::reference;
+use crate::vector::Vector;
 use std::cmp::Ordering;
 
 /// Input coordinates below `2^INTERSECTION_FAST_BITS` in magnitude take the
@@ -96,14 +97,15 @@ pub fn side_of_intersection(l3: &Line, l1: &Line, l2: &Line) -> Option<Side> {
     }
     // Differences below 2^31 and their cross products below 2^63: within
     // VECTOR_FAST_BITS, so `Vector::cross` is exact (the note above).
-    let (d1, d2, d3) = (b1 - a1, b2 - a2, b3 - a3);
+    let d = Vector::between_fast;
+    let (d1, d2, d3) = (d(a1, b1), d(a2, b2), d(a3, b3));
     let den = d1.cross(d2);
     if den == 0 {
         return None;
     }
-    let num = (a2 - a1).cross(d2);
+    let num = d(a1, a2).cross(d2);
     // I = a1 + (num/den) d1;  d3 × (I - a3) = [d3 × (a1 - a3) · den + num · (d3 × d1)] / den.
-    let s = d3.cross(a1 - a3) * den + num * d3.cross(d1);
+    let s = d3.cross(d(a3, a1)) * den + num * d3.cross(d1);
     Some(Side::from_sign(s.cmp(&0)).flip_if(den < 0))
 }
 
@@ -116,13 +118,14 @@ pub fn compare_intersections_along(l0: &Line, l1: &Line, l2: &Line) -> Option<Or
         return reference::compare_intersections_along(l0, l1, l2);
     }
     // Within VECTOR_FAST_BITS, as in side_of_intersection.
-    let (d0, d1, d2) = (b0 - a0, b1 - a1, b2 - a2);
+    let d = Vector::between_fast;
+    let (d0, d1, d2) = (d(a0, b0), d(a1, b1), d(a2, b2));
     let (e1, e2) = (d0.cross(d1), d0.cross(d2));
     if e1 == 0 || e2 == 0 {
         return None;
     }
     // t_k = n_k / e_k is the parameter of the meeting point on l0.
-    let (n1, n2) = ((a1 - a0).cross(d1), (a2 - a0).cross(d2));
+    let (n1, n2) = (d(a0, a1).cross(d1), d(a0, a2).cross(d2));
     let s = n1 * e2 - n2 * e1;
     let ord = s.cmp(&0);
     Some(if (e1 < 0) != (e2 < 0) {

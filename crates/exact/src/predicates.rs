@@ -3,7 +3,7 @@
 use crate::line::Line;
 use crate::point::{fits_bits, Point, RatPoint};
 use crate::reference;
-use crate::vector::{det3_sign_big, det3_sign_small, rat_point_small, BigVector};
+use crate::vector::{det3_sign_big, det3_sign_small, rat_point_small, BigVector, Vector};
 use rug::Integer;
 use std::cmp::Ordering;
 
@@ -106,7 +106,8 @@ fn fast(p: &Point) -> bool {
 pub fn orientation(a: Point, b: Point, c: Point) -> Orientation {
     if fast(&a) && fast(&b) && fast(&c) {
         // Differences below 2^63: within VECTOR_FAST_BITS.
-        Orientation::from_sign((b - a).cross(c - a).cmp(&0))
+        let d = Vector::between_fast;
+        Orientation::from_sign(d(a, b).cross(d(a, c)).cmp(&0))
     } else {
         reference::orientation(a, b, c)
     }
@@ -126,7 +127,8 @@ pub fn compare_along(l: &Line, p: Point, q: Point) -> Ordering {
     let (a, b) = (l.a(), l.b());
     if fast(&a) && fast(&b) && fast(&p) && fast(&q) {
         // Same bound as orientation: a sum of two products of differences.
-        0.cmp(&(q - p).dot(b - a))
+        let d = Vector::between_fast;
+        0.cmp(&d(p, q).dot(d(a, b)))
     } else {
         reference::compare_along(l, p, q)
     }

@@ -22,7 +22,7 @@
 
 use crate::intersection::mul_checked;
 use crate::point::{Point, RatPoint};
-use crate::predicates::orientation;
+use crate::predicates::ORIENTATION_FAST_BITS;
 use rug::{Integer, Rational};
 use std::borrow::Cow;
 use std::cmp::Ordering;
@@ -88,6 +88,14 @@ impl Vector {
             to.x.checked_sub(from.x)?,
             to.y.checked_sub(from.y)?,
         ))
+    }
+
+    /// `to − from` in plain `i128` arithmetic, for the fast paths whose
+    /// stated bound keeps every difference inside an `i128` (no check in
+    /// release builds: the bound is the proof).
+    #[inline]
+    pub(crate) fn between_fast(from: Point, to: Point) -> Vector {
+        Vector::new(to.x - from.x, to.y - from.y)
     }
 
     /// Whether both components are zero.
@@ -647,6 +655,20 @@ pub(crate) fn rat_point_small(p: &RatPoint) -> Option<[i128; 3]> {
     (homogeneous_fits(h[0]) && homogeneous_fits(h[1]) && homogeneous_fits(h[2])).then_some(h)
 }
 
+/// The integer point of a [`QPoint`] whose coordinates are integers below
+/// `2^ORIENTATION_FAST_BITS` in magnitude, read without allocating.
+#[inline]
+fn small_point(p: &QPoint) -> Option<Point> {
+    let small = |q: &Rational| -> Option<i128> {
+        if *q.denom() != 1 {
+            return None;
+        }
+        let v = q.numer().to_i64()?;
+        (v.unsigned_abs() < 1 << ORIENTATION_FAST_BITS).then_some(i128::from(v))
+    };
+    Some(Point::new(small(&p.x)?, small(&p.y)?))
+}
+
 /// The turn of `a → b → c`: the sign of `(b − a) × (c − a)`, `Greater` for
 /// a left (counter-clockwise) turn, `Equal` when the three are collinear
 /// (coincident points included). [`crate::Orientation::from_sign`] names it.
@@ -660,16 +682,17 @@ pub(crate) fn rat_point_small(p: &RatPoint) -> Option<[i128; 3]> {
 /// ```
 ///
 /// Implementation note: three exact paths, the first that applies. Integer
-/// points (denominators 1, numerators in `i128`) go to
-/// [`crate::orientation`], whose `i128` path holds below
-/// `2^ORIENTATION_FAST_BITS`; points whose homogeneous triples are below
+/// points below `2^ORIENTATION_FAST_BITS` take [`crate::orientation`]'s
+/// `i128` path (see its bound); points whose homogeneous triples are below
 /// `2^HOMOGENEOUS_FAST_BITS` take a 3×3 determinant in `i128` (see there);
 /// the rest the same determinant in GMP integers, which, unlike `mpq`
 /// subtractions, reduces no fraction. No path allocates but the last.
 #[inline]
 pub fn turn(a: &QPoint, b: &QPoint, c: &QPoint) -> Ordering {
-    if let (Some(a), Some(b), Some(c)) = (a.to_point(), b.to_point(), c.to_point()) {
-        return orientation(a, b, c).sign();
+    if let (Some(a), Some(b), Some(c)) = (small_point(a), small_point(b), small_point(c)) {
+        // Below 2^ORIENTATION_FAST_BITS: `orientation`'s fast path.
+        let (u, v) = (Vector::between_fast(a, b), Vector::between_fast(a, c));
+        return u.cross(v).cmp(&0);
     }
     if let (Some(a), Some(b), Some(c)) = (
         homogeneous_small(a),
