@@ -68,8 +68,7 @@ pub fn piece_of(d: &Decomposition<'_>, cell: CellRef) -> Piece {
             // Counter-clockwise, as Piece wants (the arrangement's cells are,
             // but the piece's span test depends on it, so make sure).
             let area = (0..v.len()).fold(rug::Rational::new(), |s, i| {
-                let (a, b) = (&v[i], &v[(i + 1) % v.len()]);
-                s + rug::Rational::from(&a.x * &b.y) - rug::Rational::from(&a.y * &b.x)
+                s + v[i].cross(&v[(i + 1) % v.len()])
             });
             if area < 0 {
                 v.reverse();

@@ -99,13 +99,13 @@ pub fn side_of_intersection(l3: &Line, l1: &Line, l2: &Line) -> Option<Side> {
     // VECTOR_FAST_BITS, so `Vector::cross` is exact (the note above).
     let d = Vector::between_fast;
     let (d1, d2, d3) = (d(a1, b1), d(a2, b2), d(a3, b3));
-    let den = d1.cross(d2);
+    let den = d1.cross_fast(d2);
     if den == 0 {
         return None;
     }
-    let num = d(a1, a2).cross(d2);
+    let num = d(a1, a2).cross_fast(d2);
     // I = a1 + (num/den) d1;  d3 × (I - a3) = [d3 × (a1 - a3) · den + num · (d3 × d1)] / den.
-    let s = d3.cross(d(a3, a1)) * den + num * d3.cross(d1);
+    let s = d3.cross_fast(d(a3, a1)) * den + num * d3.cross_fast(d1);
     Some(Side::from_sign(s.cmp(&0)).flip_if(den < 0))
 }
 
@@ -120,12 +120,12 @@ pub fn compare_intersections_along(l0: &Line, l1: &Line, l2: &Line) -> Option<Or
     // Within VECTOR_FAST_BITS, as in side_of_intersection.
     let d = Vector::between_fast;
     let (d0, d1, d2) = (d(a0, b0), d(a1, b1), d(a2, b2));
-    let (e1, e2) = (d0.cross(d1), d0.cross(d2));
+    let (e1, e2) = (d0.cross_fast(d1), d0.cross_fast(d2));
     if e1 == 0 || e2 == 0 {
         return None;
     }
     // t_k = n_k / e_k is the parameter of the meeting point on l0.
-    let (n1, n2) = (d(a0, a1).cross(d1), d(a0, a2).cross(d2));
+    let (n1, n2) = (d(a0, a1).cross_fast(d1), d(a0, a2).cross_fast(d2));
     let s = n1 * e2 - n2 * e1;
     let ord = s.cmp(&0);
     Some(if (e1 < 0) != (e2 < 0) {

@@ -107,7 +107,7 @@ pub fn orientation(a: Point, b: Point, c: Point) -> Orientation {
     if fast(&a) && fast(&b) && fast(&c) {
         // Differences below 2^63: within VECTOR_FAST_BITS.
         let d = Vector::between_fast;
-        Orientation::from_sign(d(a, b).cross(d(a, c)).cmp(&0))
+        Orientation::from_sign(d(a, b).cross_fast(d(a, c)).cmp(&0))
     } else {
         reference::orientation(a, b, c)
     }
@@ -128,7 +128,7 @@ pub fn compare_along(l: &Line, p: Point, q: Point) -> Ordering {
     if fast(&a) && fast(&b) && fast(&p) && fast(&q) {
         // Same bound as orientation: a sum of two products of differences.
         let d = Vector::between_fast;
-        0.cmp(&d(p, q).dot(d(a, b)))
+        0.cmp(&d(p, q).dot_fast(d(a, b)))
     } else {
         reference::compare_along(l, p, q)
     }

@@ -8,7 +8,7 @@
 //!   integer direction that fits an `i128`. Its signs ([`Vector::cross_sign`],
 //!   [`Vector::dot_sign`], [`Vector::compare_angle`]) are exact for every
 //!   `i128`; its values ([`Vector::cross`], [`Vector::dot`]) need components
-//!   below `2^VECTOR_FAST_BITS`.
+//!   below `2^VECTOR_FAST_BITS` and panic rather than overflow beyond.
 //! - [`BigVector`]: integer vectors of any size, such as the directions
 //!   `W·v − (X, Y)` from a rational point `(X, Y)/W` to a map vertex `v`.
 //! - [`QPoint`]: a point or a vector with rational coordinates in affine
@@ -67,7 +67,7 @@ fn angle_order(u_upper: bool, v_upper: bool, cross_uv: impl FnOnce() -> Ordering
 ///
 /// The signs are exact for every `i128` (checked arithmetic, then GMP); the
 /// values [`Vector::cross`] and [`Vector::dot`] are exact below
-/// [`VECTOR_FAST_BITS`].
+/// [`VECTOR_FAST_BITS`] and refuse (panic) beyond it, never wrap.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
 pub struct Vector {
     pub x: i128,
@@ -108,25 +108,47 @@ impl Vector {
         BigVector::new(Integer::from(self.x), Integer::from(self.y))
     }
 
-    /// `self × o`, for components below `2^VECTOR_FAST_BITS` (see there);
-    /// beyond it use [`Vector::cross_sign`] or [`BigVector::cross`].
+    /// `self × o`, exactly.
+    ///
+    /// # Panics
+    /// If a component is `2^VECTOR_FAST_BITS` or more in magnitude, where
+    /// the value may not fit an `i128`: use [`Vector::cross_sign`] or
+    /// [`BigVector::cross`] there.
     #[inline]
     pub fn cross(self, o: Vector) -> i128 {
-        debug_assert!(
+        assert!(
             narrow(self.x, self.y) && narrow(o.x, o.y),
-            "{self:?} × {o:?}"
+            "{self} × {o} beyond 2^63"
         );
+        self.cross_fast(o)
+    }
+
+    /// `self · o`, exactly.
+    ///
+    /// # Panics
+    /// As [`Vector::cross`]; use [`Vector::dot_sign`] or [`BigVector::dot`]
+    /// beyond the bound.
+    #[inline]
+    pub fn dot(self, o: Vector) -> i128 {
+        assert!(
+            narrow(self.x, self.y) && narrow(o.x, o.y),
+            "{self} · {o} beyond 2^63"
+        );
+        self.dot_fast(o)
+    }
+
+    /// [`Vector::cross`] without the check, for the fast paths whose stated
+    /// bound keeps the components below `2^VECTOR_FAST_BITS`.
+    #[inline]
+    pub(crate) fn cross_fast(self, o: Vector) -> i128 {
+        debug_assert!(narrow(self.x, self.y) && narrow(o.x, o.y));
         self.x * o.y - self.y * o.x
     }
 
-    /// `self · o`, for components below `2^VECTOR_FAST_BITS` (see there);
-    /// beyond it use [`Vector::dot_sign`] or [`BigVector::dot`].
+    /// [`Vector::dot`] without the check, as [`Vector::cross_fast`].
     #[inline]
-    pub fn dot(self, o: Vector) -> i128 {
-        debug_assert!(
-            narrow(self.x, self.y) && narrow(o.x, o.y),
-            "{self:?} · {o:?}"
-        );
+    pub(crate) fn dot_fast(self, o: Vector) -> i128 {
+        debug_assert!(narrow(self.x, self.y) && narrow(o.x, o.y));
         self.x * o.x + self.y * o.y
     }
 
@@ -135,7 +157,7 @@ impl Vector {
     #[inline]
     pub fn cross_sign(self, o: Vector) -> Ordering {
         if narrow(self.x, self.y) && narrow(o.x, o.y) {
-            return self.cross(o).cmp(&0);
+            return self.cross_fast(o).cmp(&0);
         }
         match (mul_checked(self.x, o.y), mul_checked(self.y, o.x)) {
             // p − q > 0 iff p > q: no subtraction needed.
@@ -148,7 +170,7 @@ impl Vector {
     #[inline]
     pub fn dot_sign(self, o: Vector) -> Ordering {
         if narrow(self.x, self.y) && narrow(o.x, o.y) {
-            return self.dot(o).cmp(&0);
+            return self.dot_fast(o).cmp(&0);
         }
         let fast = mul_checked(self.x, o.x).and_then(|p| p.checked_add(mul_checked(self.y, o.y)?));
         match fast {
@@ -692,7 +714,7 @@ pub fn turn(a: &QPoint, b: &QPoint, c: &QPoint) -> Ordering {
     if let (Some(a), Some(b), Some(c)) = (small_point(a), small_point(b), small_point(c)) {
         // Below 2^ORIENTATION_FAST_BITS: `orientation`'s fast path.
         let (u, v) = (Vector::between_fast(a, b), Vector::between_fast(a, c));
-        return u.cross(v).cmp(&0);
+        return u.cross_fast(v).cmp(&0);
     }
     if let (Some(a), Some(b), Some(c)) = (
         homogeneous_small(a),

@@ -76,9 +76,10 @@ impl<'a> Frame<'a> {
     fn turn(&self, i: usize, j: usize) -> Ordering {
         match self {
             Frame::Fast { x, y, w, v } => {
-                // Directions below 2^62: within VECTOR_FAST_BITS.
+                // Directions below 2^62 (the note above): the differences
+                // fit, and the cross sign takes its i128 path.
                 let d = |k: usize| Vector::new(w * v[k].x - x, w * v[k].y - y);
-                d(i).cross(d(j)).cmp(&0)
+                d(i).cross_sign(d(j))
             }
             Frame::Exact { x, y, w, v } => {
                 let d = |k: usize| {

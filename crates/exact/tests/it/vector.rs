@@ -327,6 +327,16 @@ fn point_difference_is_a_vector() {
     );
 }
 
+/// Past `VECTOR_FAST_BITS` the values refuse instead of wrapping; the signs
+/// stay exact.
+#[test]
+#[should_panic(expected = "beyond 2^63")]
+fn cross_refuses_beyond_its_bound() {
+    let big = Vector::new(1 << VECTOR_FAST_BITS, 1);
+    assert_eq!(big.cross_sign(big), Ordering::Equal);
+    let _ = big.cross(big);
+}
+
 #[test]
 fn orientation_sign_round_trips() {
     for o in [
