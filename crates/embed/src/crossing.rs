@@ -43,10 +43,9 @@
 use std::cmp::Ordering;
 
 use rug::Rational;
-use wai_exact::{sees, Point};
+use wai_exact::{convex_hull, sees, turn, Point, QPoint};
 
 use crate::piece::{line_cut, segments_meet, Bounds, Piece};
-use wai_exact::{convex_hull, turn, QPoint};
 
 /// The lines of sight from one witness cell through one embedded
 /// artificial edge to the candidate edge the cell sees (module doc).

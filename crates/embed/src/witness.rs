@@ -18,8 +18,7 @@ use crate::piece::{Bounds, Piece};
 use std::cmp::Ordering;
 use std::collections::BTreeSet;
 use wai_cells::{Decomposition, FaceId, LowerSite};
-use wai_exact::RatPoint;
-use wai_exact::{turn, QPoint};
+use wai_exact::{turn, QPoint, RatPoint};
 use wai_visibility::{Skeleton, SkeletonEdge, VisibilityIndex};
 
 /// A cell of the decomposition, of any dimension.

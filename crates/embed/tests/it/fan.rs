@@ -5,8 +5,7 @@
 use std::fmt::Write;
 use wai_cells::Decomposition;
 use wai_embed::{common_interior_point, witness_regions, Embedder};
-use wai_exact::QPoint;
-use wai_exact::RatPoint;
+use wai_exact::{QPoint, RatPoint};
 use wai_visibility::{Skeleton, VisibilityIndex};
 
 #[test]

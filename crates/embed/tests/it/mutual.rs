@@ -7,8 +7,7 @@ use crate::common::maps;
 use rug::Rational;
 use wai_cells::Decomposition;
 use wai_embed::{piece_of, CellRef, Mutual, Piece, Sightlines};
-use wai_exact::sees;
-use wai_exact::QPoint;
+use wai_exact::{sees, QPoint};
 
 /// A few points of a piece: its inner point and, for a polygon, convex
 /// combinations of its vertices with small positive weights.
