@@ -251,7 +251,7 @@ impl Progress {
     }
 }
 
-pub fn check(args: &Args) -> Result<(), Failure> {
+pub fn run(args: &Args) -> Result<(), Failure> {
     if let Some(file) = &args.replay {
         return replay(args, file);
     }
@@ -262,7 +262,7 @@ pub fn check(args: &Args) -> Result<(), Failure> {
         .transpose()
         .map_err(|e| Failure::usage(format!("--budget: {e}")))?;
     if let Some(target) = &args.target {
-        return crate::target::target(args, target, budget);
+        return crate::check_target::run(args, target, budget);
     }
     let checkers = checkers(args)?;
     let stream = stream(args)?;

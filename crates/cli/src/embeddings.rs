@@ -3,11 +3,10 @@
 //! valid embeddings of one skeleton that overlap, with the exact verdict
 //! on whether their witnesses see each other (Theorem 4.2).
 
-use crate::decompose::progress_bar;
-use crate::input::{load, Format};
+use crate::failure::{counted_bar, Failure};
+use crate::input::load;
 use crate::vis::show;
-use crate::Failure;
-use std::path::Path;
+use std::path::{Path, PathBuf};
 use wai_cells::{Decomposition, LowerSite};
 use wai_embed::{
     kernels_overlap, overlapping_valid_pairs, valid_candidate_edges, witness_regions, CellRef,
@@ -17,10 +16,23 @@ use wai_map::Map;
 use wai_render::{embeddings_svg, EmbeddingDrawn, MapStyle};
 use wai_visibility::{ConvexRegion, VisibilityIndex};
 
-pub struct Options<'a> {
+#[derive(clap::Args, Debug)]
+pub struct Args {
+    /// Map file (JSON map format or GeoJSON); `-` reads standard input.
+    pub map: PathBuf,
+    /// Only this class (an index printed by `wai decompose --json`).
+    #[arg(long)]
     pub class: Option<usize>,
+    /// Print JSON instead of text.
+    #[arg(long)]
     pub json: bool,
-    pub svg: Option<&'a Path>,
+    /// Draw the embedded skeletons, kernels, witnesses and candidate
+    /// edges of one class (--class, else the one with the most valid
+    /// embeddings) into this SVG file.
+    #[arg(long)]
+    pub svg: Option<PathBuf>,
+    #[command(flatten)]
+    pub format: crate::input::FormatArg,
 }
 
 /// One class: its embeddings with their witnesses and valid candidate
@@ -258,10 +270,11 @@ fn svg(map: &Map, r: &ClassReport, out: &Path) -> Result<(), Failure> {
     std::fs::write(out, picture).map_err(|e| Failure::io(format!("{}: {e}", out.display())))
 }
 
-pub fn embeddings(path: &Path, opts: &Options<'_>, format: Format) -> Result<(), Failure> {
-    let loaded = load(path, format)?;
+pub fn run(args: &Args) -> Result<(), Failure> {
+    let opts = args;
+    let loaded = load(&args.map, args.format.format)?;
     let map = &loaded.map;
-    let bar = progress_bar("skeletons of cells", "cells of every dimension");
+    let bar = counted_bar("skeletons of cells", "cells of every dimension");
     let d = Decomposition::with_progress(map, &mut |done, total| {
         bar.set_length(total as u64);
         bar.set_position(done as u64);
@@ -283,7 +296,7 @@ pub fn embeddings(path: &Path, opts: &Options<'_>, format: Format) -> Result<(),
         Some(k) => vec![k],
         None => (0..classes).collect(),
     };
-    let bar = progress_bar("embeddings", "classes");
+    let bar = counted_bar("embeddings", "classes");
     bar.set_length(wanted.len() as u64);
     let reports: Vec<ClassReport> = wanted
         .iter()
@@ -293,7 +306,7 @@ pub fn embeddings(path: &Path, opts: &Options<'_>, format: Format) -> Result<(),
         })
         .collect();
     bar.finish_and_clear();
-    if let Some(out) = opts.svg {
+    if let Some(out) = opts.svg.as_deref() {
         // The class asked for, else the one with the most valid embeddings.
         let shown = reports
             .iter()

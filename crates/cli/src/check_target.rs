@@ -17,7 +17,7 @@ use crate::Failure;
 /// Evaluations when neither --evals nor --budget is given.
 const DEFAULT_EVALS: u64 = 2000;
 
-pub fn target(args: &Args, spec: &str, budget: Option<Duration>) -> Result<(), Failure> {
+pub fn run(args: &Args, spec: &str, budget: Option<Duration>) -> Result<(), Failure> {
     let target = Target::parse(spec).map_err(Failure::usage)?;
     let evals = match (args.evals, budget) {
         (None, None) => Some(DEFAULT_EVALS),
