@@ -76,7 +76,7 @@ pub struct Args {
     /// counterexample.
     #[arg(long, default_value_t = 3000)]
     pub shrink_tries: usize,
-    /// Stop at the first batch of maps with a counterexample.
+    /// Stop taking maps once a counterexample is found.
     #[arg(long)]
     pub first: bool,
     /// Write, per claim that measures a ratio, the map of its largest

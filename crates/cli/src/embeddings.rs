@@ -8,13 +8,11 @@ use crate::input::load;
 use crate::vis::show;
 use std::path::{Path, PathBuf};
 use wai_cells::{Decomposition, LowerSite};
-use wai_embed::{
-    kernels_overlap, overlapping_valid_pairs, valid_candidate_edges, witness_regions, CellRef,
-    Embedder, Embedding, Mutual, Piece, Pt, Sightlines, Witnesses,
-};
+use wai_embed::{CellRef, Mutual, Piece, Witnesses};
+use wai_exact::QPoint;
 use wai_map::Map;
 use wai_render::{embeddings_svg, EmbeddingDrawn, MapStyle};
-use wai_visibility::{ConvexRegion, VisibilityIndex};
+use wai_study::{Embedded, OverlappingPair, Study};
 
 #[derive(clap::Args, Debug)]
 pub struct Args {
@@ -35,58 +33,30 @@ pub struct Args {
     pub format: crate::input::FormatArg,
 }
 
-/// One class: its embeddings with their witnesses and valid candidate
-/// edges, and its overlapping pairs.
-struct ClassReport {
+/// One class, read off the study: its embeddings (with their kernels),
+/// witnesses and valid candidate edges, and its overlapping pairs.
+struct ClassReport<'s> {
     class: usize,
-    embeddings: Vec<Embedding>,
-    witnesses: Vec<Witnesses>,
-    valid_candidates: Vec<Vec<Vec<usize>>>,
-    /// By embedding: h(ker V*).
-    kernels: Vec<ConvexRegion>,
-    overlapping: Vec<Overlap>,
+    embeddings: &'s [Embedded],
+    witnesses: &'s [Witnesses],
+    valid_candidates: Vec<&'s [Vec<usize>]>,
+    overlapping: Vec<&'s OverlappingPair>,
 }
 
-struct Overlap {
-    a: usize,
-    b: usize,
-    kernels_overlap: bool,
-    sight: Mutual,
-}
-
-fn analyse(
-    map: &Map,
-    d: &Decomposition<'_>,
-    index: &VisibilityIndex<'_>,
-    embedder: &Embedder<'_>,
-    sightlines: &Sightlines<'_>,
-    class: usize,
-) -> ClassReport {
-    let embeddings = embedder.embeddings(&d.skeletons()[class]);
-    let origins: Vec<usize> = embeddings.iter().map(|h| h.origin).collect();
-    let witnesses = witness_regions(d, class, &origins);
-    let valid_candidates = embeddings
-        .iter()
-        .zip(&witnesses)
-        .map(|(h, w)| valid_candidate_edges(index, h, w))
-        .collect();
-    let kernels: Vec<ConvexRegion> = embeddings.iter().map(|h| h.kernel(map)).collect();
-    let overlapping = overlapping_valid_pairs(map, &embeddings, &witnesses)
-        .into_iter()
-        .map(|(a, b)| Overlap {
-            a,
-            b,
-            kernels_overlap: kernels_overlap(&kernels[a], &kernels[b]),
-            sight: sightlines.regions_by_lines(&witnesses[a].pieces(), &witnesses[b].pieces()),
-        })
-        .collect();
+fn analyse<'s>(study: &'s Study<'_>, class: usize) -> ClassReport<'s> {
+    let embeddings = &study.embeddings()[class];
     ClassReport {
         class,
         embeddings,
-        witnesses,
-        valid_candidates,
-        kernels,
-        overlapping,
+        witnesses: &study.witnesses()[class],
+        valid_candidates: (0..embeddings.len())
+            .map(|i| study.valid_candidates(class, i))
+            .collect(),
+        overlapping: study
+            .overlapping_pairs()
+            .iter()
+            .filter(|p| p.class == class)
+            .collect(),
     }
 }
 
@@ -113,10 +83,10 @@ fn json_class(map: &Map, d: &Decomposition<'_>, r: &ClassReport) -> serde_json::
     let embeddings: Vec<_> = r
         .embeddings
         .iter()
-        .zip(&r.witnesses)
+        .zip(r.witnesses)
         .zip(&r.valid_candidates)
-        .zip(&r.kernels)
-        .map(|(((h, w), vc), kernel)| {
+        .map(|((e, w), vc)| {
+            let (h, kernel) = (&e.embedding, &e.kernel);
             serde_json::json!({
                 "origin": h.origin,
                 "origin_point": show(map, &v[h.origin].into()),
@@ -177,12 +147,13 @@ fn text_class(map: &Map, d: &Decomposition<'_>, r: &ClassReport, out: &mut Strin
         r.embeddings.len(),
         r.overlapping.len()
     );
-    for ((h, w), vc) in r
+    for ((e, w), vc) in r
         .embeddings
         .iter()
-        .zip(&r.witnesses)
+        .zip(r.witnesses)
         .zip(&r.valid_candidates)
     {
+        let h = &e.embedding;
         let cells: Vec<String> = w.cells.iter().map(|c| cell_name(d, c.cell)).collect();
         let _ = writeln!(
             out,
@@ -234,22 +205,28 @@ fn svg(map: &Map, r: &ClassReport, out: &Path) -> Result<(), Failure> {
     let drawn: Vec<EmbeddingDrawn> = r
         .embeddings
         .iter()
-        .zip(&r.witnesses)
+        .zip(r.witnesses)
         .zip(&r.valid_candidates)
-        .zip(&r.kernels)
-        .map(|(((h, w), vc), kernel)| EmbeddingDrawn {
+        .map(|((e, w), vc)| (&e.embedding, &e.kernel, w, vc))
+        .map(|(h, kernel, w, vc)| EmbeddingDrawn {
             origin: h.origin,
             polygon: h.polygon(map),
             kernel: kernel.vertices().to_vec(),
             witnesses: w
                 .cells
                 .iter()
-                .map(|c| c.piece.vertices().iter().map(Pt::to_rat_point).collect())
+                .map(|c| {
+                    c.piece
+                        .vertices()
+                        .iter()
+                        .map(QPoint::to_rat_point)
+                        .collect()
+                })
                 .collect(),
             candidate_edges: h
                 .candidates
                 .iter()
-                .zip(vc)
+                .zip(vc.iter())
                 .flat_map(|(cs, valid)| cs.iter().map(|&e| (e, valid.contains(&e))))
                 .collect(),
         })
@@ -289,23 +266,13 @@ pub fn run(args: &Args) -> Result<(), Failure> {
             )));
         }
     }
-    let index = VisibilityIndex::new(map);
-    let embedder = Embedder::new(&index);
-    let sightlines = Sightlines::new(map);
+    let study = Study::from_decomposition(d);
+    let d = study.decomposition();
     let wanted: Vec<usize> = match opts.class {
         Some(k) => vec![k],
         None => (0..classes).collect(),
     };
-    let bar = counted_bar("embeddings", "classes");
-    bar.set_length(wanted.len() as u64);
-    let reports: Vec<ClassReport> = wanted
-        .iter()
-        .map(|&k| {
-            bar.inc(1);
-            analyse(map, &d, &index, &embedder, &sightlines, k)
-        })
-        .collect();
-    bar.finish_and_clear();
+    let reports: Vec<ClassReport> = wanted.iter().map(|&k| analyse(&study, k)).collect();
     if let Some(out) = opts.svg.as_deref() {
         // The class asked for, else the one with the most valid embeddings.
         let shown = reports
@@ -324,7 +291,7 @@ pub fn run(args: &Args) -> Result<(), Failure> {
             "name": map.name(),
             "n": map.n(),
             "r": map.r(),
-            "classes": reports.iter().map(|r| json_class(map, &d, r)).collect::<Vec<_>>(),
+            "classes": reports.iter().map(|r| json_class(map, d, r)).collect::<Vec<_>>(),
         });
         println!("{}", serde_json::to_string_pretty(&v).expect("plain JSON"));
         return Ok(());
@@ -362,7 +329,7 @@ pub fn run(args: &Args) -> Result<(), Failure> {
     for r in &reports {
         // Without --class, only skeletons with two or more embeddings.
         if opts.class.is_some() || r.embeddings.len() > 1 {
-            text_class(map, &d, r, &mut out);
+            text_class(map, d, r, &mut out);
         }
     }
     print!("{out}");
