@@ -262,7 +262,13 @@ pub fn run(args: &Args) -> Result<(), Failure> {
         .transpose()
         .map_err(|e| Failure::usage(format!("--budget: {e}")))?;
     if let Some(target) = &args.target {
-        return crate::check_target::run(args, target, budget);
+        return crate::check_target::run(
+            target,
+            args.evals,
+            budget,
+            args.seed,
+            args.out.as_deref(),
+        );
     }
     let checkers = checkers(args)?;
     let stream = stream(args)?;
