@@ -516,7 +516,8 @@ pub static CLAIMS: &[Claim] = &[
         Bound,
         "Corollary 5.18",
         "Algorithm 3.14 preprocesses a map in O(N(n + r^2)) time and space.",
-    ),
+    )
+    .checked(ch5::c5_18::CHECKER),
 ];
 
 #[cfg(test)]

@@ -1,8 +1,10 @@
 //! The scaling sweep: grow each thesis family and random and orthogonal
 //! maps, decompose each exactly, and write CSV plus SVG plots — cells
 //! against r, max |EC| against n + r², decomposition time against N, the
-//! localizer's overlay time and size against N(n + r²) and its median
-//! query time against m and A, and chapter 5's counts per class from
+//! preprocessing of Alg 3.14 (decomposition and overlays: its time, and
+//! the size C5.18's checker measures, `wai_lemmas::ch5::c5_18::size`) and
+//! the localizer's overlay time and size against N(n + r²) (Corollary
+//! 5.18), its median query time against m and A, and chapter 5's counts per class from
 //! `wai_study::Study` (|C_sing| against r², |C_mult| against r, wedge
 //! edges W against r²) — with fitted log–log slopes, the commit and the
 //! date on every plot, and every slope in `slopes.csv`.
@@ -92,6 +94,11 @@ struct Row {
     /// entries, the structure's memory in units).
     overlay_seconds: f64,
     overlay_size: usize,
+    /// The whole preprocessing of Alg 3.14 (the decomposition with its
+    /// classes, then the overlays): seconds, and its size as C5.18's
+    /// checker measures it (trapezoids over all classes).
+    preprocess_seconds: f64,
+    trapezoids: usize,
     /// Median query time (Alg 3.13) over random views, microseconds; the
     /// views' mean vertex count m and mean answer count A.
     query_us: f64,
@@ -395,6 +402,7 @@ fn main() {
                             .sum::<usize>()
                 })
                 .sum();
+            let trapezoids = wai_lemmas::ch5::c5_18::size(&loc);
             let (query_us, mean_m, mean_a) = query_times(map, &loc, 50, 20);
             drop(loc);
             let ch5 = (c.cells <= ch5_max_cells).then(|| {
@@ -420,6 +428,8 @@ fn main() {
                 seconds,
                 overlay_seconds,
                 overlay_size,
+                preprocess_seconds: seconds + overlay_seconds,
+                trapezoids,
                 query_us,
                 mean_m,
                 mean_a,
@@ -430,7 +440,7 @@ fn main() {
     eprintln!();
     let csv = out.join("sweep.csv");
     let mut f = std::fs::File::create(&csv).expect("csv file");
-    writeln!(f, "series,param,n,r,rays,cells,total_complexity,classes,max_class_complexity,largest_class_cells,seconds,overlay_seconds,overlay_size,query_us,mean_m,mean_a,max_c_sing,max_c_mult,max_wedge,ch5_seconds").unwrap();
+    writeln!(f, "series,param,n,r,rays,cells,total_complexity,classes,max_class_complexity,largest_class_cells,seconds,overlay_seconds,overlay_size,preprocess_seconds,trapezoids,query_us,mean_m,mean_a,max_c_sing,max_c_mult,max_wedge,ch5_seconds").unwrap();
     for r in &rows {
         // Empty where the map was above the chapter 5 cap.
         let ch5 = r.ch5.map_or_else(
@@ -439,7 +449,7 @@ fn main() {
         );
         writeln!(
             f,
-            "{},{},{},{},{},{},{},{},{},{},{:.6},{:.6},{},{:.3},{:.1},{:.2},{ch5}",
+            "{},{},{},{},{},{},{},{},{},{},{:.6},{:.6},{},{:.6},{},{:.3},{:.1},{:.2},{ch5}",
             r.series,
             r.param,
             r.n,
@@ -453,6 +463,8 @@ fn main() {
             r.seconds,
             r.overlay_seconds,
             r.overlay_size,
+            r.preprocess_seconds,
+            r.trapezoids,
             r.query_us,
             r.mean_m,
             r.mean_a
@@ -557,6 +569,30 @@ fn main() {
             "N(n + r²)",
             "size (entries)",
             by(&|r: &Row| ((r.total * (r.n + r.r * r.r)) as f64, r.overlay_size as f64)),
+        ),
+        (
+            "preprocess_time_vs_bound.svg",
+            "Alg 3.14 preprocessing (decomposition + overlays): time against N(n + r²) (C5.18)",
+            "N(n + r²)",
+            "seconds",
+            by(&|r: &Row| {
+                (
+                    wai_lemmas::ch5::c5_18::bound(r.total, r.n, r.r) as f64,
+                    r.preprocess_seconds,
+                )
+            }),
+        ),
+        (
+            "preprocess_size_vs_bound.svg",
+            "Alg 3.14 preprocessing: trapezoids over all overlays against N(n + r²) (C5.18)",
+            "N(n + r²)",
+            "trapezoids",
+            by(&|r: &Row| {
+                (
+                    wai_lemmas::ch5::c5_18::bound(r.total, r.n, r.r) as f64,
+                    r.trapezoids as f64,
+                )
+            }),
         ),
         (
             "query_vs_m.svg",

@@ -140,6 +140,27 @@ impl Interweavement {
         d
     }
 
+    /// The connected components with at least one edge, as (embedding
+    /// nodes, special nodes) each, ordered by their least node.
+    pub fn components(&self) -> Vec<(usize, usize)> {
+        let nodes = self.nodes();
+        let at = |x: &Node| nodes.binary_search(x).expect("a node of the graph");
+        let mut c = Classes((0..nodes.len()).collect());
+        for (a, b) in &self.edges {
+            c.union(at(a), at(b));
+        }
+        c.groups()
+            .into_iter()
+            .map(|g| {
+                let embeddings = g
+                    .iter()
+                    .filter(|&&k| matches!(nodes[k], Node::Embedding(_)))
+                    .count();
+                (embeddings, g.len() - embeddings)
+            })
+            .collect()
+    }
+
     /// A cycle, as the nodes along it, if the graph has one (Lemma 5.8
     /// says it has none). The graph is simple, so a cycle has at least
     /// four nodes.
@@ -221,6 +242,11 @@ mod tests {
         let d = g.degrees();
         assert_eq!(d[&Embedding(1)], 3);
         assert_eq!(d[&Overlap(0)], 2);
+        // One tree of all seven embeddings and the five special nodes.
+        assert_eq!(g.components(), vec![(7, 5)]);
+        // Two trees apart, and an embedding on no edge in none.
+        let g = Interweavement::new(5, &[(0, 1)], &[((2, 0), (3, 0))]);
+        assert_eq!(g.components(), vec![(2, 1), (2, 1)]);
     }
 
     #[test]

@@ -5,8 +5,8 @@
 //! (Defs 3.8–3.10), the embeddings of every class's skeleton (Def 3.11) with
 //! their kernels, witnesses (Def 4.1), views and valid candidate edges, the
 //! overlapping pairs of chapter 4 with their verdicts, the candidate sets,
-//! gaps and interweavement graphs of chapter 5, and Def 5.2's classification
-//! of cell edges. Each structure is built the first time something asks for
+//! gaps and interweavement graphs of chapter 5, Def 5.2's classification
+//! of cell edges, and the localizer's preprocessing (Alg 3.14). Each structure is built the first time something asks for
 //! it, once, and then shared by every reader of the study.
 //!
 //! - [`study`]: [`Study`] and the records it hands out ([`OverlappingPair`],

@@ -20,6 +20,7 @@ use wai_embed::{
     GapRelation, Intersection, Interweavement, Mutual, SightFan, Sightlines, SkeletonRing,
     Witnesses,
 };
+use wai_localize::Localizer;
 use wai_map::Map;
 use wai_visibility::{ConvexRegion, VisibilityIndex, VisibilityPolygon};
 
@@ -56,6 +57,8 @@ pub struct Study<'m> {
     cell_edges: OnceCell<Vec<Vec<CellEdges>>>,
     /// By class: its gaps as boundary chains and the interweavement graph.
     gaps: OnceCell<Vec<GapStructure>>,
+    /// The localizer's preprocessing (Alg 3.14): one overlay per class.
+    localizer: OnceCell<Localizer>,
     /// By class and embedding: the sight fans of its witness cells, each
     /// embedding's built when first asked for.
     fans: OnceCell<Vec<Vec<OnceCell<Vec<SightFan>>>>>,
@@ -219,6 +222,7 @@ impl<'m> Study<'m> {
             cell_edges: OnceCell::new(),
             gaps: OnceCell::new(),
             fans: OnceCell::new(),
+            localizer: OnceCell::new(),
             crossings: RefCell::new(HashMap::new()),
             timer: Timer::default(),
         }
@@ -660,6 +664,18 @@ impl<'m> Study<'m> {
                     })
                     .collect()
             })
+        })
+    }
+
+    /// The map preprocessed for localization by Alg 3.14 from the study's
+    /// decomposition (steps 17–26: per class, its cells of every dimension
+    /// translated to their embedding's origin and overlaid, with slab point
+    /// location; `wai_localize::Localizer::from_decomposition`).
+    pub fn localizer(&self) -> &Localizer {
+        self.localizer.get_or_init(|| {
+            let d = self.decomposition();
+            self.timer
+                .stage("localizer", || Localizer::from_decomposition(d))
         })
     }
 

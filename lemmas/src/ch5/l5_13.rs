@@ -19,18 +19,53 @@
 //! sees e; e fails when every window is refuted. A pair is examined when
 //! both e and f are decided; a pair left open is counted as `undecided`,
 //! never as held. Counts: `windows_tried`, `undecided`.
+//!
+//! ## Cases
+//! By k: two embeddings ([`K2`]) or more ([`K3`]); and, for a pair that
+//! holds, whether the common windows of e and f are artificial edges of
+//! one embedding, h_{j_l} = h_{j_r} ([`ONE_EMBEDDING`]), or of two
+//! ([`TWO_EMBEDDINGS`], the leftmost and rightmost lines of sight of the
+//! proof in different embeddings, Fig 5.13).
 
 use serde_json::json;
 use wai_embed::{Chord, Pt, SightFan};
 
-use crate::framework::{Checker, Report, Violation};
+use crate::framework::{Case, Checker, Report, Violation};
 use wai_study::edge_pairs::shared_embeddings;
 use wai_study::Study;
 
 const ID: &str = "L5.13";
 
+/// A pair shared by two embeddings.
+pub const K2: &str = "k=2";
+/// A pair shared by three or more embeddings.
+pub const K3: &str = "k≥3";
+/// Both common windows in one embedding.
+pub const ONE_EMBEDDING: &str = "one embedding";
+/// The common windows in two different embeddings.
+pub const TWO_EMBEDDINGS: &str = "two embeddings";
+
 /// The checker of this claim.
-pub const CHECKER: Checker = Checker::new(ID, check_study);
+pub const CHECKER: Checker = Checker::new(ID, check_study).with_cases(&[
+    Case {
+        name: K2,
+        what: "map edges e, f candidate edges of different artificial edges in k = 2 embeddings",
+    },
+    Case {
+        name: K3,
+        what: "map edges e, f candidate edges of different artificial edges in k ≥ 3 embeddings",
+    },
+    Case {
+        name: ONE_EMBEDDING,
+        what: "a pair whose common windows h_{j_l}(a_l) (crossed by every line of sight to e) \
+               and h_{j_r}(ã_r) (to f) belong to one embedding",
+    },
+    Case {
+        name: TWO_EMBEDDINGS,
+        what: "a pair whose common windows belong to two different embeddings h_{j_l} ≠ h_{j_r} \
+               (Fig 5.13)",
+    },
+]);
 
 /// The verdict on one edge of a pair.
 #[derive(Debug, Clone, PartialEq, Eq)]
@@ -93,9 +128,10 @@ fn check_study(study: &Study<'_>) -> Report {
                 continue;
             }
             // For e (then f): by embedding, the fans that see it and the
-            // window they look through.
+            // window they look through, with the embedding's position j.
             let side = |edge: usize, i_of: &dyn Fn(usize) -> usize| {
                 let mut windows = Vec::new();
+                let mut owners = Vec::new();
                 let mut fans: Vec<&SightFan> = Vec::new();
                 for s in &shared {
                     let h = c.embeddings[s.j];
@@ -103,18 +139,24 @@ fn check_study(study: &Study<'_>) -> Report {
                     let seen: Vec<&SightFan> = study.fans_seeing(class, h, (a, edge)).collect();
                     if let Some(first) = seen.first() {
                         windows.push((first.v1.clone(), first.v2.clone()));
+                        owners.push(s.j);
                     }
                     fans.extend(seen);
                 }
-                (windows, fans)
+                (windows, owners, fans)
             };
             let i_e = |j: usize| shared.iter().find(|s| s.j == j).expect("listed").i;
             let i_f = |j: usize| shared.iter().find(|s| s.j == j).expect("listed").i_tilde;
             let mut verdicts = Vec::new();
+            let mut owner = Vec::new();
             for (edge, i_of) in [(e, &i_e as &dyn Fn(usize) -> usize), (f, &i_f)] {
-                let (windows, fans) = side(edge, i_of);
+                let (windows, owners, fans) = side(edge, i_of);
                 report.count("windows_tried", windows.len() as u64);
-                verdicts.push((edge, common_window(&ring, &windows, &fans)));
+                let verdict = common_window(&ring, &windows, &fans);
+                if let Verdict::Crossed(l) = verdict {
+                    owner.push(owners[l]);
+                }
+                verdicts.push((edge, verdict));
             }
             if verdicts.iter().any(|v| v.1 == Verdict::Undecided)
                 && !verdicts.iter().any(|v| v.1 == Verdict::Refuted)
@@ -127,6 +169,14 @@ fn check_study(study: &Study<'_>) -> Report {
                 .filter(|v| v.1 == Verdict::Refuted)
                 .map(|v| v.0)
                 .collect();
+            report.hit(if shared.len() == 2 { K2 } else { K3 });
+            if let [l, r] = owner[..] {
+                report.hit(if l == r {
+                    ONE_EMBEDDING
+                } else {
+                    TWO_EMBEDDINGS
+                });
+            }
             report.record((!refuted.is_empty()).then(|| {
                 Violation::with_data(
                     format!(

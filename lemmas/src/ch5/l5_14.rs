@@ -9,18 +9,64 @@
 //! pairwise overlap (skeleton polygons' interiors, as Theorem 4.2 and
 //! Def 5.7 use) is found by exhaustive clique search and compared with
 //! ⌈k/3⌉. Counts: `pairs_k_ge_2`, `largest_k` (per map, summed).
+//!
+//! ## Cases
+//! Each instance is [`K4`] (a pair with 2 ≤ k < 4 gives progress k toward
+//! it). The proof's general case, all k embeddings pairwise overlapping,
+//! is [`ALL_OVERLAP`]; each two of them that do not overlap are the
+//! proof's one exception when the artificial edge of e in one and that of
+//! f in the other meet at a map vertex v ([`EXCEPTION`], Fig 5.14), and
+//! [`APART`] otherwise; three pairwise non-overlapping ones are
+//! [`THREE_APART`] (Fig 5.15).
 
+use rug::Rational;
 use serde_json::json;
 
-use crate::framework::{Checker, Report, Violation};
+use crate::framework::{Case, Checker, Report, Violation};
 use wai_study::edge_pairs::shared_embeddings;
 use wai_study::GapStructure;
 use wai_study::Study;
 
 const ID: &str = "L5.14";
 
+/// A pair shared by k ≥ 4 embeddings: an instance.
+pub const K4: &str = "k≥4";
+/// The k embeddings pairwise overlap.
+pub const ALL_OVERLAP: &str = "all overlap";
+/// Two of them do not overlap, their windows to e and f meeting at a map
+/// vertex: the proof's exception (Fig 5.14).
+pub const EXCEPTION: &str = "exception";
+/// Two of them do not overlap, their windows not meeting.
+pub const APART: &str = "apart";
+/// Three of them pairwise do not overlap (Fig 5.15).
+pub const THREE_APART: &str = "three apart";
+
 /// The checker of this claim.
-pub const CHECKER: Checker = Checker::new(ID, check_study);
+pub const CHECKER: Checker = Checker::new(ID, check_study).with_cases(&[
+    Case {
+        name: K4,
+        what: "map edges e, f candidate edges of different artificial edges in k ≥ 4 \
+               embeddings (Lemma 5.14's premise)",
+    },
+    Case {
+        name: ALL_OVERLAP,
+        what: "k ≥ 4 embeddings sharing the pair that pairwise overlap (the proof's general \
+               case: each overlaps h_{j_l} and h_{j_r})",
+    },
+    Case {
+        name: EXCEPTION,
+        what: "two of the k embeddings that do not overlap, the artificial edge of e in one and \
+               that of f in the other meeting at a map vertex v (the one exception, Fig 5.14)",
+    },
+    Case {
+        name: APART,
+        what: "two of the k embeddings that do not overlap, with no such common vertex",
+    },
+    Case {
+        name: THREE_APART,
+        what: "three of the k embeddings that pairwise do not overlap (Fig 5.15)",
+    },
+]);
 
 /// Checks L5.14 on every class.
 fn check_study(study: &Study<'_>) -> Report {
@@ -32,6 +78,7 @@ fn check_study(study: &Study<'_>) -> Report {
         .zip(study.gap_structures())
         .enumerate()
     {
+        let hs = &study.embeddings()[class];
         for ((e, f), shared) in shared_embeddings(c) {
             if e > f {
                 continue; // the premise is symmetric in e and f
@@ -39,7 +86,23 @@ fn check_study(study: &Study<'_>) -> Report {
             let mut js: Vec<usize> = shared.iter().map(|s| s.j).collect();
             js.dedup();
             largest = largest.max(js.len());
-            let mut one = check_pair(&js, g);
+            // By j: the map vertices at the ends of the artificial edges
+            // through which it sees e and f.
+            let ends = |j: usize, i: usize| {
+                let v = &hs[c.embeddings[j]].embedding.vertices;
+                let a = c.artificial[i];
+                [v[a], v[(a + 1) % v.len()]]
+            };
+            let windows = |j: usize| {
+                let s = shared.iter().find(|s| s.j == j).expect("listed");
+                (ends(j, s.i), ends(j, s.i_tilde))
+            };
+            let meet = |j1: usize, j2: usize| {
+                let (e1, f1) = windows(j1);
+                let (e2, f2) = windows(j2);
+                e1.iter().any(|x| f2.contains(x)) || f1.iter().any(|x| e2.contains(x))
+            };
+            let mut one = check_pair(&js, g, meet);
             one.tag("class", json!(class));
             one.tag("edges", json!([e, f]));
             one.tag(
@@ -54,17 +117,45 @@ fn check_study(study: &Study<'_>) -> Report {
 }
 
 /// L5.14 for one pair of map edges shared by the embeddings at positions
-/// `js` (nothing examined when fewer than 4).
-pub fn check_pair(js: &[usize], g: &GapStructure) -> Report {
+/// `js` (nothing examined when fewer than 4); `meet(j1, j2)` tells whether
+/// the artificial edge of e in one and that of f in the other share a map
+/// vertex.
+pub fn check_pair(js: &[usize], g: &GapStructure, meet: impl Fn(usize, usize) -> bool) -> Report {
     let mut report = Report::new(ID);
     let k = js.len();
     if k >= 2 {
         report.count("pairs_k_ge_2", 1);
     }
     if k < 4 {
+        if k >= 2 {
+            report.progress_toward(K4, Rational::from(k));
+        }
         return report;
     }
+    report.hit(K4);
     let clique = largest_clique(js, |a, b| g.overlap(a, b));
+    if clique.len() == k {
+        report.hit(ALL_OVERLAP);
+    }
+    for (x, &a) in js.iter().enumerate() {
+        for &b in &js[x + 1..] {
+            if !g.overlap(a, b) {
+                report.hit(if meet(a, b) { EXCEPTION } else { APART });
+            }
+        }
+    }
+    let apart = |a: usize, b: usize| !g.overlap(a, b);
+    let three = js.iter().enumerate().any(|(x, &a)| {
+        js[x + 1..].iter().enumerate().any(|(y, &b)| {
+            apart(a, b)
+                && js[x + 1 + y + 1..]
+                    .iter()
+                    .any(|&c| apart(a, c) && apart(b, c))
+        })
+    });
+    if three {
+        report.hit(THREE_APART);
+    }
     let need = k.div_ceil(3);
     report.record((clique.len() < need).then(|| {
         Violation::with_data(
@@ -143,11 +234,28 @@ mod tests {
         // Seven embeddings sharing the pair: ⌈7/3⌉ = 3 must overlap.
         let js: Vec<usize> = (0..7).collect();
         let apart = GapStructure::new(vec![], vec![(0, 1), (2, 3)], 7);
-        let report = check_pair(&js, &apart);
+        let never = |_: usize, _: usize| false;
+        let report = check_pair(&js, &apart, never);
         assert_eq!((report.examined, report.violations.len()), (1, 1));
+        assert_eq!(report.cases[THREE_APART], 1);
+        // 21 pairs, 2 of them overlapping.
+        assert_eq!(report.cases[APART], 19);
         let triangle = GapStructure::new(vec![], vec![(0, 1), (1, 2), (0, 2)], 7);
-        assert!(check_pair(&js, &triangle).violations.is_empty());
-        // Three embeddings: no instance.
-        assert_eq!(check_pair(&js[..3], &apart).examined, 0);
+        assert!(check_pair(&js, &triangle, never).violations.is_empty());
+        // Three embeddings: no instance, progress 3 toward k ≥ 4.
+        let report = check_pair(&js[..3], &apart, never);
+        assert_eq!(report.examined, 0);
+        assert_eq!(report.toward[K4], 3);
+        // Four pairwise overlapping; then one pair apart meeting at v.
+        let all: Vec<(usize, usize)> = (0..4)
+            .flat_map(|a| (a + 1..4).map(move |b| (a, b)))
+            .collect();
+        let report = check_pair(&js[..4], &GapStructure::new(vec![], all.clone(), 4), never);
+        assert_eq!((report.cases[K4], report.cases[ALL_OVERLAP]), (1, 1));
+        let but_one: Vec<(usize, usize)> = all.into_iter().filter(|&p| p != (1, 2)).collect();
+        let g = GapStructure::new(vec![], but_one, 4);
+        let report = check_pair(&js[..4], &g, |a, b| (a, b) == (1, 2));
+        assert_eq!(report.cases[EXCEPTION], 1);
+        assert!(!report.cases.contains_key(ALL_OVERLAP));
     }
 }

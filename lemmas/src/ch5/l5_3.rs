@@ -13,18 +13,55 @@
 //! candidate edges. Counts: `single` sums |C_sing| over the classes
 //! examined, `largest_single` the largest per map (the driver sums both
 //! over maps).
+//!
+//! ## Cases
+//! Which term of min{s·t, n} bounds a class ([`ST_BOUND`], [`N_BOUND`]);
+//! a class with s, t ≥ 2 whose sets C_{i,j} are s·t distinct single edges,
+//! reaching the proof's count ([`ST_REACHED`], the shape of Fig 5.4, with
+//! the largest |C_sing| / (s·t) of such classes as progress toward it); and
+//! the construction itself reaching k² ([`FIG_5_4`]).
 
+use rug::Rational;
 use serde_json::json;
 use wai_embed::CandidateSets;
 
-use crate::framework::{Checker, Report, Violation};
+use crate::framework::{Case, Checker, Report, Violation};
 use wai_study::family::parameter_of;
 use wai_study::Study;
 
 const ID: &str = "L5.3";
 
+/// A class with s·t ≤ n: the proof's s·t (the O(r²) side) bounds it.
+pub const ST_BOUND: &str = "s·t ≤ n";
+/// A class with n < s·t: the trivial bound n is the smaller.
+pub const N_BOUND: &str = "n < s·t";
+/// A class with s, t ≥ 2 and |C_sing| = s·t.
+pub const ST_REACHED: &str = "s·t reached";
+/// The Fig 5.4 construction reaching k² single candidate edges.
+pub const FIG_5_4: &str = "Fig 5.4";
+
 /// The checker of this claim.
-pub const CHECKER: Checker = Checker::new(ID, check_study);
+pub const CHECKER: Checker = Checker::new(ID, check_study).with_cases(&[
+    Case {
+        name: ST_BOUND,
+        what: "a skeleton with s·t ≤ n: |C_sing| is bounded by the s·t sets C_{i,j} \
+               (Lemma 5.3's proof, the O(r²) side by Lemma 3.7)",
+    },
+    Case {
+        name: N_BOUND,
+        what: "a skeleton with n < s·t: the trivial bound n on C_sing is the smaller",
+    },
+    Case {
+        name: ST_REACHED,
+        what: "a skeleton with s, t ≥ 2 whose s·t sets C_{i,j} are distinct single edges: \
+               |C_sing| = s·t, the proof's count reached (the shape of Fig 5.4)",
+    },
+    Case {
+        name: FIG_5_4,
+        what: "the construction of Fig 5.4 (family convex-niches k) with k² single candidate \
+               edges of one skeleton (Lemma 5.3's tightness)",
+    },
+]);
 const FAMILY: &str = "convex-niches";
 
 /// Checks L5.3 on every class, and its tightness on `convex-niches`.
@@ -74,11 +111,26 @@ pub fn check_classes(n: usize, classes: &[CandidateSets], tight: Option<usize>) 
         );
         one.tag("class", json!(class));
         report.absorb(one);
+        report.hit(if c.s() * c.t() <= n {
+            ST_BOUND
+        } else {
+            N_BOUND
+        });
+        if c.s() >= 2 && c.t() >= 2 {
+            if single == c.s() * c.t() {
+                report.hit(ST_REACHED);
+            } else {
+                report.progress_toward(ST_REACHED, Rational::from((single, c.s() * c.t())));
+            }
+        }
         report.count("single", single as u64);
         largest = largest.max(single);
     }
     report.count("largest_single", largest as u64);
     if let Some(want) = tight {
+        if largest >= want {
+            report.hit(FIG_5_4);
+        }
         report.record((largest < want).then(|| {
             Violation::with_data(
                 format!(
@@ -106,6 +158,10 @@ mod tests {
                 report.violations
             );
             assert!(report.counts["largest_single"] >= u64::from(k * k));
+            assert_eq!(report.cases[FIG_5_4], 1, "k = {k}");
+            if k >= 2 {
+                assert!(report.cases.contains_key(ST_REACHED), "k = {k}");
+            }
             // The classes, plus the tightness instance.
             assert!(report.examined >= 2, "k = {k}");
         }

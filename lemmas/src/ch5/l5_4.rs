@@ -13,17 +13,49 @@
 //! views of [`wai_study::Study`], ordered along their line; gaps counted as
 //! distinct pairs of map edges. Counts: `gaps` and `multiple` summed over
 //! the classes examined.
+//!
+//! ## Cases
+//! On the classes with a gap, which side is larger: |C_mult| > gaps
+//! ([`MORE_MULTIPLE`], the direction |C_mult| ≤ 2·gaps has content), equal
+//! ([`EQUAL`]), or gaps > |C_mult| ([`MORE_GAPS`], the direction the thesis
+//! reads off the definition has content: an edge paired with different
+//! neighbours in different sets), with the largest gaps / |C_mult| as
+//! progress toward it.
 
+use rug::Rational;
 use serde_json::json;
 use wai_embed::CandidateSets;
 
-use crate::framework::{Checker, Report, Violation};
+use crate::framework::{Case, Checker, Report, Violation};
 use wai_study::Study;
 
 const ID: &str = "L5.4";
 
+/// A class with more multiple candidate edges than gaps.
+pub const MORE_MULTIPLE: &str = "more multiple";
+/// A class with as many gaps as multiple candidate edges.
+pub const EQUAL: &str = "equal";
+/// A class with more gaps than multiple candidate edges.
+pub const MORE_GAPS: &str = "more gaps";
+
 /// The checker of this claim.
-pub const CHECKER: Checker = Checker::new(ID, check_study);
+pub const CHECKER: Checker = Checker::new(ID, check_study).with_cases(&[
+    Case {
+        name: MORE_MULTIPLE,
+        what: "a skeleton with a gap and |C_mult| > gaps: a set C_{i,j} of three or more edges \
+               (the direction |C_mult| ≤ 2·gaps of Lemma 5.4 has content)",
+    },
+    Case {
+        name: EQUAL,
+        what: "a skeleton with a gap and as many gaps as multiple candidate edges",
+    },
+    Case {
+        name: MORE_GAPS,
+        what: "a skeleton with more gaps (Def 5.5) than multiple candidate edges: an edge \
+               consecutive with different edges in different sets C_{i,j} (the direction \
+               gaps ≤ 2·|C_mult| of Lemma 5.4 has content)",
+    },
+]);
 
 /// Checks L5.4 on every class with a valid embedding.
 fn check_study(study: &Study<'_>) -> Report {
@@ -58,6 +90,17 @@ pub fn check_classes(classes: &[CandidateSets]) -> Report {
         report.absorb(one);
         report.count("gaps", c.gaps.len() as u64);
         report.count("multiple", c.multiple.len() as u64);
+        let (gaps, mult) = (c.gaps.len(), c.multiple.len());
+        if gaps > 0 {
+            report.hit(match gaps.cmp(&mult) {
+                std::cmp::Ordering::Less => MORE_MULTIPLE,
+                std::cmp::Ordering::Equal => EQUAL,
+                std::cmp::Ordering::Greater => MORE_GAPS,
+            });
+            if gaps <= mult {
+                report.progress_toward(MORE_GAPS, Rational::from((gaps, mult)));
+            }
+        }
     }
     report
 }
@@ -74,6 +117,11 @@ mod tests {
         assert!(report.violations.is_empty(), "{:?}", report.violations);
         // Its largest class: 4 multiple candidate edges, 3 gaps.
         assert!(report.counts["multiple"] >= 4 && report.counts["gaps"] >= 3);
+        assert!(
+            report.cases.contains_key(MORE_MULTIPLE),
+            "{:?}",
+            report.cases
+        );
     }
 
     #[test]
@@ -89,6 +137,7 @@ mod tests {
         let c = CandidateSets::from_sets(vec![0], (0..sets.len()).collect(), sets);
         let report = check_classes(&[c]);
         assert_eq!((report.examined, report.violations.len()), (1, 1));
+        assert_eq!(report.cases[MORE_GAPS], 1);
         // Three edges, one set: 2 gaps, 3 multiple edges, within 2.
         let c = CandidateSets::from_sets(vec![0], vec![0], vec![vec![vec![1, 2, 3]]]);
         assert!(check_classes(&[c]).violations.is_empty());

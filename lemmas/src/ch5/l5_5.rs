@@ -6,14 +6,15 @@
 //! C_{i,j} as boundary chains ([`wai_embed::gaps`], whose module doc says
 //! how "part of the chain" is read), every two chains of different pairs
 //! of map edges compared. Each nested or interweaved pair is one instance
-//! (`examined`); counts `nested`, `interweaved`, `chains` (all gap chains)
-//! and `chains_through_own_set` (a chain passing another edge of its own
-//! set, which the reading of Def 5.5 excludes; 0 on the stress corpus).
+//! (`examined`), counted by case ([`NESTED`], [`INTERWEAVED`]: the
+//! lemma's two premises); counts `chains` (all gap chains) and
+//! `chains_through_own_set` (a chain passing another edge of its own set,
+//! which the reading of Def 5.5 excludes; 0 on the stress corpus).
 
 use serde_json::json;
 use wai_embed::{CandidateSets, GapRelation};
 
-use crate::framework::{Checker, Report, Violation};
+use crate::framework::{Case, Checker, Report, Violation};
 use wai_study::GapStructure;
 
 use super::over_gap_classes;
@@ -21,8 +22,22 @@ use wai_study::Study;
 
 const ID: &str = "L5.5";
 
+/// Two gaps, one nested into the other.
+pub const NESTED: &str = "nested";
+/// Two interweaved gaps.
+pub const INTERWEAVED: &str = "interweaved";
+
 /// The checker of this claim.
-pub const CHECKER: Checker = Checker::new(ID, check_study);
+pub const CHECKER: Checker = Checker::new(ID, check_study).with_cases(&[
+    Case {
+        name: NESTED,
+        what: "two gaps of which one is nested into the other (Def 5.6)",
+    },
+    Case {
+        name: INTERWEAVED,
+        what: "two interweaved gaps (Def 5.6)",
+    },
+]);
 
 /// Checks L5.5 on every class.
 fn check_study(study: &Study<'_>) -> Report {
@@ -40,14 +55,11 @@ pub fn check_class(g: &GapStructure, c: &CandidateSets) -> Report {
     }
     for &(a, b, rel) in &g.related {
         let (x, y) = (&g.chains[a], &g.chains[b]);
-        report.count(
-            if rel == GapRelation::Interweaved {
-                "interweaved"
-            } else {
-                "nested"
-            },
-            1,
-        );
+        report.hit(if rel == GapRelation::Interweaved {
+            INTERWEAVED
+        } else {
+            NESTED
+        });
         report.record((x.j == y.j).then(|| {
             Violation::with_data(
                 format!(
@@ -84,7 +96,7 @@ mod tests {
         let g = GapStructure::new(chains.clone(), vec![], 2);
         let report = check_class(&g, &c);
         assert_eq!((report.examined, report.violations.len()), (1, 1));
-        assert_eq!(report.counts["interweaved"], 1);
+        assert_eq!(report.cases[INTERWEAVED], 1);
         // In different embeddings they may.
         let moved = vec![chains[0], GapChain::new(4, 9, 1, 1, 20)];
         let report = check_class(&GapStructure::new(moved, vec![], 2), &c);

@@ -11,18 +11,60 @@
 //! definitions as built ([`wai_embed::Interweavement::new`]), so on maps
 //! they test the construction; parts 3 and 4 carry Lemma 5.8's content.
 //! Counts: `embedding_nodes` (t summed), `edges`.
+//!
+//! ## Cases
+//! The four parts, each counted on what it speaks of: part 1 per special
+//! node, part 2 per embedding node with an edge to an overlap class, part
+//! 3 per tree (a component with an edge), part 4 per graph; and a graph
+//! meeting part 4 with equality, edges = 2 × embedding nodes
+//! ([`PART_4_TIGHT`], the count of part 4's induction reached).
 
 use serde_json::json;
 use wai_embed::{Interweavement, Node};
 
 use super::over_gap_classes;
-use crate::framework::{Checker, Report, Violation};
+use crate::framework::{Case, Checker, Report, Violation};
 use wai_study::Study;
 
 const ID: &str = "L5.9";
 
+/// Part 1, per special node.
+pub const PART_1: &str = "part 1";
+/// Part 2, per embedding node in an overlap class.
+pub const PART_2: &str = "part 2";
+/// Part 3, per tree.
+pub const PART_3: &str = "part 3";
+/// Part 4, per graph.
+pub const PART_4: &str = "part 4";
+/// Part 4 with equality.
+pub const PART_4_TIGHT: &str = "part 4 tight";
+
 /// The checker of this claim.
-pub const CHECKER: Checker = Checker::new(ID, check_study);
+pub const CHECKER: Checker = Checker::new(ID, check_study).with_cases(&[
+    Case {
+        name: PART_1,
+        what: "a special node (its degree is at least 2: Lemma 5.9 (1))",
+    },
+    Case {
+        name: PART_2,
+        what: "an embedding node with an edge to an overlap class (it has only one: \
+               Lemma 5.9 (2))",
+    },
+    Case {
+        name: PART_3,
+        what: "a tree of the interweavement graph (its leaves are embedding nodes: \
+               Lemma 5.9 (3))",
+    },
+    Case {
+        name: PART_4,
+        what: "an interweavement graph with a special node (edges ≤ 2 × embedding nodes: \
+               Lemma 5.9 (4))",
+    },
+    Case {
+        name: PART_4_TIGHT,
+        what: "an interweavement graph with exactly twice as many edges as embedding nodes",
+    },
+]);
 
 /// Checks L5.9 on every class.
 fn check_study(study: &Study<'_>) -> Report {
@@ -75,6 +117,21 @@ pub fn check_graph(g: &Interweavement) -> Report {
     }
     report.count("embedding_nodes", g.embeddings as u64);
     report.count("edges", g.edges.len() as u64);
+    for _ in 0..g.special_nodes() {
+        report.hit(PART_1);
+    }
+    let in_overlap: std::collections::BTreeSet<usize> =
+        g.overlap_classes.iter().flatten().copied().collect();
+    for _ in &in_overlap {
+        report.hit(PART_2);
+    }
+    for _ in g.components() {
+        report.hit(PART_3);
+    }
+    report.hit(PART_4);
+    if g.edges.len() == 2 * g.embeddings {
+        report.hit(PART_4_TIGHT);
+    }
     let failed = failures(g);
     report.record((!failed.is_empty()).then(|| {
         Violation::with_data(
@@ -97,6 +154,13 @@ mod tests {
         let good = Interweavement::new(3, &[(0, 1)], &[((1, 0), (2, 0))]);
         let report = check_graph(&good);
         assert_eq!((report.examined, report.violations.len()), (1, 0));
+        // Two special nodes, embeddings 0 and 1 in the overlap class, one
+        // tree, one graph.
+        let cases = |r: &Report, c: &str| r.cases.get(c).copied().unwrap_or(0);
+        assert_eq!(
+            [PART_1, PART_2, PART_3, PART_4, PART_4_TIGHT].map(|c| cases(&report, c)),
+            [2, 2, 1, 1, 0]
+        );
         // A special node with one edge: parts 1 and 3.
         let mut lonely = good.clone();
         lonely.interweave_classes.push(vec![(0, 4), (0, 5)]);

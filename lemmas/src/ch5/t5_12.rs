@@ -5,6 +5,16 @@
 //! The thesis proves it under Assumption 5.10 (sec. 5.4.4); the ratio is
 //! measured on every map regardless.
 //!
+//! ## Cases
+//! Per class with a multiple candidate edge, which parts of Assumption
+//! 5.10 hold ([`wai_study::GapStructure`]): all three ([`ASSUMED`], Lemma
+//! 5.11 applies as it stands), or each part that fails — (1) two valid
+//! embeddings overlap ([`OVERLAPPING`]), (2) an interweavement has two
+//! parallel lines l_i ([`PARALLEL`]: the lines of its (embedding,
+//! artificial edge) pairs, those of their candidate edges), (3) two gaps
+//! are nested ([`NESTED`]) — the reductions the thesis argues after the
+//! lemma.
+//!
 //! ## Trust
 //! Exact counts: C_{i,j} from the witness views of [`wai_study::Study`] over
 //! the valid embeddings of each class's skeleton. A bound is never
@@ -13,11 +23,44 @@
 
 use serde_json::json;
 use wai_embed::CandidateSets;
-use wai_study::Study;
+use wai_study::{GapStructure, Study};
 
-use crate::framework::{over, Ceiling, Checker, Report};
+use crate::framework::{over, Case, Ceiling, Checker, Report};
 
 const ID: &str = "T5.12";
+
+/// Assumption 5.10 holds: no overlap, no parallel lines, no nesting.
+pub const ASSUMED: &str = "assumption holds";
+/// Assumption 5.10 (1) fails: overlapping valid embeddings.
+pub const OVERLAPPING: &str = "overlapping embeddings";
+/// Assumption 5.10 (2) fails: parallel lines in an interweavement.
+pub const PARALLEL: &str = "parallel lines";
+/// Assumption 5.10 (3) fails: nested gaps.
+pub const NESTED: &str = "nested gaps";
+
+const CASES: &[Case] = &[
+    Case {
+        name: ASSUMED,
+        what: "a skeleton with multiple candidate edges that meets all of Assumption 5.10: no \
+               overlapping embeddings, no parallel lines l_i in an interweavement, no nested \
+               gaps (Lemma 5.11 as stated)",
+    },
+    Case {
+        name: OVERLAPPING,
+        what: "a skeleton with multiple candidate edges and two overlapping valid embeddings \
+               (Assumption 5.10 (1) fails: the virtual embedding of Fig 5.10)",
+    },
+    Case {
+        name: PARALLEL,
+        what: "a skeleton with an interweavement (Def 5.8) two of whose lines h_j(l_i) are \
+               parallel (Assumption 5.10 (2) fails: the shift of Fig 5.11)",
+    },
+    Case {
+        name: NESTED,
+        what: "a skeleton with two nested gaps (Def 5.6; Assumption 5.10 (3) fails: \
+               Fig 5.12)",
+    },
+];
 
 /// The checker. The ceiling is far above every ratio seen: 1/2 (2
 /// multiple candidate edges, r = 4, on `convex-niches` k = 1) over 1,501
@@ -26,11 +69,74 @@ const ID: &str = "T5.12";
 /// candidate edges per artificial edge — and 4/5 (n = 15, r = 5) found by
 /// a 10-minute `wai search-extremes --ratio cmult`
 /// (`counterexamples/T5.12-extreme-*`).
-pub const CHECKER: Checker = Checker::new(ID, check_study).with_ceiling(Ceiling(4, 1));
+pub const CHECKER: Checker = Checker::new(ID, check_study)
+    .with_cases(CASES)
+    .with_ceiling(Ceiling(4, 1));
 
-/// max |C_mult| / r against the ceiling.
+/// max |C_mult| / r against the ceiling, and the parts of Assumption 5.10
+/// by class.
 fn check_study(study: &Study<'_>) -> Report {
-    check_classes(&CHECKER, study.map(), study.candidate_sets())
+    let sets = study.candidate_sets();
+    let mut report = check_classes(&CHECKER, study.map(), sets);
+    for (c, g) in sets.iter().zip(study.gap_structures()) {
+        if !c.multiple.is_empty() {
+            for case in assumption_cases(study.map(), c, g) {
+                report.hit(case);
+            }
+        }
+    }
+    report
+}
+
+/// The cases of Assumption 5.10 on one class: [`ASSUMED`], or the parts
+/// that fail.
+pub fn assumption_cases(
+    map: &wai_map::Map,
+    c: &CandidateSets,
+    g: &GapStructure,
+) -> Vec<&'static str> {
+    let mut out = Vec::new();
+    if !g.overlapping.is_empty() {
+        out.push(OVERLAPPING);
+    }
+    if g.graph
+        .interweave_classes
+        .iter()
+        .any(|class| has_parallel_lines(map, c, class))
+    {
+        out.push(PARALLEL);
+    }
+    if g.related.iter().any(|r| r.2.is_nested()) {
+        out.push(NESTED);
+    }
+    if out.is_empty() {
+        out.push(ASSUMED);
+    }
+    out
+}
+
+/// Whether two of the lines h_j(l_i) of the (embedding, artificial edge)
+/// pairs of one interweavement are parallel (or the same): each line is
+/// that of the candidate edges of C_{i,j}, compared by the cross product
+/// of the edges' directions.
+pub fn has_parallel_lines(map: &wai_map::Map, c: &CandidateSets, class: &[(usize, usize)]) -> bool {
+    let v = map.vertices();
+    let n = v.len();
+    let dirs: Vec<(i128, i128)> = class
+        .iter()
+        .filter_map(|&(j, i)| c.sets[j][i].first())
+        .map(|&e| {
+            let (a, b) = (v[e], v[(e + 1) % n]);
+            (b.x - a.x, b.y - a.y)
+        })
+        .collect();
+    (0..dirs.len()).any(|a| {
+        (a + 1..dirs.len()).any(|b| {
+            let cross = rug::Integer::from(dirs[a].0) * dirs[b].1
+                - rug::Integer::from(dirs[a].1) * dirs[b].0;
+            cross == 0
+        })
+    })
 }
 
 /// The check on the candidate sets of every class, by `checker` (this
@@ -63,6 +169,45 @@ mod tests {
         assert_eq!((report.examined, report.violations.len()), (1, 0));
         let ratio = report.largest.expect("a ratio").ratio;
         assert!(ratio > 0, "the layout has multiple candidate edges");
+        let report = CHECKER.run(&study);
+        assert!(
+            !report.cases.is_empty(),
+            "a class with C_mult has its cases"
+        );
+    }
+
+    #[test]
+    fn the_parts_of_the_assumption() {
+        use wai_embed::GapChain;
+        let hexagon = wai_map::Map::from_ring(
+            [(0, 0), (4, 0), (6, 2), (4, 4), (0, 4), (-2, 2)]
+                .iter()
+                .map(|&(x, y)| wai_exact::Point::new(x, y))
+                .collect(),
+        )
+        .unwrap()
+        .0;
+        // Edges 0 ((0,0)→(4,0)) and 3 ((4,4)→(0,4)) are parallel, edge 1
+        // is not.
+        let parallel =
+            CandidateSets::from_sets(vec![0], vec![0, 1], vec![vec![vec![0]], vec![vec![3]]]);
+        let crossing =
+            CandidateSets::from_sets(vec![0], vec![0, 1], vec![vec![vec![0]], vec![vec![1]]]);
+        let class = [(0, 0), (1, 0)];
+        assert!(has_parallel_lines(&hexagon, &parallel, &class));
+        assert!(!has_parallel_lines(&hexagon, &crossing, &class));
+        // Gaps (0, 2) of h_0 and (1, 4) of h_1 interweave.
+        let chains = vec![GapChain::new(0, 2, 0, 0, 6), GapChain::new(1, 4, 1, 0, 6)];
+        let g = GapStructure::new(chains, vec![], 2);
+        assert_eq!(g.graph.interweave_classes, vec![vec![(0, 0), (1, 0)]]);
+        assert_eq!(assumption_cases(&hexagon, &parallel, &g), vec![PARALLEL]);
+        assert_eq!(assumption_cases(&hexagon, &crossing, &g), vec![ASSUMED]);
+        let nested = vec![GapChain::new(0, 4, 0, 0, 6), GapChain::new(1, 3, 1, 0, 6)];
+        let g = GapStructure::new(nested, vec![(0, 1)], 2);
+        assert_eq!(
+            assumption_cases(&hexagon, &crossing, &g),
+            vec![OVERLAPPING, NESTED]
+        );
     }
 
     #[test]

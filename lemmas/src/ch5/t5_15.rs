@@ -17,21 +17,58 @@
 //! the most valid embeddings of one skeleton with an artificial edge of two
 //! or more valid candidate edges beside another artificial edge: an upper
 //! bound on k, and the guide of a search for large k).
+//!
+//! ## Cases
+//! The value of k of each instance, `k=1` to `k=6` ([`K_CASES`]); the
+//! proof's argument (three overlapping embeddings, from Lemma 5.14) has
+//! content from k = 3 on. For each value never reached on a map, the
+//! largest k below it is the progress toward it.
 
+use rug::Rational;
 use serde_json::json;
 use wai_embed::CandidateSets;
 
-use crate::framework::{Checker, Report, Violation};
+use crate::framework::{Case, Checker, Report, Violation};
 use wai_study::edge_pairs::shared_embeddings;
 use wai_study::Study;
 
 const ID: &str = "T5.15";
 
-/// The checker of this claim.
-pub const CHECKER: Checker = Checker::new(ID, check_study);
-
 /// The theorem's bound on k.
 pub const BOUND: usize = 6;
+
+/// The case of each k from 1 to [`BOUND`], by k − 1.
+pub const K_CASES: [&str; BOUND] = ["k=1", "k=2", "k=3", "k=4", "k=5", "k=6"];
+
+/// The checker of this claim.
+pub const CHECKER: Checker = Checker::new(ID, check_study).with_cases(&[
+    Case {
+        name: K_CASES[0],
+        what: "e a valid candidate edge and f a valid multiple candidate edge of another \
+               artificial edge in one embedding (Theorem 5.15, k = 1)",
+    },
+    Case {
+        name: K_CASES[1],
+        what: "the pair (e, f) so in k = 2 embeddings",
+    },
+    Case {
+        name: K_CASES[2],
+        what: "the pair (e, f) so in k = 3 embeddings (from here on Lemma 5.14 and the \
+               proof's three overlapping embeddings have content)",
+    },
+    Case {
+        name: K_CASES[3],
+        what: "the pair (e, f) so in k = 4 embeddings",
+    },
+    Case {
+        name: K_CASES[4],
+        what: "the pair (e, f) so in k = 5 embeddings",
+    },
+    Case {
+        name: K_CASES[5],
+        what: "the pair (e, f) so in k = 6 embeddings: the theorem's bound reached",
+    },
+]);
 
 /// Checks T5.15 on every class with a valid embedding.
 fn check_study(study: &Study<'_>) -> Report {
@@ -84,6 +121,9 @@ pub fn check_class(c: &CandidateSets, bound: usize) -> (Report, usize) {
     for ((e, f), js) in k_of_pairs(c) {
         let k = js.len();
         largest = largest.max(k);
+        if let Some(case) = k.checked_sub(1).and_then(|x| K_CASES.get(x)) {
+            report.hit(case);
+        }
         if k >= 2 {
             report.count("pairs_k_ge_2", 1);
         }
@@ -101,7 +141,21 @@ pub fn check_class(c: &CandidateSets, bound: usize) -> (Report, usize) {
             )
         }));
     }
+    for (x, case) in K_CASES.iter().enumerate() {
+        let best = k_below(&report, x + 1);
+        if !report.cases.contains_key(case) && best > 0 {
+            report.progress_toward(case, Rational::from(best));
+        }
+    }
     (report, largest)
+}
+
+/// The largest k below `want` that an instance of `report` hit.
+fn k_below(report: &Report, want: usize) -> usize {
+    (1..want)
+        .rev()
+        .find(|&k| report.cases.contains_key(K_CASES[k - 1]))
+        .unwrap_or(0)
 }
 
 /// The largest k of Theorem 5.15 over the classes of a map (0 when no
@@ -147,11 +201,24 @@ mod tests {
         let (report, largest) = check_class(&c, BOUND);
         assert_eq!(largest, 7);
         assert_eq!(report.violations.len(), 2);
+        // k = 7 is no case; nothing below it either.
+        assert!(report.cases.is_empty() && report.toward.is_empty());
         // (2, 1) and (3, 1): f = 1 is single in its set, no instance.
         assert_eq!(report.examined, 2);
         // Six embeddings: within the bound.
         let sets = vec![vec![vec![1], vec![2, 3]]; 6];
         let c = CandidateSets::from_sets(vec![0, 1], (0..6).collect(), sets);
-        assert!(check_class(&c, BOUND).0.violations.is_empty());
+        let report = check_class(&c, BOUND).0;
+        assert!(report.violations.is_empty());
+        assert_eq!(report.cases["k=6"], 2);
+        // Two embeddings: k = 2 for (1, 2), (1, 3); k = 3..6 never reached,
+        // 2 the progress toward each.
+        let sets = vec![vec![vec![1], vec![2, 3]]; 2];
+        let c = CandidateSets::from_sets(vec![0, 1], (0..2).collect(), sets);
+        let report = check_class(&c, BOUND).0;
+        assert_eq!(report.cases["k=2"], 2);
+        assert_eq!(report.toward["k=3"], 2);
+        assert_eq!(report.toward["k=6"], 2);
+        assert!(!report.toward.contains_key("k=1"));
     }
 }

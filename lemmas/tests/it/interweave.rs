@@ -36,6 +36,10 @@ fn count(report: &Report, name: &str) -> u64 {
     report.counts.get(name).copied().unwrap_or(0)
 }
 
+fn case(report: &Report, name: &str) -> u64 {
+    report.cases.get(name).copied().unwrap_or(0)
+}
+
 /// The class of the common skeleton of `points` (which must be equal).
 fn class_of(study: &Study<'_>, points: &[Point]) -> usize {
     let keys: Vec<SkeletonKey> = points
@@ -67,8 +71,8 @@ fn interweaved_gaps_are_interweaved_and_nested_and_the_lemmas_hold() {
         let map = wai_gen::interweaved_gaps(seed);
         let study = Study::new(&map);
         let r = check(&study, &["L5.5", "L5.6", "L5.7", "L5.8", "L5.9"]);
-        assert!(count(&r["L5.5"], "interweaved") > 0, "seed {seed}");
-        assert!(count(&r["L5.5"], "nested") > 0, "seed {seed}");
+        assert!(case(&r["L5.5"], "interweaved") > 0, "seed {seed}");
+        assert!(case(&r["L5.5"], "nested") > 0, "seed {seed}");
         for id in ["L5.6", "L5.7", "L5.8", "L5.9"] {
             assert!(r[id].examined > 0, "seed {seed}: {id} examined nothing");
         }
@@ -100,6 +104,7 @@ fn shared_niches_share_pairs_in_four_embeddings_and_the_lemmas_hold() {
         assert!(r["L5.13"].examined > 0, "seed {seed}");
         assert!(r["L5.14"].examined > 0, "seed {seed}");
         assert_eq!(count(&r["L5.14"], "largest_k"), 4, "seed {seed}");
+        assert!(case(&r["L5.14"], "k≥4") > 0, "seed {seed}");
         // The rooms' witnesses share a skeleton with one valid embedding
         // per room.
         let class = class_of(&study, &layout.viewpoints());
@@ -120,6 +125,7 @@ fn spiked_niches_share_a_multiple_candidate_edge_and_theorem_5_15_holds() {
         let r = check(&study, &["L5.13", "L5.14", "T5.15"]);
         assert!(count(&r["T5.15"], "pairs_k_ge_2") > 0, "seed {seed}");
         assert_eq!(count(&r["T5.15"], "largest_k"), 2, "seed {seed}");
+        assert!(case(&r["T5.15"], "k=2") > 0, "seed {seed}");
         let class = class_of(&study, &layout.viewpoints());
         let c = &study.candidate_sets()[class];
         assert_eq!(c.t() as i128, layout.rooms, "seed {seed}");
