@@ -265,7 +265,7 @@ fn order_case(
     let ends = |e: &wai_embed::Embedding, s: usize| {
         let (u, v) = (e.vertices[s], e.vertices[(s + 1) % k]);
         // (above, below): the end left of t first.
-        let left = wai_embed::piece::cross(t, &Pt::from(map[u]).sub(&Pt::from(map[v]))) > 0;
+        let left = t.cross(&Pt::from(map[u]).sub(&Pt::from(map[v]))) > 0;
         if left {
             (u, v)
         } else {
