@@ -273,7 +273,8 @@ pub static CLAIMS: &[Claim] = &[
         Example,
         "Examples 4.1 and 4.2, Figs 4.1 and 4.2",
         "Two valid embeddings of one skeleton can have overlapping skeletons and kernels, even with strictly crossing artificial edges.",
-    ),
+    )
+    .checked(ch4::e4_1::CHECKER),
     c(
         "L4.1",
         Tight,
@@ -342,7 +343,8 @@ pub static CLAIMS: &[Claim] = &[
         Example,
         "Corollary 4.10, Fig 4.16",
         "Four type-5 edges occur, with no map vertex in the intersection polygon.",
-    ),
+    )
+    .checked(ch4::e4_10::CHECKER),
     c(
         "C4.15",
         Exact,
@@ -362,7 +364,8 @@ pub static CLAIMS: &[Claim] = &[
         Example,
         "Section 4.6, Fig 4.28",
         "Embeddings that intersect without overlapping can have mutually visible witnesses.",
-    ),
+    )
+    .checked(ch4::e4_28::CHECKER),
     c(
         "L4.17",
         Exact,

@@ -163,12 +163,7 @@ pub fn projection(n: &QPoint, vertices: &[QPoint]) -> (Rational, Rational) {
 /// Offsets strictly between `lo` and `hi` and between any two consecutive
 /// projections `n · p` of the points `e` that fall between them: one per
 /// open slab of parallel lines of normal `n`.
-pub(crate) fn offsets_between(
-    e: &[QPoint],
-    n: &QPoint,
-    lo: Rational,
-    hi: Rational,
-) -> Vec<Rational> {
+pub fn offsets_between(e: &[QPoint], n: &QPoint, lo: Rational, hi: Rational) -> Vec<Rational> {
     let mut cuts: Vec<Rational> = e
         .iter()
         .map(|p| n.dot(p))

@@ -3,6 +3,10 @@
 //! the maps that are that construction (whatever name they carry) and
 //! confirms they reach what the construction promises.
 
+use std::collections::HashMap;
+use std::sync::{Arc, Mutex, OnceLock};
+
+use wai_exact::Point;
 use wai_map::Map;
 
 /// The largest family parameter a tight checker recognises.
@@ -10,10 +14,41 @@ pub const MAX_PARAMETER: u32 = 8;
 
 /// `k` if `map` is exactly `wai_gen::family(id, &[k])` for some
 /// `k ≤ MAX_PARAMETER` (same vertices in the same order).
+///
+/// The family's maps are generated once per process and kept, so a
+/// checker that asks on every map compares vertex counts, and vertices
+/// only where the counts agree.
 pub fn parameter_of(map: &Map, id: &str) -> Option<u32> {
-    (0..=MAX_PARAMETER).find(|&k| {
-        wai_gen::family(id, &[k]).is_ok_and(|f| f.n() == map.n() && f.vertices() == map.vertices())
-    })
+    let members = members(id);
+    members
+        .iter()
+        .find(|(_, v)| v.len() == map.n() && v.as_slice() == map.vertices())
+        .map(|&(k, _)| k)
+}
+
+/// The vertices of `wai_gen::family(id, &[k])` for every `k ≤
+/// MAX_PARAMETER` the family has.
+fn members(id: &str) -> Arc<Vec<(u32, Vec<Point>)>> {
+    type Cache = Mutex<HashMap<String, Arc<Vec<(u32, Vec<Point>)>>>>;
+    static CACHE: OnceLock<Cache> = OnceLock::new();
+    let cache = CACHE.get_or_init(Default::default);
+    if let Some(m) = cache.lock().expect("not poisoned").get(id) {
+        return Arc::clone(m);
+    }
+    let m: Arc<Vec<(u32, Vec<Point>)>> = Arc::new(
+        (0..=MAX_PARAMETER)
+            .filter_map(|k| {
+                wai_gen::family(id, &[k])
+                    .ok()
+                    .map(|f| (k, f.vertices().to_vec()))
+            })
+            .collect(),
+    );
+    cache
+        .lock()
+        .expect("not poisoned")
+        .insert(id.to_owned(), Arc::clone(&m));
+    m
 }
 
 #[cfg(test)]

@@ -32,6 +32,6 @@ pub mod wedge_counts;
 
 pub use profile::{Stage, StageTimes};
 pub use study::{
-    CellEdges, Embedded, EmbeddingPair, GapStructure, OverlappingPair, Study, Views,
+    CellEdges, Embedded, EmbeddingPair, GapStructure, OverlappingPair, Study, TouchingPair, Views,
     CROSS_SKELETON_MAX_N,
 };

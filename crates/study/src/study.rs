@@ -42,6 +42,9 @@ pub struct Study<'m> {
     /// Every pair of valid embeddings of one skeleton whose skeleton
     /// polygons overlap, with the verdict on their witnesses.
     overlapping: OnceCell<Vec<OverlappingPair>>,
+    /// Every pair of valid embeddings of one skeleton whose skeleton
+    /// polygons intersect without overlapping, with the same verdict.
+    touching: OnceCell<Vec<TouchingPair>>,
     /// By class and embedding: h(V◇) with its artificial edges marked.
     rings: OnceCell<Vec<Vec<SkeletonRing>>>,
     /// The pairs of valid embeddings the sec. 4.4 checkers examine.
@@ -117,6 +120,22 @@ pub struct OverlappingPair {
     pub pair: usize,
     /// Whether the embedded kernels overlap too (Theorem 4.3's premise).
     pub kernels_overlap: bool,
+    /// Whether a witness of one sees a witness of the other, by
+    /// [`Sightlines::regions_by_lines`].
+    pub sight: Mutual,
+}
+
+/// Two different valid embeddings of one skeleton whose embedded skeleton
+/// polygons intersect but do not overlap (sec. 4.6): their boundaries
+/// share a point, their interiors none. By class and position in
+/// [`Study::embeddings`], `a < b`.
+#[derive(Debug, Clone)]
+pub struct TouchingPair {
+    pub class: usize,
+    pub a: usize,
+    pub b: usize,
+    /// Its index in [`Study::embedding_pairs`].
+    pub pair: usize,
     /// Whether a witness of one sees a witness of the other, by
     /// [`Sightlines::regions_by_lines`].
     pub sight: Mutual,
@@ -214,6 +233,7 @@ impl<'m> Study<'m> {
             witnesses: OnceCell::new(),
             sightlines: OnceCell::new(),
             overlapping: OnceCell::new(),
+            touching: OnceCell::new(),
             rings: OnceCell::new(),
             pairs: OnceCell::new(),
             views: OnceCell::new(),
@@ -353,6 +373,44 @@ impl<'m> Study<'m> {
                             b,
                             pair,
                             kernels_overlap,
+                            sight,
+                        }
+                    })
+                    .collect()
+            })
+        })
+    }
+
+    /// Every pair of different valid embeddings of one skeleton whose
+    /// skeleton polygons intersect without overlapping (sec. 4.6), with
+    /// whether their witnesses see each other.
+    pub fn touching_pairs(&self) -> &[TouchingPair] {
+        self.touching.get_or_init(|| {
+            self.timer.stage("touching pairs", || {
+                let rings = self.skeleton_rings();
+                let witnesses = self.witnesses();
+                self.embedding_pairs()
+                    .iter()
+                    .enumerate()
+                    .filter(|(_, p)| p.same_skeleton() && !p.overlap())
+                    .filter(|(_, p)| {
+                        let (r, s) = (
+                            &rings[p.first.0][p.first.1].ring,
+                            &rings[p.second.0][p.second.1].ring,
+                        );
+                        boundaries_meet(r, s)
+                    })
+                    .map(|(pair, p)| {
+                        let (class, a, b) = (p.first.0, p.first.1, p.second.1);
+                        let ws = &witnesses[class];
+                        let sight = self
+                            .sightlines()
+                            .regions_by_lines(&ws[a].pieces(), &ws[b].pieces());
+                        TouchingPair {
+                            class,
+                            a,
+                            b,
+                            pair,
                             sight,
                         }
                     })
@@ -691,6 +749,16 @@ impl<'m> Study<'m> {
         self.polygons.borrow_mut().insert(limit, Rc::clone(&v));
         v
     }
+}
+
+/// Whether the boundaries of two closed polygons share a point.
+fn boundaries_meet(p: &[wai_embed::Pt], q: &[wai_embed::Pt]) -> bool {
+    let (np, nq) = (p.len(), q.len());
+    (0..np).any(|i| {
+        (0..nq).any(|j| {
+            wai_embed::piece::segments_meet(&p[i], &p[(i + 1) % np], &q[j], &q[(j + 1) % nq])
+        })
+    })
 }
 
 impl std::fmt::Debug for Study<'_> {

@@ -4,19 +4,50 @@
 //!
 //! ## Trust
 //! Exact, on the same intersections and the same classification as
-//! [`super::l4_7`]. Count `with type 5`: intersections that have one.
+//! [`super::l4_7`].
+//!
+//! ## Cases
+//! Each intersection polygon hits "0 type 5" to "4 type 5", its number of
+//! type-5 edges (the proof: each comes from an LR/LR or RL/RL crossing of
+//! Lemma 4.9, at most two of them, two edges each); progress toward "4
+//! type 5" is the most on one polygon.
 
+use rug::Rational;
 use serde_json::json;
 use wai_embed::intersection::EdgeType;
 
 use super::l4_7::classified_pairs;
-use crate::framework::{Checker, Report, Violation};
+use crate::framework::{Case, Checker, Report, Violation};
 use wai_study::Study;
 
 const ID: &str = "C4.10";
 
+/// By the number of type-5 edges: the case's name.
+const FIVES: [&str; 5] = ["0 type 5", "1 type 5", "2 type 5", "3 type 5", "4 type 5"];
+
 /// The checker of this claim.
-pub const CHECKER: Checker = Checker::new(ID, check_study);
+pub const CHECKER: Checker = Checker::new(ID, check_study).with_cases(&[
+    Case {
+        name: FIVES[0],
+        what: "an intersection polygon with no type-5 edge",
+    },
+    Case {
+        name: FIVES[1],
+        what: "an intersection polygon with one type-5 edge",
+    },
+    Case {
+        name: FIVES[2],
+        what: "an intersection polygon with two type-5 edges (one LR/LR or RL/RL crossing)",
+    },
+    Case {
+        name: FIVES[3],
+        what: "an intersection polygon with three type-5 edges",
+    },
+    Case {
+        name: FIVES[4],
+        what: "an intersection polygon with four type-5 edges, the bound (Figs 4.15 and 4.16)",
+    },
+]);
 
 /// Checks C4.10 on every intersection polygon in scope.
 fn check_study(study: &Study<'_>) -> Report {
@@ -30,9 +61,10 @@ fn check_study(study: &Study<'_>) -> Report {
             v.data["pair"] = json!([pair.first, pair.second]);
             v
         }));
-        if fives > 0 {
-            report.count("with type 5", 1);
+        if let Some(case) = FIVES.get(fives) {
+            report.hit(case);
         }
+        report.progress_toward(FIVES[4], Rational::from(fives));
     }
     report
 }

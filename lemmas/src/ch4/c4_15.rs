@@ -11,17 +11,39 @@
 //! claim fails iff one line meets a witness cell of each and the open hull
 //! — three open convex sets — which [`wai_embed::transversal`] decides
 //! exactly and completely; a violation comes with the two witnesses.
+//!
+//! ## Cases
+//! "kernels overlap" or "kernels apart": whether the pair's kernels
+//! overlap too, i.e. whether the corollary rests on Theorem 4.3's proof
+//! or on Theorem 4.2's general one.
 
 use serde_json::json;
 use wai_embed::{transversal, Intersection, Piece, Pt};
 
-use crate::framework::{Checker, Report, Violation};
+use crate::framework::{Case, Checker, Report, Violation};
 use wai_study::Study;
 
 const ID: &str = "C4.15";
 
+/// The two premises, shared with Corollary 4.16.
+pub const KERNEL_CASES: [Case; 2] = [
+    Case {
+        name: "kernels overlap",
+        what: "the embedded kernels overlap too (Theorem 4.3's premise)",
+    },
+    Case {
+        name: "kernels apart",
+        what: "the skeleton polygons overlap, the kernels do not (Theorem 4.2 beyond Theorem 4.3)",
+    },
+];
+
 /// The checker of this claim.
-pub const CHECKER: Checker = Checker::new(ID, check_study);
+pub const CHECKER: Checker = Checker::new(ID, check_study).with_cases(&KERNEL_CASES);
+
+/// The name of the kernel case of a pair.
+pub fn kernel_case(kernels_overlap: bool) -> &'static str {
+    KERNEL_CASES[usize::from(!kernels_overlap)].name
+}
 
 /// Checks C4.15 on every overlapping pair of valid embeddings of one
 /// skeleton.
@@ -32,6 +54,7 @@ fn check_study(study: &Study<'_>) -> Report {
             .intersection(&study.embedding_pairs()[pair.pair])
             .expect("an overlapping pair has an intersection");
         let ws = &study.witnesses()[pair.class];
+        report.hit(kernel_case(pair.kernels_overlap));
         report.record(
             check(x, &ws[pair.a].pieces(), &ws[pair.b].pieces()).map(|mut v| {
                 v.data["class"] = json!(pair.class);

@@ -11,19 +11,38 @@
 //! least and greatest projection of their cells' vertices. Some line has
 //! a witness of each strictly on either side iff max(inf W, l) < min(sup W', u)
 //! or the same with W and W' swapped.
+//!
+//! ## Cases
+//! "kernels overlap" or "kernels apart" as for [`super::c4_15`]; and the
+//! side of the intersection both witness regions lie on, which the proof
+//! fixes without loss of generality ("below l"): "witnesses left of t"
+//! (every witness projects at or beyond the intersection's left end) or
+//! "witnesses right of t".
 
 use rug::Rational;
 use serde_json::json;
 use wai_embed::piece::projection;
 use wai_embed::{Intersection, Piece, Pt};
 
-use crate::framework::{Checker, Report, Violation};
+use super::c4_15::{kernel_case, KERNEL_CASES};
+use crate::framework::{Case, Checker, Report, Violation};
 use wai_study::Study;
 
 const ID: &str = "C4.16";
 
 /// The checker of this claim.
-pub const CHECKER: Checker = Checker::new(ID, check_study);
+pub const CHECKER: Checker = Checker::new(ID, check_study).with_cases(&[
+    KERNEL_CASES[0],
+    KERNEL_CASES[1],
+    Case {
+        name: "witnesses left of t",
+        what: "both witness regions beyond the intersection on the left of t (the proof's \"above l\")",
+    },
+    Case {
+        name: "witnesses right of t",
+        what: "both witness regions beyond the intersection on the right of t (the proof's \"below l\")",
+    },
+]);
 
 /// Checks C4.16 on every overlapping pair of valid embeddings of one
 /// skeleton.
@@ -41,13 +60,16 @@ fn check_study(study: &Study<'_>) -> Report {
             .intersection(&study.embedding_pairs()[pair.pair])
             .expect("an overlapping pair has an intersection");
         let ws = &study.witnesses()[pair.class];
-        report.record(
-            check(x, &t, &ws[pair.a].pieces(), &ws[pair.b].pieces()).map(|mut v| {
-                v.data["class"] = json!(pair.class);
-                v.data["pair"] = json!([pair.a, pair.b]);
-                v
-            }),
-        );
+        let (w, w2) = (ws[pair.a].pieces(), ws[pair.b].pieces());
+        report.hit(kernel_case(pair.kernels_overlap));
+        if let Some(case) = side(x, &t, &w, &w2) {
+            report.hit(case);
+        }
+        report.record(check(x, &t, &w, &w2).map(|mut v| {
+            v.data["class"] = json!(pair.class);
+            v.data["pair"] = json!([pair.a, pair.b]);
+            v
+        }));
     }
     report
 }
@@ -56,6 +78,21 @@ fn check_study(study: &Study<'_>) -> Report {
 fn range(n: &Pt, vertices: impl Iterator<Item = Pt>) -> Option<(Rational, Rational)> {
     let v: Vec<Pt> = vertices.collect();
     (!v.is_empty()).then(|| projection(n, &v))
+}
+
+/// The side of the intersection `x` both witness regions lie on, seen
+/// along `t`, if they lie on one.
+pub fn side(x: &Intersection, t: &Pt, w: &[Piece], w2: &[Piece]) -> Option<&'static str> {
+    let n = t.perp();
+    let (l, u) = range(&n, x.cycles.iter().flatten().map(|e| e.from.clone()))?;
+    let (lo, hi) = range(&n, w.iter().chain(w2).flat_map(Piece::vertices))?;
+    if lo >= u {
+        Some("witnesses left of t")
+    } else if hi <= l {
+        Some("witnesses right of t")
+    } else {
+        None
+    }
 }
 
 /// One pair, with translation `t` from the first origin to the second.

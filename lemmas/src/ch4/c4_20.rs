@@ -14,17 +14,33 @@
 //! quadruple; `mutually_crossing` counts those that meet the corollary's
 //! premise, and one of them out of order is a violation. Readings of
 //! "directed line" and "between" as in [`super::t4_19`].
+//!
+//! ## Cases
+//! The orders c1, c2, c1', c2' and c1', c2', c1, c2 of the corollary are
+//! one cyclic order read from two starts, so the cases are those of the
+//! premise: each mutually crossing quadruple hits "same artificial edge"
+//! (h(a) and h'(a') join the same two map vertices, as the necks of Fig
+//! 4.31) or "different artificial edges".
 
 use serde_json::json;
 
 use super::t4_19::ordered_candidates;
-use crate::framework::{Checker, Report, Violation};
+use crate::framework::{Case, Checker, Report, Violation};
 use wai_study::Study;
 
 const ID: &str = "C4.20";
 
 /// The checker of this claim.
-pub const CHECKER: Checker = Checker::new(ID, check_study);
+pub const CHECKER: Checker = Checker::new(ID, check_study).with_cases(&[
+    Case {
+        name: "same artificial edge",
+        what: "mutually crossing candidate edges of artificial edges h(a), h'(a') on the same two map vertices (the necks of Fig 4.31)",
+    },
+    Case {
+        name: "different artificial edges",
+        what: "mutually crossing candidate edges of artificial edges on different map vertices",
+    },
+]);
 
 /// Checks C4.20 on every quadruple of mutually crossing candidate edges
 /// of two overlapping valid embeddings of one skeleton.
@@ -67,6 +83,18 @@ pub fn on_boundary(study: &Study<'_>, position: &dyn Fn(usize) -> usize) -> Repo
                         });
                         if all {
                             report.count("mutually_crossing", 1);
+                            let all = &study.embeddings()[p.class];
+                            let ends = |h: usize, s: usize| {
+                                let v = &all[h].embedding.vertices;
+                                let mut e = [v[s], v[(s + 1) % v.len()]];
+                                e.sort_unstable();
+                                e
+                            };
+                            report.hit(if ends(p.a, a) == ends(p.b, a2) {
+                                "same artificial edge"
+                            } else {
+                                "different artificial edges"
+                            });
                         } else {
                             verdict = None;
                         }

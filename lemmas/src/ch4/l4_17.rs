@@ -34,18 +34,38 @@
 //! violations; `counterexamples/L4.17-shared-candidate-edge.json` keeps
 //! one. Chapter 5 counts valid candidate edges (the sets C_{i,j}), which
 //! the corollary covers.
+//!
+//! ## Cases
+//! Each two (artificial edge, valid candidate edge) of one embedding hits
+//! "regions apart" (the regions their lines of sight lie in are apart:
+//! nothing to intersect) or "regions meet" (the sight fans were
+//! intersected exactly); each valid embedding's corollary check hits
+//! "corollary".
 
 use serde_json::json;
 use wai_embed::piece::convex_hull;
 use wai_embed::{crossing, Bounds, Piece, Pt, SightFan};
 
-use crate::framework::{Checker, Report, Violation};
+use crate::framework::{Case, Checker, Report, Violation};
 use wai_study::Study;
 
 const ID: &str = "L4.17";
 
 /// The checker of this claim.
-pub const CHECKER: Checker = Checker::new(ID, check_study);
+pub const CHECKER: Checker = Checker::new(ID, check_study).with_cases(&[
+    Case {
+        name: "regions apart",
+        what: "two (artificial edge, candidate edge) of one embedding whose lines of sight lie in regions that are apart (Fig 4.29 cannot arise)",
+    },
+    Case {
+        name: "regions meet",
+        what: "two such whose regions meet: every line of sight from a witness through one against every one through the other",
+    },
+    Case {
+        name: "corollary",
+        what: "a valid embedding whose valid candidate edges are checked to serve one artificial edge each",
+    },
+]);
 
 /// Checks L4.17 on every embedding.
 fn check_study(study: &Study<'_>) -> Report {
@@ -66,6 +86,7 @@ fn check_study(study: &Study<'_>) -> Report {
             };
             report.count("embeddings", 1);
             let valid = study.valid_candidates(class, i);
+            report.hit("corollary");
             report.record(check_candidates(valid).map(tag));
             // The sight regions: (artificial edge, candidate edge), the
             // number of witness cells that see it, and the region its
@@ -90,9 +111,11 @@ fn check_study(study: &Study<'_>) -> Report {
                     report.count("fan_pairs", (n1 * n2) as u64);
                     if !b1.meets_box(b2) || !meets(r1, r2) {
                         report.count("apart", 1);
+                        report.hit("regions apart");
                         report.record(None);
                         continue;
                     }
+                    report.hit("regions meet");
                     let found = study
                         .fans_seeing(class, i, *k1)
                         .flat_map(|f| study.fans_seeing(class, i, *k2).map(move |g| (f, g)))

@@ -14,17 +14,37 @@
 //! of sight that meet. "Meets" is read on closed sets (an artificial edge
 //! touching the other polygon at one point meets it), the weaker
 //! conclusion, so a violation here is one under either reading.
+//!
+//! ## Cases
+//! Which of the lemma's alternatives holds for each instance, the two
+//! categories the thesis sorts crossing candidate edges of overlapping
+//! embeddings into: "one meets" (exactly one of h(a), h'(a') meets the
+//! other skeleton polygon), "both meet" (both do, as in Fig 4.31), or
+//! "neither" (then c and c' must not cross).
 
 use serde_json::json;
 use wai_embed::{segment_meets_polygon, Pt};
 
-use crate::framework::{Checker, Report, Violation};
+use crate::framework::{Case, Checker, Report, Violation};
 use wai_study::Study;
 
 const ID: &str = "L4.18";
 
 /// The checker of this claim.
-pub const CHECKER: Checker = Checker::new(ID, check_study);
+pub const CHECKER: Checker = Checker::new(ID, check_study).with_cases(&[
+    Case {
+        name: "one meets",
+        what: "exactly one of h(a) and h'(a') meets the other embedding's skeleton polygon",
+    },
+    Case {
+        name: "both meet",
+        what: "h(a) meets h'(V◇) and h'(a') meets h(V◇) (Fig 4.31)",
+    },
+    Case {
+        name: "neither",
+        what: "neither artificial edge meets the other polygon: c and c' must not cross",
+    },
+]);
 
 /// Checks L4.18 on every pair of crossing candidate edges of two
 /// overlapping valid embeddings of one skeleton.
@@ -41,11 +61,21 @@ fn check_study(study: &Study<'_>) -> Report {
         for (i, ci) in va.iter().enumerate().filter(|(_, c)| !c.is_empty()) {
             for (j, cj) in vb.iter().enumerate().filter(|(_, c)| !c.is_empty()) {
                 let (a, a2) = (edge(r, i), edge(r2, j));
+                let meets = [
+                    segment_meets_polygon(&a.0, &a.1, r2),
+                    segment_meets_polygon(&a2.0, &a2.1, r),
+                ];
+                let case = match meets {
+                    [true, true] => "both meet",
+                    [false, false] => "neither",
+                    _ => "one meets",
+                };
                 // The violation a crossing would be, if neither edge
                 // meets the other polygon.
-                let outside = check(&a, r, &a2, r2);
+                let outside = (!meets[0] && !meets[1]).then(|| outside_violation(&a, &a2));
                 for &c in ci {
                     for &c2 in cj.iter().filter(|&&c2| c2 != c) {
+                        report.hit(case);
                         let Some(outside) = &outside else {
                             report.count("artificial_edge_meets", 1);
                             report.record(None);
@@ -80,13 +110,19 @@ pub fn check(a: &(Pt, Pt), ring: &[Pt], a2: &(Pt, Pt), ring2: &[Pt]) -> Option<V
     if segment_meets_polygon(&a.0, &a.1, ring2) || segment_meets_polygon(&a2.0, &a2.1, ring) {
         return None;
     }
-    Some(Violation::with_data(
+    Some(outside_violation(a, a2))
+}
+
+/// The violation crossing candidate edges of `a` and `a2` are when
+/// neither artificial edge meets the other polygon.
+fn outside_violation(a: &(Pt, Pt), a2: &(Pt, Pt)) -> Violation {
+    Violation::with_data(
         format!(
             "crossing candidate edges whose artificial edges {}–{} and {}–{} both lie outside the other embedding",
             a.0, a.1, a2.0, a2.1
         ),
         json!({ "artificial_edges": [[a.0.to_string(), a.1.to_string()], [a2.0.to_string(), a2.1.to_string()]] }),
-    ))
+    )
 }
 
 #[cfg(test)]

@@ -13,18 +13,41 @@
 //! inside h'(V◇) is counted as maximal pieces, exactly
 //! ([`wai_embed::intersection::pieces_inside`]). Counts: `different
 //! skeletons` (instances from such pairs).
+//!
+//! ## Cases
+//! Each artificial edge h(a) hits "0 crossings", "1 crossing" or "2
+//! crossings": how many artificial edges of the other embedding it meets
+//! (Fig 4.8 (a) is the case of two); progress toward "2 crossings" is the
+//! most met by one edge.
 
+use rug::Rational;
 use serde_json::json;
 use wai_embed::intersection::{artificial_crossings, pieces_inside};
 use wai_embed::SkeletonRing;
 
-use crate::framework::{Checker, Report, Violation};
+use crate::framework::{Case, Checker, Report, Violation};
 use wai_study::Study;
 
 const ID: &str = "L4.5";
 
+/// By the number of artificial edges met: the case's name.
+const CROSSINGS: [&str; 3] = ["0 crossings", "1 crossing", "2 crossings"];
+
 /// The checker of this claim.
-pub const CHECKER: Checker = Checker::new(ID, check_study);
+pub const CHECKER: Checker = Checker::new(ID, check_study).with_cases(&[
+    Case {
+        name: CROSSINGS[0],
+        what: "an artificial edge of one valid embedding that meets no artificial edge of the other",
+    },
+    Case {
+        name: CROSSINGS[1],
+        what: "an artificial edge meeting exactly one artificial edge of the other",
+    },
+    Case {
+        name: CROSSINGS[2],
+        what: "an artificial edge meeting two artificial edges of the other, the most Lemma 4.5 allows (Fig 4.8 (a))",
+    },
+]);
 
 /// Checks L4.5 on every pair of valid embeddings in scope.
 fn check_study(study: &Study<'_>) -> Report {
@@ -53,6 +76,10 @@ pub fn check_edges(p: &SkeletonRing, q: &SkeletonRing) -> Report {
         let meets = artificial_crossings(p, i, q);
         let (a, b) = p.edge(i);
         let inside = pieces_inside(a, b, &q.ring);
+        if let Some(case) = CROSSINGS.get(meets.len()) {
+            report.hit(case);
+        }
+        report.progress_toward(CROSSINGS[2], Rational::from(meets.len()));
         report.record((meets.len() > 2 || inside > 1).then(|| {
             Violation::with_data(
                 format!(

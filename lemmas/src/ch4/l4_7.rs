@@ -10,21 +10,46 @@
 //! whose intersection is one region (L4.6 checks that): every maximal edge
 //! of its traced boundary is classified by
 //! [`wai_embed::intersection::edge_type`]; an edge of no type is a
-//! violation. Counts: edges of each type.
+//! violation.
+//!
+//! ## Cases
+//! The five types of the lemma, "type 1" to "type 5", one instance per
+//! edge of an intersection polygon.
 
 use serde_json::json;
 use std::collections::HashSet;
 use wai_embed::intersection::{edge_type, EdgeType};
 use wai_embed::{Intersection, Pt, SkeletonRing};
 
-use crate::framework::{Checker, Report, Violation};
+use crate::framework::{Case, Checker, Report, Violation};
 use wai_study::EmbeddingPair;
 use wai_study::Study;
 
 const ID: &str = "L4.7";
 
 /// The checker of this claim.
-pub const CHECKER: Checker = Checker::new(ID, check_study);
+pub const CHECKER: Checker = Checker::new(ID, check_study).with_cases(&[
+    Case {
+        name: NAMES[0],
+        what: "a full edge of both embeddings, seen from both witnesses (Lemma 4.7, type 1)",
+    },
+    Case {
+        name: NAMES[1],
+        what: "an artificial edge of both, between the same two points (type 2)",
+    },
+    Case {
+        name: NAMES[2],
+        what: "an artificial edge of one inside the other (type 3)",
+    },
+    Case {
+        name: NAMES[3],
+        what: "part of an artificial edge meeting exactly one artificial edge of the other, one end a map vertex (type 4)",
+    },
+    Case {
+        name: NAMES[4],
+        what: "part of an artificial edge meeting exactly two artificial edges of the other, no end a map vertex (type 5)",
+    },
+]);
 
 const NAMES: [&str; 5] = ["type 1", "type 2", "type 3", "type 4", "type 5"];
 
@@ -94,7 +119,7 @@ fn check_types(x: &Intersection, types: &[Option<EdgeType>]) -> Report {
     let mut report = Report::new(ID);
     for (e, t) in x.cycles.iter().flatten().zip(types) {
         if let Some(t) = t {
-            report.count(NAMES[usize::from(t.number()) - 1], 1);
+            report.hit(NAMES[usize::from(t.number()) - 1]);
         }
         report.record(t.is_none().then(|| {
             Violation::with_data(

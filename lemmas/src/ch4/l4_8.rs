@@ -13,19 +13,32 @@
 //! Witnesses on such a line leave the classification undecided
 //! ([`wai_embed::intersection::left_right`] gives `None`); count
 //! `undecided`.
+//!
+//! ## Cases
+//! Each decided instance hits the lemma's two outcomes: "LR to both" or
+//! "RL to both" (Def 4.2; the proof rules out the mixed one, Fig 4.11).
 
 use serde_json::json;
 use wai_embed::intersection::{artificial_crossings, left_right};
 use wai_embed::piece::part_points;
 use wai_embed::{Piece, SkeletonRing};
 
-use crate::framework::{Checker, Report, Violation};
+use crate::framework::{Case, Checker, Report, Violation};
 use wai_study::Study;
 
 const ID: &str = "L4.8";
 
 /// The checker of this claim.
-pub const CHECKER: Checker = Checker::new(ID, check_study);
+pub const CHECKER: Checker = Checker::new(ID, check_study).with_cases(&[
+    Case {
+        name: "LR to both",
+        what: "an artificial edge meeting two of the other embedding, a left-right edge with respect to both (Def 4.2)",
+    },
+    Case {
+        name: "RL to both",
+        what: "the same, a right-left edge with respect to both",
+    },
+]);
 
 /// Checks L4.8 on every artificial edge that meets two of the other
 /// embedding, from every witness.
@@ -69,6 +82,9 @@ pub fn check(p: &SkeletonRing, q: &SkeletonRing, witnesses: &[Piece]) -> Report 
                 continue;
             };
             let name = |lr: bool| if lr { "LR" } else { "RL" };
+            if sb == sc {
+                report.hit(if sb { "LR to both" } else { "RL to both" });
+            }
             report.record((sb != sc).then(|| {
                 let (a0, a1) = p.edge(i);
                 Violation::with_data(

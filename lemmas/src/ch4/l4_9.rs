@@ -13,19 +13,52 @@
 //! a witness on a line leaves undecided (collinear common artificial
 //! edges, type 2, always are) is left out of the tallies; count
 //! `undecided`.
+//!
+//! ## Cases
+//! Each instance (a pair of embeddings seen from one part of each witness
+//! region) hits the intersection types of the proof it has (Fig 4.14's
+//! rows): "LR/LR", "RL/RL", "LR/RL", "RL/LR", once each if present; and
+//! "x ≥ 2" when one of the mixed counts exceeds one (the lemma allows it
+//! for one of x and y only). Progress toward "x ≥ 2" is the larger mixed
+//! count.
 
 use serde_json::json;
 use wai_embed::intersection::{edges_meet, left_right};
 use wai_embed::piece::part_points;
 use wai_embed::{Pt, SkeletonRing};
 
-use crate::framework::{Checker, Report, Violation};
+use crate::framework::{Case, Checker, Report, Violation};
+use rug::Rational;
 use wai_study::Study;
 
 const ID: &str = "L4.9";
 
+/// The four intersection types, in the order of [`tallies`].
+const TYPES: [&str; 4] = ["LR/LR", "RL/RL", "LR/RL", "RL/LR"];
+
 /// The checker of this claim.
-pub const CHECKER: Checker = Checker::new(ID, check_study);
+pub const CHECKER: Checker = Checker::new(ID, check_study).with_cases(&[
+    Case {
+        name: TYPES[0],
+        what: "an LR-edge of h meeting an LR-edge of h' (Fig 4.14, first row; at most one)",
+    },
+    Case {
+        name: TYPES[1],
+        what: "an RL-edge meeting an RL-edge (last row; at most one)",
+    },
+    Case {
+        name: TYPES[2],
+        what: "an LR-edge of h meeting an RL-edge of h' (second row; x of them)",
+    },
+    Case {
+        name: TYPES[3],
+        what: "an RL-edge of h meeting an LR-edge of h' (third row; y of them)",
+    },
+    Case {
+        name: "x ≥ 2",
+        what: "more than one mixed intersection of one kind: max{x, y} ≥ 2, which the lemma allows for one of them",
+    },
+]);
 
 /// Checks L4.9 on every overlapping pair and pair of witnesses.
 fn check_study(study: &Study<'_>) -> Report {
@@ -107,7 +140,16 @@ pub fn check(p: &SkeletonRing, q: &SkeletonRing, w: &Pt, w2: &Pt) -> Report {
     let mut report = Report::new(ID);
     let (t, undecided) = tallies(p, q, w, w2);
     report.count("undecided", undecided);
+    for (k, name) in TYPES.iter().enumerate() {
+        if t[k] > 0 {
+            report.hit(name);
+        }
+    }
     let [lrlr, rlrl, x, y] = t;
+    if x.max(y) >= 2 {
+        report.hit("x ≥ 2");
+    }
+    report.progress_toward("x ≥ 2", Rational::from(x.max(y)));
     report.record((lrlr > 1 || rlrl > 1 || x.min(y) > 1).then(|| {
         Violation::with_data(
             format!(

@@ -19,19 +19,70 @@
 //! their starts along it, and "between" is the boundary strictly after
 //! c1 and before c2, counter-clockwise (the peak or niche separating
 //! them, Fig 3.9).
+//!
+//! ## Cases
+//! Each triple meeting the premise (c' crosses c1 and c2) hits a case of
+//! the last part of the proof, on the artificial edge h'(a') of c' and its
+//! ends x', y': "z' on h(a)" (one of them is an end of h(a), the proof's
+//! first case), "z' beyond h(a)" (none is, and one lies strictly beyond
+//! the line of h(a), on the side of its candidate edges: the second case),
+//! or "z' short of h(a)" (neither: the proof's claim says this cannot
+//! happen when c' lies between c1 and c2, and says nothing otherwise).
 
 use serde_json::json;
 use wai_embed::piece::dot;
 use wai_embed::Pt;
 use wai_exact::Point;
 
-use crate::framework::{Checker, Report, Violation};
+use crate::framework::{Case, Checker, Report, Violation};
 use wai_study::Study;
 
 const ID: &str = "T4.19";
 
 /// The checker of this claim.
-pub const CHECKER: Checker = Checker::new(ID, check_study);
+pub const CHECKER: Checker = Checker::new(ID, check_study).with_cases(&[
+    Case {
+        name: "z' on h(a)",
+        what: "c' crosses c1 and c2, and an end of its artificial edge h'(a') is an end of h(a) (the proof's first case, Fig 4.35)",
+    },
+    Case {
+        name: "z' beyond h(a)",
+        what: "c' crosses c1 and c2, and an end of h'(a') lies strictly beyond the line of h(a), on its candidate edges' side (the second case, Fig 4.34)",
+    },
+    Case {
+        name: "z' short of h(a)",
+        what: "c' crosses c1 and c2, and neither end of h'(a') is on h(a) or beyond its line",
+    },
+]);
+
+/// The case of the proof of T4.19 for artificial edge `a` of embedding
+/// `h` and `a2` of `h2` (class `class`): where the ends of h'(a') lie
+/// with respect to h(a).
+pub fn z_case(
+    study: &Study<'_>,
+    class: usize,
+    (h, a): (usize, usize),
+    (h2, a2): (usize, usize),
+) -> &'static str {
+    let all = &study.embeddings()[class];
+    let (v, v2) = (&all[h].embedding.vertices, &all[h2].embedding.vertices);
+    let k = v.len();
+    let ends = [v[a], v[(a + 1) % k]];
+    let ends2 = [v2[a2], v2[(a2 + 1) % k]];
+    let map = study.map().vertices();
+    if ends2.iter().any(|e| ends.contains(e)) {
+        "z' on h(a)"
+    } else if ends2.iter().any(|&e| {
+        // h(V◇) is counter-clockwise: its inside lies left of h(a), the
+        // candidate edges right of it.
+        wai_exact::orientation(map[ends[0]], map[ends[1]], map[e])
+            == wai_exact::Orientation::Clockwise
+    }) {
+        "z' beyond h(a)"
+    } else {
+        "z' short of h(a)"
+    }
+}
 
 /// The valid candidate edges of each skeleton edge of embedding
 /// `embedding` of class `class`, in the order of their directed line.
@@ -123,6 +174,7 @@ pub fn on_boundary(study: &Study<'_>, position: &dyn Fn(usize) -> usize) -> Repo
                                 }
                                 if x(c1) && x(c2) {
                                     report.count("crosses_both", 1);
+                                    report.hit(z_case(study, p.class, (h, a), (h2, a2)));
                                     verdict = check(n, q1, q2, q).map(|mut v| {
                                         v.data["c1"] = json!(c1);
                                         v.data["c2"] = json!(c2);

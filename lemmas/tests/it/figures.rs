@@ -5,7 +5,8 @@ use std::path::Path;
 
 use serde_json::Value;
 use wai_embed::{interiors_overlap, Mutual, Pt};
-use wai_exact::{orientation, Orientation, RatPoint};
+use wai_exact::RatPoint;
+use wai_lemmas::ch4::{e4_1, e4_10, e4_28};
 use wai_map::{json::from_json, Map};
 use wai_study::Study;
 use wai_visibility::{Skeleton, SkeletonKey};
@@ -97,50 +98,6 @@ fn kernel_ring(h: &wai_study::Embedded) -> Vec<Pt> {
     h.kernel.vertices().iter().map(Pt::from).collect()
 }
 
-/// How the artificial edges of two embeddings of one skeleton meet: pairs
-/// on the same two map vertices, sharing exactly one, strictly crossing.
-#[derive(Debug, Default)]
-struct Relations {
-    same_vertices: usize,
-    one_vertex: usize,
-    strictly_crossing: usize,
-}
-
-fn artificial_edge_relations(
-    map: &Map,
-    key: &SkeletonKey,
-    h: &wai_study::Embedded,
-    g: &wai_study::Embedded,
-) -> Relations {
-    let (vh, vg) = (&h.embedding.vertices, &g.embedding.vertices);
-    let k = vh.len();
-    let pts = map.vertices();
-    let artificial: Vec<usize> = (0..k).filter(|&i| key.labels[i].is_some()).collect();
-    let mut r = Relations::default();
-    for &a in &artificial {
-        for &b in &artificial {
-            let (e, f) = ([vh[a], vh[(a + 1) % k]], [vg[b], vg[(b + 1) % k]]);
-            match e.iter().filter(|x| f.contains(x)).count() {
-                2 => r.same_vertices += 1,
-                1 => r.one_vertex += 1,
-                _ => {
-                    let (s, t) = ((pts[e[0]], pts[e[1]]), (pts[f[0]], pts[f[1]]));
-                    let o = [
-                        orientation(s.0, s.1, t.0),
-                        orientation(s.0, s.1, t.1),
-                        orientation(t.0, t.1, s.0),
-                        orientation(t.0, t.1, s.1),
-                    ];
-                    if !o.contains(&Orientation::Collinear) && o[0] != o[1] && o[2] != o[3] {
-                        r.strictly_crossing += 1;
-                    }
-                }
-            }
-        }
-    }
-    r
-}
-
 #[test]
 fn fig_4_1_overlapping_kernels_with_artificial_edges_that_share_vertices() {
     let (map, points) = load("E4.1-fig-4-1-adjacent-funnels.json");
@@ -155,12 +112,16 @@ fn fig_4_1_overlapping_kernels_with_artificial_edges_that_share_vertices() {
         .find(|p| p.class == class)
         .expect("the skeleton polygons overlap");
     assert!(pair.kernels_overlap);
-    // Artificial edges meet only in vertices: the northern ones on the
-    // same pairs of map vertices, the two from the ceiling to the floor in
-    // the vertex between the funnels.
-    let r = artificial_edge_relations(&map, &key, &all[0], &all[1]);
-    assert_eq!(r.strictly_crossing, 0, "{r:?}");
-    assert!(r.same_vertices >= 2 && r.one_vertex >= 1, "{r:?}");
+    // E4.1's checker recognises the stored figure and finds its
+    // configuration: artificial edges meeting only in vertices, the
+    // northern ones on the same pairs of map vertices.
+    let report = e4_1::CHECKER.run(&study);
+    assert!(report.violations.is_empty(), "{:?}", report.violations);
+    assert_eq!(report.counts["figures"], 1);
+    let r = e4_1::relations(&study, class, 0, 1);
+    assert!(r.vertices_only() && r.same_vertices >= 2, "{r:?}");
+    // The two from the ceiling to the floor meet in the vertex between
+    // the funnels.
     let floor = map
         .vertices()
         .iter()
@@ -186,7 +147,7 @@ fn fig_4_1_overlapping_kernels_with_artificial_edges_that_share_vertices() {
 fn fig_4_2_overlapping_kernels_and_crossing_artificial_edges() {
     let (map, points) = load("E4.1-funnels-kernels-overlap.json");
     let study = Study::new(&map);
-    let (key, class) = common_skeleton(&study, &points);
+    let (_, class) = common_skeleton(&study, &points);
     let all = &study.embeddings()[class];
     assert_eq!(all.len(), 2);
     assert!(study.witnesses()[class].iter().all(|w| w.is_valid()));
@@ -194,12 +155,12 @@ fn fig_4_2_overlapping_kernels_and_crossing_artificial_edges() {
     let kernel = |i: usize| kernel_ring(&all[i]);
     assert!(interiors_overlap(&ring(0), &ring(1)));
     assert!(interiors_overlap(&kernel(0), &kernel(1)));
-    // Fig 4.2: an artificial edge of one strictly crosses one of the other.
-    let r = artificial_edge_relations(&map, &key, &all[0], &all[1]);
-    assert!(
-        r.strictly_crossing > 0,
-        "no strictly crossing artificial edges"
-    );
+    // Fig 4.2: an artificial edge of one strictly crosses one of the
+    // other, as E4.1's checker finds on the stored figure.
+    let report = e4_1::CHECKER.run(&study);
+    assert!(report.violations.is_empty(), "{:?}", report.violations);
+    assert_eq!(report.counts["figures"], 1);
+    assert!(report.cases["strictly crossing"] >= 1);
     // Theorems 4.2 and 4.3: the witnesses do not see each other, by both
     // methods.
     let pair = study
@@ -263,28 +224,19 @@ fn lemma_4_17_corollary_fails_for_def_3_11_candidate_edges_only() {
 
 #[test]
 fn fig_4_16_four_type_5_edges_and_no_map_vertex() {
-    use std::collections::HashSet;
-    use wai_embed::intersection::EdgeType;
     let (map, points) = load("E4.10-four-type-5.json");
     let study = Study::new(&map);
     let (_, class) = common_skeleton(&study, &points);
     assert_eq!(study.embeddings()[class].len(), 2);
     assert!(study.witnesses()[class].iter().all(|w| w.is_valid()));
-    let pair = study
-        .embedding_pairs()
-        .iter()
-        .find(|p| p.first.0 == class && p.second.0 == class)
-        .expect("the two embeddings are a pair");
-    let x = study.intersection(pair).expect("they overlap");
-    let rings = study.skeleton_rings();
-    let vertices: HashSet<Pt> = map.vertices().iter().map(|&p| Pt::from(p)).collect();
-    let types = wai_lemmas::ch4::l4_7::types(x, &rings[class][0], &rings[class][1], &vertices);
-    assert_eq!(types, vec![Some(EdgeType::TwoCrossings); 4]);
-    assert!(x
-        .cycles
-        .iter()
-        .flatten()
-        .all(|e| !vertices.contains(&e.from)));
+    // E4.10's checker recognises the stored figure and finds four type-5
+    // edges and no map vertex on the intersection of the viewpoints'
+    // embeddings.
+    let report = e4_10::CHECKER.run(&study);
+    assert!(report.violations.is_empty(), "{:?}", report.violations);
+    assert_eq!(report.counts["figures"], 1);
+    assert!(report.cases["Fig 4.16"] >= 1);
+    // Theorem 4.2 holds for them.
     let overlapping = study
         .overlapping_pairs()
         .iter()
@@ -428,4 +380,9 @@ fn fig_4_28_intersecting_embeddings_whose_witnesses_see_each_other() {
     }
     // So do the two stored viewpoints.
     assert!(sees(map.vertices(), &points[0], &points[1]).is_visible());
+    // E4.28's checker recognises the stored figure and finds the pair.
+    let report = e4_28::CHECKER.run(&study);
+    assert!(report.violations.is_empty(), "{:?}", report.violations);
+    assert_eq!(report.counts["figures"], 1);
+    assert!(report.cases["visible"] >= 1);
 }
