@@ -7,7 +7,7 @@
 //! by index.
 
 use crate::assignment::{assign, BoundaryAssignment, Conflict};
-use crate::eye::{mul, small_of, Eye, Pt};
+use crate::eye::{mul, small_of, Eye, PointRef};
 use crate::fx::HashChains;
 use crate::rays::{group_by_line, LineKey, VisibilityRay};
 use crate::small::{SmallCoords, Span};
@@ -17,7 +17,7 @@ use std::cmp::Ordering;
 use std::sync::OnceLock;
 use wai_exact::{
     construct_intersection, construct_intersection_i128, gcd_u128, orientation, orientation_rat,
-    Line, Orientation, RatPoint,
+    Line, Orientation, RatPoint, Vector,
 };
 use wai_map::Map;
 use wai_visibility::OnMap;
@@ -74,7 +74,7 @@ pub struct RayGroup {
     pub rays: Vec<usize>,
     /// The group's direction: the primitive integer direction of its first
     /// ray. Half-edge `2e` of each of its edges points this way.
-    pub dir: (i128, i128),
+    pub dir: Vector,
 }
 
 /// Geometry of an edge, by index.
@@ -142,7 +142,7 @@ pub struct Arrangement {
     /// ([`EdgeGeometry::rays`]).
     pub(crate) ray_list: Vec<usize>,
     /// By edge: the primitive direction of half-edge 2e.
-    pub(crate) dirs: Vec<(i128, i128)>,
+    pub(crate) dirs: Vec<Vector>,
     pub(crate) groups: Vec<RayGroup>,
     pub(crate) map: Map,
     pub(crate) rays: Vec<VisibilityRay>,
@@ -153,53 +153,28 @@ pub struct Arrangement {
 }
 
 /// The primitive integer direction of `line`.
-pub(crate) fn primitive_dir(line: &Line) -> (i128, i128) {
-    let (a, b) = (line.a(), line.b());
-    let (dx, dy) = (b.x - a.x, b.y - a.y);
-    let g = gcd_u128(dx.unsigned_abs(), dy.unsigned_abs());
+pub(crate) fn primitive_dir(line: &Line) -> Vector {
+    let d = line.b() - line.a();
+    let g = gcd_u128(d.x.unsigned_abs(), d.y.unsigned_abs());
     let g = i128::try_from(g).expect("a coordinate difference fits an i128");
-    (dx / g, dy / g)
-}
-
-/// The sign of the cross product `u × v`, exactly.
-pub(crate) fn cross_sign(u: (i128, i128), v: (i128, i128)) -> Ordering {
-    match (mul(u.0, v.1), mul(u.1, v.0)) {
-        (Some(p), Some(q)) if p.checked_sub(q).is_some() => (p - q).cmp(&0),
-        _ => (Integer::from(u.0) * v.1 - Integer::from(u.1) * v.0).cmp0(),
-    }
+    Vector::new(d.x / g, d.y / g)
 }
 
 /// A direction strictly inside the corner that runs counter-clockwise from
 /// direction `d` to direction `d2` (consecutive edges around a vertex): the
 /// sum of the two, negated for a reflex corner, or `d` turned left for a
 /// straight one. Primitive directions are below 2^101, so the sums fit.
-pub(crate) fn inside_corner(d: (i128, i128), d2: (i128, i128)) -> (i128, i128) {
-    match cross_sign(d, d2) {
-        Ordering::Greater => (d.0 + d2.0, d.1 + d2.1),
-        Ordering::Less => (-(d.0 + d2.0), -(d.1 + d2.1)),
-        Ordering::Equal => (-d.1, d.0),
+pub(crate) fn inside_corner(d: Vector, d2: Vector) -> Vector {
+    match d.cross_sign(d2) {
+        Ordering::Greater => d + d2,
+        Ordering::Less => -(d + d2),
+        Ordering::Equal => Vector::new(-d.y, d.x),
     }
-}
-
-/// The sign of the dot product `u · v`, exactly.
-pub(crate) fn dot_sign(u: (i128, i128), v: (i128, i128)) -> Ordering {
-    let fast = mul(u.0, v.0).and_then(|p| p.checked_add(mul(u.1, v.1)?));
-    match fast {
-        Some(d) => d.cmp(&0),
-        None => (Integer::from(u.0) * v.0 + Integer::from(u.1) * v.1).cmp0(),
-    }
-}
-
-/// Counter-clockwise angular order of nonzero directions, starting at the
-/// positive x axis.
-pub(crate) fn compare_angle(u: (i128, i128), v: (i128, i128)) -> Ordering {
-    let half = |d: (i128, i128)| u8::from(!(d.1 > 0 || (d.1 == 0 && d.0 > 0)));
-    half(u).cmp(&half(v)).then_with(|| cross_sign(v, u))
 }
 
 /// `d · p` for a rational point, exactly.
-pub(crate) fn along(d: (i128, i128), p: &RatPoint) -> Rational {
-    let num = Integer::from(p.hx() * d.0) + Integer::from(p.hy() * d.1);
+pub(crate) fn along(d: Vector, p: &RatPoint) -> Rational {
+    let num = Integer::from(p.hx() * d.x) + Integer::from(p.hy() * d.y);
     Rational::from((num, p.hw().clone()))
 }
 
@@ -459,10 +434,10 @@ pub(crate) enum Along {
 }
 
 impl Along {
-    pub(crate) fn of(d: (i128, i128), p: Pt<'_>) -> Along {
+    pub(crate) fn of(d: Vector, p: PointRef<'_>) -> Along {
         let fast = || -> Option<Along> {
             let [x, y, w] = p.small?;
-            let num = mul(x, d.0)?.checked_add(mul(y, d.1)?)?;
+            let num = mul(x, d.x)?.checked_add(mul(y, d.y)?)?;
             Some(Along::Small(num, w))
         };
         fast().unwrap_or_else(|| Along::Big(along(d, &p.exact())))
@@ -495,7 +470,7 @@ impl Along {
 }
 
 /// Sort point ids by `d · p` and drop duplicates.
-fn sort_along<'a>(d: (i128, i128), ids: &mut Vec<VertexId>, pt: impl Fn(VertexId) -> Pt<'a>) {
+fn sort_along<'a>(d: Vector, ids: &mut Vec<VertexId>, pt: impl Fn(VertexId) -> PointRef<'a>) {
     ids.sort_unstable();
     ids.dedup();
     let mut keyed: Vec<(Along, VertexId)> = ids.iter().map(|&i| (Along::of(d, pt(i)), i)).collect();
@@ -662,7 +637,7 @@ impl Arrangement {
         }
         let (small, big) = pts.finish();
         let nv = small.len();
-        let pt = |v: VertexId| Pt {
+        let pt = |v: VertexId| PointRef {
             small: small[v],
             big: big_point(&small, &big, v),
         };
@@ -671,8 +646,8 @@ impl Arrangement {
         let most = on_edge.iter().chain(&on_line).map(Vec::len).sum::<usize>();
         let mut edges: Vec<EdgeGeometry> = Vec::with_capacity(most);
         let mut ends_of: Vec<(VertexId, VertexId)> = Vec::with_capacity(most);
-        let mut dir_of: Vec<(i128, i128)> = Vec::with_capacity(most);
-        let edge_dirs: Vec<(i128, i128)> = (0..n)
+        let mut dir_of: Vec<Vector> = Vec::with_capacity(most);
+        let edge_dirs: Vec<Vector> = (0..n)
             .map(|i| primitive_dir(&Line::new(v[i], v[(i + 1) % n]).expect("distinct")))
             .collect();
         on_edge
@@ -764,7 +739,7 @@ impl Arrangement {
             if h.is_multiple_of(2) {
                 d
             } else {
-                (-d.0, -d.1)
+                -d
             }
         };
         let mut around: Vec<&mut [HalfEdgeId]> = Vec::with_capacity(nv);
@@ -776,7 +751,7 @@ impl Arrangement {
         }
         around
             .par_iter_mut()
-            .for_each(|o| o.sort_by(|&x, &y| compare_angle(hdir(x), hdir(y))));
+            .for_each(|o| o.sort_by(|&x, &y| hdir(x).compare_angle(hdir(y))));
         drop(around);
         let mut vertices = Vec::with_capacity(nv);
         for v in 0..nv {
@@ -870,8 +845,8 @@ impl Arrangement {
         })
     }
     /// The point of vertex `v`: its `i128` coordinates, or its exact point.
-    pub(crate) fn pt(&self, v: VertexId) -> Pt<'_> {
-        Pt {
+    pub(crate) fn pt(&self, v: VertexId) -> PointRef<'_> {
+        PointRef {
             small: self.small[v],
             big: big_point(&self.small, &self.big, v),
         }
@@ -907,12 +882,12 @@ impl Arrangement {
         &self.map
     }
     /// The primitive integer direction of half-edge `h`.
-    pub fn direction(&self, h: HalfEdgeId) -> (i128, i128) {
+    pub fn direction(&self, h: HalfEdgeId) -> Vector {
         let d = self.dirs[h / 2];
         if h.is_multiple_of(2) {
             d
         } else {
-            (-d.0, -d.1)
+            -d
         }
     }
     /// The half-edges of the boundary cycle of face `f`, from its `outer`,

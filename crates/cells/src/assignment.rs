@@ -3,12 +3,12 @@
 //! cell.
 
 use crate::arrangement::{
-    cross_sign, dot_sign, inside_corner, primitive_dir, Arrangement, EdgeGeometry, EdgeId, FaceId,
-    Support, VertexId,
+    inside_corner, primitive_dir, Arrangement, EdgeGeometry, EdgeId, FaceId, Support, VertexId,
 };
 use crate::rays::RaySide;
 use rayon::prelude::*;
 use std::cmp::Ordering;
+use wai_exact::Vector;
 
 /// A boundary piece that two rays assign to different cells (reported,
 /// never hidden: issue 4, DESIGN "Degenerate cases").
@@ -121,11 +121,11 @@ fn nearest_anchor_ray(arr: &Arrangement, rays: &[usize], forward: &[bool]) -> Op
 pub(crate) fn assign(arr: &Arrangement) -> BoundaryAssignment {
     // By ray: its primitive direction, and whether it points along its
     // group's direction.
-    let ray_dir: Vec<(i128, i128)> = arr.rays.iter().map(|r| primitive_dir(&r.line)).collect();
+    let ray_dir: Vec<Vector> = arr.rays.iter().map(|r| primitive_dir(&r.line)).collect();
     let mut forward = vec![false; arr.rays.len()];
     for g in &arr.groups {
         for &r in &g.rays {
-            forward[r] = dot_sign(ray_dir[r], g.dir) == Ordering::Greater;
+            forward[r] = ray_dir[r].dot_sign(g.dir) == Ordering::Greater;
         }
     }
     // Each edge and each vertex on its own (in parallel), in index order.
@@ -210,7 +210,7 @@ fn edge_owner(
 fn vertex_owner(
     arr: &Arrangement,
     v: usize,
-    ray_dir: &[(i128, i128)],
+    ray_dir: &[Vector],
 ) -> (Option<FaceId>, Option<Conflict>) {
     let out = arr.outgoing(v);
     // Rays through v: those covering two edges at v.
@@ -239,7 +239,7 @@ fn vertex_owner(
         }
         let w = inside_corner(arr.direction(out[i]), arr.direction(out[(i + 1) % k]));
         let fits = through.iter().all(|&r| {
-            let side = match cross_sign(ray_dir[r], w) {
+            let side = match ray_dir[r].cross_sign(w) {
                 Ordering::Greater => Some(RaySide::Left),
                 Ordering::Less => Some(RaySide::Right),
                 Ordering::Equal => None,

@@ -3,9 +3,9 @@
 //! classes of cells (Def 3.10); the boundary assignment (sec. 3.6) when
 //! asked for.
 
-use crate::arrangement::{cross_sign, Arrangement, EdgeId, FaceId, HalfEdgeId, VertexId};
+use crate::arrangement::{Arrangement, EdgeId, FaceId, HalfEdgeId, VertexId};
 use crate::assignment::BoundaryAssignment;
-use crate::eye::{Eye, Pt};
+use crate::eye::{Eye, PointRef};
 use crate::fx::HashChains;
 use crate::incremental::{line_views, Compact, EdgeLines, LowerSkeleton, Walked, Walker};
 use crate::rays::{visibility_rays, VisibilityRay};
@@ -694,7 +694,9 @@ pub(crate) fn interior_corners(arr: &Arrangement, hs: &[HalfEdgeId]) -> [VertexI
     let k = hs.len();
     let i = (0..k)
         .find(|&i| {
-            cross_sign(arr.direction(hs[i]), arr.direction(hs[(i + 1) % k])) != Ordering::Equal
+            arr.direction(hs[i])
+                .cross_sign(arr.direction(hs[(i + 1) % k]))
+                != Ordering::Equal
         })
         .expect("a cell has three non-collinear vertices");
     let at = |j: usize| arr.half_edge(hs[j % k]).origin;
@@ -707,7 +709,7 @@ pub(crate) fn centroid(arr: &Arrangement, c: [VertexId; 3]) -> RatPoint {
 }
 
 /// `(a + b + c) / 3`, exactly (through `i128` when it fits).
-fn centroid3(a: Pt<'_>, b: Pt<'_>, c: Pt<'_>) -> RatPoint {
+fn centroid3(a: PointRef<'_>, b: PointRef<'_>, c: PointRef<'_>) -> RatPoint {
     match Eye::centroid(a, b, c) {
         Eye::Small { x, y, w } => RatPoint::from_i128(x, y, w).expect("w > 0"),
         Eye::Big { .. } => centroid3_gmp(&a.exact(), &b.exact(), &c.exact()),
@@ -729,7 +731,7 @@ pub(crate) fn centroid3_gmp(a: &RatPoint, b: &RatPoint, c: &RatPoint) -> RatPoin
 #[cfg(test)]
 mod tests {
     use super::{centroid3, centroid3_gmp};
-    use crate::eye::Pt;
+    use crate::eye::PointRef;
     use rug::Integer;
     use wai_exact::RatPoint;
 
@@ -750,7 +752,7 @@ mod tests {
             ],
         ];
         for [a, b, c] in &cases {
-            let fast = centroid3(Pt::new(a), Pt::new(b), Pt::new(c));
+            let fast = centroid3(PointRef::new(a), PointRef::new(b), PointRef::new(c));
             assert_eq!(fast, centroid3_gmp(a, b, c), "{a} {b} {c}");
         }
     }

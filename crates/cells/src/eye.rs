@@ -8,92 +8,87 @@
 use rug::Integer;
 use std::borrow::Cow;
 use std::cmp::Ordering;
-use wai_exact::{Orientation, Point, RatPoint};
+use wai_exact::{BigVector, Orientation, Point, RatPoint, Vector};
 
 pub(crate) use wai_exact::mul_checked as mul;
 
-/// A direction with integer coordinates, small or large.
+/// A direction with integer coordinates, small or large: the shared
+/// [`Vector`] while it fits an `i128`, else a [`BigVector`].
 #[derive(Clone, Debug)]
 pub(crate) enum Dir {
-    Small(i128, i128),
-    Big(Integer, Integer),
+    Small(Vector),
+    Big(BigVector),
 }
 
 impl Dir {
     fn from_integers(x: Integer, y: Integer) -> Dir {
-        match (x.to_i128(), y.to_i128()) {
-            (Some(a), Some(b)) => Dir::Small(a, b),
-            _ => Dir::Big(x, y),
+        let big = BigVector::new(x, y);
+        match big.to_small() {
+            Some(v) => Dir::Small(v),
+            None => Dir::Big(big),
         }
     }
 
-    fn big(&self) -> (Integer, Integer) {
+    fn big(&self) -> Cow<'_, BigVector> {
         match self {
-            Dir::Small(a, b) => (Integer::from(*a), Integer::from(*b)),
-            Dir::Big(a, b) => (a.clone(), b.clone()),
+            Dir::Small(v) => Cow::Owned(v.to_big()),
+            Dir::Big(v) => Cow::Borrowed(v),
         }
     }
 
     /// The sign of `self × other` (`Greater`: other is counter-clockwise).
-    pub(crate) fn cross(&self, other: &Dir) -> Ordering {
-        if let (Dir::Small(a, b), Dir::Small(c, d)) = (self, other) {
-            if let (Some(p), Some(q)) = (mul(*a, *d), mul(*b, *c)) {
-                return p.cmp(&q);
-            }
+    pub(crate) fn cross_sign(&self, other: &Dir) -> Ordering {
+        match (self, other) {
+            (Dir::Small(u), Dir::Small(v)) => u.cross_sign(*v),
+            _ => self.big().cross_sign(&other.big()),
         }
-        let ((a, b), (c, d)) = (self.big(), other.big());
-        (a * d).cmp(&(b * c))
     }
 
     /// The sign of `self · other`.
-    pub(crate) fn dot(&self, other: &Dir) -> Ordering {
-        if let (Dir::Small(a, b), Dir::Small(c, d)) = (self, other) {
-            if let (Some(p), Some(q)) = (mul(*a, *c), mul(*b, *d)) {
-                // p + q > 0  <=>  p > -q (no overflow: -q of a product of
-                // two i128 that did not overflow can only fail at i128::MIN).
-                if let Some(nq) = q.checked_neg() {
-                    return p.cmp(&nq);
-                }
-            }
+    pub(crate) fn dot_sign(&self, other: &Dir) -> Ordering {
+        match (self, other) {
+            (Dir::Small(u), Dir::Small(v)) => u.dot_sign(*v),
+            _ => self.big().dot_sign(&other.big()),
         }
-        let ((a, b), (c, d)) = (self.big(), other.big());
-        (a * c + b * d).cmp0()
     }
 }
 
 /// The direction from `a` to `b`.
 pub(crate) fn dir(a: Point, b: Point) -> Dir {
-    match (b.x.checked_sub(a.x), b.y.checked_sub(a.y)) {
-        (Some(x), Some(y)) => Dir::Small(x, y),
-        _ => Dir::Big(Integer::from(b.x) - a.x, Integer::from(b.y) - a.y),
+    match Vector::between(a, b) {
+        Some(v) => Dir::Small(v),
+        None => Dir::Big(BigVector::between(a, b)),
     }
 }
 
 /// Counter-clockwise angular order of directions, starting at `base`
 /// (angle 0) and going round once: `Less` if `u` comes before `v`.
 pub(crate) fn angle_cmp(base: &Dir, u: &Dir, v: &Dir) -> Ordering {
-    let half = |w: &Dir| match base.cross(w) {
+    let half = |w: &Dir| match base.cross_sign(w) {
         Ordering::Greater => 0,
-        Ordering::Equal if base.dot(w) == Ordering::Greater => 0,
+        Ordering::Equal if base.dot_sign(w) == Ordering::Greater => 0,
         _ => 1,
     };
-    half(u).cmp(&half(v)).then_with(|| v.cross(u))
+    half(u).cmp(&half(v)).then_with(|| v.cross_sign(u))
 }
 
-/// A rational point: its homogeneous coordinates as `i128`s when they
-/// fit, else its exact point (the arrangement keeps one or the other, so
-/// each point is converted once and most never become GMP integers).
+/// An arrangement point as the arrangement stores it: its homogeneous
+/// coordinates as `i128`s when they fit, else a reference to its exact
+/// [`RatPoint`] (the arrangement keeps one or the other, so each point is
+/// converted once and most never become GMP integers). A view of storage,
+/// not a point type of its own: its arithmetic is [`Eye`]'s and
+/// `wai_exact`'s.
 #[derive(Clone, Copy, Debug)]
-pub(crate) struct Pt<'a> {
+pub(crate) struct PointRef<'a> {
     pub(crate) small: Option<[i128; 3]>,
     /// `Some` at least when `small` is `None`.
     pub(crate) big: Option<&'a RatPoint>,
 }
 
-impl<'a> Pt<'a> {
+impl<'a> PointRef<'a> {
     #[cfg(test)]
-    pub(crate) fn new(p: &'a RatPoint) -> Pt<'a> {
-        Pt {
+    pub(crate) fn new(p: &'a RatPoint) -> PointRef<'a> {
+        PointRef {
             small: small_of(p),
             big: Some(p),
         }
@@ -138,7 +133,7 @@ impl Eye {
     }
 
     /// The point `p` itself.
-    pub(crate) fn at(p: Pt<'_>) -> Eye {
+    pub(crate) fn at(p: PointRef<'_>) -> Eye {
         match p.small {
             Some([x, y, w]) => Eye::Small { x, y, w },
             None => Eye::new(&p.exact()),
@@ -147,7 +142,7 @@ impl Eye {
 
     /// The midpoint of `a` and `b`, without reducing it (checked `i128`
     /// first, GMP on overflow).
-    pub(crate) fn midpoint(a: Pt<'_>, b: Pt<'_>) -> Eye {
+    pub(crate) fn midpoint(a: PointRef<'_>, b: PointRef<'_>) -> Eye {
         let fast = || -> Option<Eye> {
             let ([ax, ay, aw], [bx, by, bw]) = (a.small?, b.small?);
             Some(Eye::Small {
@@ -161,7 +156,7 @@ impl Eye {
 
     /// The centroid of `a`, `b` and `c`, without reducing it (checked
     /// `i128` first, GMP on overflow).
-    pub(crate) fn centroid(a: Pt<'_>, b: Pt<'_>, c: Pt<'_>) -> Eye {
+    pub(crate) fn centroid(a: PointRef<'_>, b: PointRef<'_>, c: PointRef<'_>) -> Eye {
         let fast = || -> Option<Eye> {
             let ([ax, ay, aw], [bx, by, bw], [cx, cy, cw]) = (a.small?, b.small?, c.small?);
             let (bc, ac, ab) = (mul(bw, cw)?, mul(aw, cw)?, mul(aw, bw)?);
@@ -203,7 +198,7 @@ impl Eye {
                 let dx = mul(*w, a.x).and_then(|p| p.checked_sub(*x));
                 let dy = mul(*w, a.y).and_then(|p| p.checked_sub(*y));
                 match (dx, dy) {
-                    (Some(dx), Some(dy)) => Dir::Small(dx, dy),
+                    (Some(dx), Some(dy)) => Dir::Small(Vector::new(dx, dy)),
                     _ => Dir::from_integers(
                         Integer::from(*w) * a.x - *x,
                         Integer::from(*w) * a.y - *y,
@@ -219,7 +214,7 @@ impl Eye {
     /// The orientation of `(a, b, q)`.
     pub(crate) fn orientation(&self, a: Point, b: Point) -> Orientation {
         // (b − a) × (q − a) = −(b − a) × toward(a) / W.
-        match dir(a, b).cross(&self.toward(a)) {
+        match dir(a, b).cross_sign(&self.toward(a)) {
             Ordering::Less => Orientation::CounterClockwise,
             Ordering::Equal => Orientation::Collinear,
             Ordering::Greater => Orientation::Clockwise,

@@ -7,11 +7,11 @@
 //! this is the whole update of the incremental skeletons (sec. 3.9.2).
 
 use crate::arrangement::Along;
-use crate::eye::{angle_cmp, dir, mul, Dir, Pt};
+use crate::eye::{angle_cmp, dir, mul, Dir, PointRef};
 use crate::small::SmallCoords;
-use rug::{Integer, Rational};
+use rug::Rational;
 use std::cmp::Ordering;
-use wai_exact::Point;
+use wai_exact::{BigVector, Point, Vector};
 use wai_map::Map;
 
 /// A side of a directed line.
@@ -48,7 +48,7 @@ enum Stretch {
 pub(crate) struct LineView {
     /// A point of the line, and its direction.
     through: Point,
-    dir: (i128, i128),
+    dir: Vector,
     positions: Vec<Along>,
     events: Vec<Event>,
     /// `stretches[i]` lies between events `i` and `i + 1`.
@@ -58,13 +58,13 @@ pub(crate) struct LineView {
 }
 
 /// The position of an integer point along direction `d`: `p · d`.
-fn position(p: Point, d: (i128, i128)) -> Rational {
-    Rational::from(Integer::from(p.x) * d.0 + Integer::from(p.y) * d.1)
+fn position(p: Point, d: Vector) -> Rational {
+    Rational::from(BigVector::between(Point::new(0, 0), p).dot(&d.to_big()))
 }
 
 /// [`position`] as an [`Along`], in checked `i128` when it fits.
-fn position_along(p: Point, d: (i128, i128)) -> Along {
-    match mul(p.x, d.0).and_then(|a| a.checked_add(mul(p.y, d.1)?)) {
+fn position_along(p: Point, d: Vector) -> Along {
+    match mul(p.x, d.x).and_then(|a| a.checked_add(mul(p.y, d.y)?)) {
         Some(t) => Along::Small(t, 1),
         None => Along::from_rational(position(p, d)),
     }
@@ -74,14 +74,16 @@ fn position_along(p: Point, d: (i128, i128)) -> Along {
 /// segment from `a` to `b` (on opposite sides of it) crosses it:
 /// `a + s (b − a)` with `s = −(d × (a − o)) / (d × (b − a))`, so the
 /// position is `a · d − (d × (a − o)) (d · (b − a)) / (d × (b − a))`.
-fn crossing_along(o: Point, a: Point, b: Point, d: (i128, i128)) -> Along {
+fn crossing_along(o: Point, a: Point, b: Point, d: Vector) -> Along {
     let fast = || -> Option<Along> {
-        let cross = |x: i128, y: i128| mul(d.0, y)?.checked_sub(mul(d.1, x)?);
-        let ca = cross(a.x.checked_sub(o.x)?, a.y.checked_sub(o.y)?)?;
-        let (ex, ey) = (b.x.checked_sub(a.x)?, b.y.checked_sub(a.y)?);
-        let cb = cross(ex, ey)?;
-        let along = mul(ex, d.0)?.checked_add(mul(ey, d.1)?)?;
-        let ad = mul(a.x, d.0)?.checked_add(mul(a.y, d.1)?)?;
+        // Checked throughout: no bound is assumed.
+        let cross = |u: Vector| mul(d.x, u.y)?.checked_sub(mul(d.y, u.x)?);
+        let dot = |u: Vector| mul(d.x, u.x)?.checked_add(mul(d.y, u.y)?);
+        let ca = cross(Vector::between(o, a)?)?;
+        let e = Vector::between(a, b)?;
+        let cb = cross(e)?;
+        let along = dot(e)?;
+        let ad = dot(Vector::new(a.x, a.y))?;
         let num = mul(ad, cb)?.checked_sub(mul(ca, along)?)?;
         // The denominator is nonzero (a and b are on opposite sides).
         if cb > 0 {
@@ -94,12 +96,12 @@ fn crossing_along(o: Point, a: Point, b: Point, d: (i128, i128)) -> Along {
 }
 
 /// [`crossing_along`] on GMP integers.
-fn crossing_gmp(o: Point, a: Point, b: Point, d: (i128, i128)) -> Rational {
-    let ca = Integer::from(d.0) * (Integer::from(a.y) - o.y)
-        - Integer::from(d.1) * (Integer::from(a.x) - o.x);
-    let cb = Integer::from(d.0) * (Integer::from(b.y) - a.y)
-        - Integer::from(d.1) * (Integer::from(b.x) - a.x);
-    let along = (Integer::from(b.x) - a.x) * d.0 + (Integer::from(b.y) - a.y) * d.1;
+fn crossing_gmp(o: Point, a: Point, b: Point, d: Vector) -> Rational {
+    let d_big = d.to_big();
+    let e = BigVector::between(a, b);
+    let ca = d_big.cross(&BigVector::between(o, a));
+    let cb = d_big.cross(&e);
+    let along = e.dot(&d_big);
     position(a, d) - Rational::from((ca * along, cb))
 }
 
@@ -107,12 +109,7 @@ impl LineView {
     /// The line through map vertex `from` with direction `dir`
     /// (primitive); `small`: the map's coordinates on the `i64` path, if
     /// they fit it.
-    pub(crate) fn new(
-        map: &Map,
-        small: Option<&SmallCoords>,
-        from: usize,
-        d: (i128, i128),
-    ) -> LineView {
+    pub(crate) fn new(map: &Map, small: Option<&SmallCoords>, from: usize, d: Vector) -> LineView {
         let v = map.vertices();
         let n = v.len();
         let through = v[from];
@@ -120,8 +117,8 @@ impl LineView {
         let sides: Vec<Ordering> = match small {
             Some(s) => s.turns_from(from, d),
             None => {
-                let ld = Dir::Small(d.0, d.1);
-                v.iter().map(|&p| ld.cross(&dir(through, p))).collect()
+                let ld = Dir::Small(d);
+                v.iter().map(|&p| ld.cross_sign(&dir(through, p))).collect()
             }
         };
         let mut events: Vec<(Along, Event)> = Vec::new();
@@ -147,8 +144,8 @@ impl LineView {
             .windows(2)
             .all(|w| w[0].0.cmp(&w[1].0) == Ordering::Less));
         let mut stretches = Vec::with_capacity(events.len().saturating_sub(1));
-        let forward = Dir::Small(d.0, d.1);
-        let backward = Dir::Small(-d.0, -d.1);
+        let forward = Dir::Small(d);
+        let backward = Dir::Small(-d);
         let inside = |z: u32, w: &Dir| {
             let z = z as usize;
             let base = dir(v[z], v[(z + 1) % n]);
@@ -207,7 +204,7 @@ impl LineView {
 
     /// Whether point `p` lies on the line.
     pub(crate) fn passes(&self, p: Point) -> bool {
-        Dir::Small(self.dir.0, self.dir.1).cross(&dir(self.through, p)) == Ordering::Equal
+        Dir::Small(self.dir).cross_sign(&dir(self.through, p)) == Ordering::Equal
     }
 
     /// Whether map vertex `v` lies on the line.
@@ -216,7 +213,7 @@ impl LineView {
     }
 
     /// The position along the line of a point on it.
-    pub(crate) fn position_of(&self, q: Pt<'_>) -> Along {
+    pub(crate) fn position_of(&self, q: PointRef<'_>) -> Along {
         Along::of(self.dir, q)
     }
 
@@ -343,10 +340,10 @@ mod tests {
         #[test]
         fn positions_agree_with_gmp(o in point(), a in point(), b in point(), q in point()) {
             prop_assume!(o != q);
-            let d = (q.x - o.x, q.y - o.y);
+            let d = q - o;
             prop_assert_eq!(position_along(a, d).big(), position(a, d));
-            let ld = Dir::Small(d.0, d.1);
-            let (sa, sb) = (ld.cross(&dir(o, a)), ld.cross(&dir(o, b)));
+            let ld = Dir::Small(d);
+            let (sa, sb) = (ld.cross_sign(&dir(o, a)), ld.cross_sign(&dir(o, b)));
             prop_assume!(sa != Ordering::Equal && sb != Ordering::Equal && sa != sb);
             prop_assert_eq!(crossing_along(o, a, b, d).big(), crossing_gmp(o, a, b, d));
         }

@@ -7,7 +7,7 @@
 
 use crate::rays::VisibilityRay;
 use std::cmp::Ordering;
-use wai_exact::{Orientation, Point, Side};
+use wai_exact::{Orientation, Point, Side, Vector};
 use wai_visibility::OnMap;
 
 /// The bound of the `i64` paths.
@@ -20,6 +20,12 @@ pub(crate) const SMALL_BITS: u32 = 30;
 
 /// The map's vertex coordinates as `i64`s (all below `2^SMALL_BITS`).
 pub(crate) struct SmallCoords(Vec<[i64; 2]>);
+
+// The vector helpers below are the `i64` specialisation of
+// `wai_exact::Vector` (whose `cross`/`dot` run in `i128`): on maps below
+// `2^SMALL_BITS` these loops run once per vertex and candidate ray, and
+// 64-bit products are several times cheaper than 128-bit ones. The tests
+// at the end compare them with `wai_exact` at the bound.
 
 /// `u − v`: below `2^31` for coordinates below `2^SMALL_BITS`.
 #[inline]
@@ -115,11 +121,11 @@ impl SmallCoords {
     /// By map vertex, the sign of `d × (v − v_from)`: `Greater` left of the
     /// line through vertex `from` with direction `d`, a difference of
     /// coordinates or a divisor of one (below `2^31`).
-    pub(crate) fn turns_from(&self, from: usize, d: (i128, i128)) -> Vec<Ordering> {
+    pub(crate) fn turns_from(&self, from: usize, d: Vector) -> Vec<Ordering> {
         let s = &self.0;
         let d = [
-            i64::try_from(d.0).expect("a direction between small points"),
-            i64::try_from(d.1).expect("a direction between small points"),
+            i64::try_from(d.x).expect("a direction between small points"),
+            i64::try_from(d.y).expect("a direction between small points"),
         ];
         s.iter()
             .map(|&c| cross(d, sub(c, s[from])).cmp(&0))
@@ -204,5 +210,43 @@ impl EdgeTurns {
     pub(crate) fn left(&self, e: usize, [x, y, w]: [i128; 3]) -> bool {
         let [dx, dy, c] = self.0[e];
         i128::from(dx) * y - i128::from(dy) * x - w * i128::from(c) > 0
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::{cross, dot, sub, SmallCoords, SMALL_BITS};
+    use proptest::prelude::*;
+    use wai_exact::{orientation, Point, Vector};
+
+    /// Coordinates at and below the bound: the extremes and uniform values.
+    fn coord() -> impl Strategy<Value = i64> {
+        let m = (1i64 << SMALL_BITS) - 1;
+        prop_oneof![Just(m), Just(-m), Just(0), -m..=m, -20i64..=20]
+    }
+
+    fn point() -> impl Strategy<Value = [i64; 2]> {
+        (coord(), coord()).prop_map(|(x, y)| [x, y])
+    }
+
+    fn vector(p: [i64; 2]) -> Vector {
+        Vector::new(i128::from(p[0]), i128::from(p[1]))
+    }
+
+    proptest! {
+        /// The `i64` helpers equal `wai_exact::Vector`'s products, and the
+        /// `i64` orientation `wai_exact::orientation`, up to the bound.
+        #[test]
+        fn i64_paths_equal_wai_exact(a in point(), b in point(), c in point()) {
+            let (u, v) = (sub(b, a), sub(c, a));
+            let (bu, bv) = (vector(b) - vector(a), vector(c) - vector(a));
+            prop_assert_eq!(i128::from(cross(u, v)), bu.cross(bv));
+            prop_assert_eq!(i128::from(dot(u, v)), bu.dot(bv));
+            let pt = |p: [i64; 2]| Point::new(i128::from(p[0]), i128::from(p[1]));
+            let s = SmallCoords::of(&[pt(a), pt(b), pt(c)]).expect("below the bound");
+            prop_assert_eq!(s.orientation(0, 1, 2), orientation(pt(a), pt(b), pt(c)));
+            let turns = s.turns_from(0, bu);
+            prop_assert_eq!(turns[2], bu.cross_sign(bv));
+        }
     }
 }

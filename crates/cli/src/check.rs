@@ -36,8 +36,11 @@ pub struct Args {
     /// The maps: comma-separated KIND[:a-b] — a random kind (n from a to b,
     /// default 8-30), a layout, `family` (every thesis family, parameter a
     /// to b, default 1-4), or the groups `random`, `layouts` and `all` —
-    /// or `corpus` (polyominoes up to 8 cells, the families at 1..6, the
-    /// datasets, counterexamples/). Map i has seed S + i.
+    /// and `corpus` (polyominoes up to 8 cells, the families at 1..6, the
+    /// datasets, counterexamples/), which may precede generated kinds
+    /// (`corpus,all`: the corpus first). Map i of the generated part has
+    /// seed S + i. With --budget every kind (and the corpus) gets an equal
+    /// share of the time.
     #[arg(long, default_value = "all")]
     pub maps: String,
     /// Instead of --maps: these map files.
@@ -73,7 +76,7 @@ pub struct Args {
     /// counterexample.
     #[arg(long, default_value_t = 3000)]
     pub shrink_tries: usize,
-    /// Stop at the first batch of maps with a counterexample.
+    /// Stop taking maps once a counterexample is found.
     #[arg(long)]
     pub first: bool,
     /// Write, per claim that measures a ratio, the map of its largest
@@ -170,18 +173,33 @@ fn stream(args: &Args) -> Result<Stream, Failure> {
         }
         return Ok(Stream::Fixed(maps));
     }
-    if args.maps == "corpus" {
+    // `corpus` among the kinds: the fixed corpus first, then the rest.
+    let parts: Vec<&str> = args.maps.split(',').map(str::trim).collect();
+    let with_corpus = parts.contains(&"corpus");
+    let rest: Vec<&str> = parts.into_iter().filter(|p| *p != "corpus").collect();
+    let fixed = if with_corpus {
         let maps = wai_hunt::corpus::corpus_maps().map_err(Failure::io)?;
-        return Ok(Stream::Fixed(
-            maps.into_iter()
-                .map(|m| (kind_of_name(m.name().unwrap_or("corpus")), m))
-                .collect(),
-        ));
+        maps.into_iter()
+            .map(|m| (kind_of_name(m.name().unwrap_or("corpus")), m))
+            .collect()
+    } else {
+        Vec::new()
+    };
+    if rest.iter().all(|p| p.is_empty()) {
+        return Ok(Stream::Fixed(fixed));
     }
-    let kinds = wai_hunt::parse_kinds(&args.maps).map_err(Failure::usage)?;
-    Ok(Stream::Generated {
-        kinds,
-        seed: args.seed,
+    let kinds = wai_hunt::parse_kinds(&rest.join(",")).map_err(Failure::usage)?;
+    Ok(if with_corpus {
+        Stream::Mixed {
+            fixed,
+            kinds,
+            seed: args.seed,
+        }
+    } else {
+        Stream::Generated {
+            kinds,
+            seed: args.seed,
+        }
     })
 }
 
@@ -233,7 +251,7 @@ impl Progress {
     }
 }
 
-pub fn check(args: &Args) -> Result<(), Failure> {
+pub fn run(args: &Args) -> Result<(), Failure> {
     if let Some(file) = &args.replay {
         return replay(args, file);
     }
@@ -244,7 +262,13 @@ pub fn check(args: &Args) -> Result<(), Failure> {
         .transpose()
         .map_err(|e| Failure::usage(format!("--budget: {e}")))?;
     if let Some(target) = &args.target {
-        return crate::target::target(args, target, budget);
+        return crate::check_target::run(
+            target,
+            args.evals,
+            budget,
+            args.seed,
+            args.out.as_deref(),
+        );
     }
     let checkers = checkers(args)?;
     let stream = stream(args)?;
@@ -274,14 +298,9 @@ pub fn check(args: &Args) -> Result<(), Failure> {
     // The checkout's commit when the run starts: the code that ran.
     let commit = wai_hunt::provenance::commit();
     let progress = Progress::new(total, budget);
-    let outcome = wai_hunt::search(
-        &checkers,
-        &stream,
-        limit,
-        4 * threads,
-        args.first,
-        &|done, elapsed| progress.update(done, elapsed),
-    );
+    let outcome = wai_hunt::search(&checkers, &stream, limit, args.first, &|done, elapsed| {
+        progress.update(done, elapsed)
+    });
     progress.bar.finish_and_clear();
     let out_dir = args.out.clone().unwrap_or_else(|| {
         PathBuf::from(if args.plant.is_some() {

@@ -456,7 +456,7 @@ fn replace_table(text: &str, table: &str) -> Result<String, String> {
     Ok(format!("{}{table}{}", &text[..=body], &text[end..]))
 }
 
-pub fn claims(args: &Args) -> Result<(), Failure> {
+pub fn run(args: &Args) -> Result<(), Failure> {
     let path = args
         .record
         .clone()

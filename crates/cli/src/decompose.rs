@@ -1,9 +1,9 @@
 //! `wai decompose`: the visibility cell decomposition of a map, its counts,
 //! and a picture of the cells coloured by equivalence class.
 
-use crate::input::{load, Format};
-use crate::Failure;
-use std::path::Path;
+use crate::failure::{counted_bar, Failure};
+use crate::input::load;
+use std::path::PathBuf;
 use wai_cells::{vertex_bound, visibility_rays, Decomposition, VisibilityRay};
 use wai_map::Map;
 use wai_render::{cells_svg, MapStyle};
@@ -53,35 +53,35 @@ fn gib(bytes: u64) -> f64 {
     bytes as f64 / f64::from(1u32 << 30)
 }
 
-/// A progress bar on standard error: `what` before it, `unit` after the
-/// counts.
-pub(crate) fn progress_bar(what: &'static str, unit: &str) -> indicatif::ProgressBar {
-    let bar = indicatif::ProgressBar::new(0);
-    bar.set_style(
-        indicatif::ProgressStyle::with_template(&format!(
-            "{{msg}} {{bar:40}} {{pos}}/{{len}} {unit} ({{eta}})"
-        ))
-        .unwrap_or_else(|_| indicatif::ProgressStyle::default_bar()),
-    );
-    bar.set_message(what);
-    bar
-}
-
-pub struct Options<'a> {
+#[derive(clap::Args, Debug)]
+pub struct Args {
+    /// Map file (JSON map format or GeoJSON); `-` reads standard input.
+    pub map: PathBuf,
+    /// Print JSON instead of text.
+    #[arg(long)]
     pub json: bool,
-    pub svg: Option<&'a Path>,
+    /// Draw the cells coloured by class into this SVG file.
+    #[arg(long)]
+    pub svg: Option<PathBuf>,
+    /// With --svg: highlight this class (an index printed by --json).
+    #[arg(long)]
     pub class: Option<usize>,
+    /// Skip the memory estimate made before the work starts.
+    #[arg(long)]
     pub force: bool,
+    #[command(flatten)]
+    pub format: crate::input::FormatArg,
 }
 
-pub fn decompose(path: &Path, opts: &Options<'_>, format: Format) -> Result<(), Failure> {
-    let loaded = load(path, format)?;
+pub fn run(args: &Args) -> Result<(), Failure> {
+    let (path, opts) = (&args.map, args);
+    let loaded = load(path, args.format.format)?;
     let map = &loaded.map;
     // The time covers the whole decomposition, rays included.
     let start = std::time::Instant::now();
     let rays = visibility_rays(map);
     check_memory(map, &rays, opts.force)?;
-    let bar = progress_bar("skeletons of cells", "cells of every dimension");
+    let bar = counted_bar("skeletons of cells", "cells of every dimension");
     let d = Decomposition::from_rays(map, rays, &mut |done, total| {
         bar.set_length(total as u64);
         bar.set_position(done as u64);
@@ -153,7 +153,7 @@ pub fn decompose(path: &Path, opts: &Options<'_>, format: Format) -> Result<(), 
             None => println!("peak memory:         unknown (no /proc/self/status)"),
         }
     }
-    if let Some(out) = opts.svg {
+    if let Some(out) = opts.svg.as_deref() {
         let cells = cell_rings(&d);
         let caption = format!(
             "{} 2-cells, {} kept 1-cells and {} kept 0-cells in {} classes{}",

@@ -3,78 +3,60 @@
 //! valid embeddings of one skeleton that overlap, with the exact verdict
 //! on whether their witnesses see each other (Theorem 4.2).
 
-use crate::decompose::progress_bar;
-use crate::input::{load, Format};
+use crate::failure::{counted_bar, Failure};
+use crate::input::load;
 use crate::vis::show;
-use crate::Failure;
-use std::path::Path;
+use std::path::{Path, PathBuf};
 use wai_cells::{Decomposition, LowerSite};
-use wai_embed::{
-    kernels_overlap, overlapping_valid_pairs, valid_candidate_edges, witness_regions, CellRef,
-    Embedder, Embedding, Mutual, Piece, Pt, Sightlines, Witnesses,
-};
+use wai_embed::{CellRef, Mutual, Piece, Witnesses};
+use wai_exact::QPoint;
 use wai_map::Map;
 use wai_render::{embeddings_svg, EmbeddingDrawn, MapStyle};
-use wai_visibility::{ConvexRegion, VisibilityIndex};
+use wai_study::{Embedded, OverlappingPair, Study};
 
-pub struct Options<'a> {
+#[derive(clap::Args, Debug)]
+pub struct Args {
+    /// Map file (JSON map format or GeoJSON); `-` reads standard input.
+    pub map: PathBuf,
+    /// Only this class (an index printed by `wai decompose --json`).
+    #[arg(long)]
     pub class: Option<usize>,
+    /// Print JSON instead of text.
+    #[arg(long)]
     pub json: bool,
-    pub svg: Option<&'a Path>,
+    /// Draw the embedded skeletons, kernels, witnesses and candidate
+    /// edges of one class (--class, else the one with the most valid
+    /// embeddings) into this SVG file.
+    #[arg(long)]
+    pub svg: Option<PathBuf>,
+    #[command(flatten)]
+    pub format: crate::input::FormatArg,
 }
 
-/// One class: its embeddings with their witnesses and valid candidate
-/// edges, and its overlapping pairs.
-struct ClassReport {
+/// One class, read off the study: its embeddings (with their kernels),
+/// witnesses and valid candidate edges, and its overlapping pairs.
+struct ClassReport<'s> {
     class: usize,
-    embeddings: Vec<Embedding>,
-    witnesses: Vec<Witnesses>,
-    valid_candidates: Vec<Vec<Vec<usize>>>,
-    /// By embedding: h(ker V*).
-    kernels: Vec<ConvexRegion>,
-    overlapping: Vec<Overlap>,
+    embeddings: &'s [Embedded],
+    witnesses: &'s [Witnesses],
+    valid_candidates: Vec<&'s [Vec<usize>]>,
+    overlapping: Vec<&'s OverlappingPair>,
 }
 
-struct Overlap {
-    a: usize,
-    b: usize,
-    kernels_overlap: bool,
-    sight: Mutual,
-}
-
-fn analyse(
-    map: &Map,
-    d: &Decomposition<'_>,
-    index: &VisibilityIndex<'_>,
-    embedder: &Embedder<'_>,
-    sightlines: &Sightlines<'_>,
-    class: usize,
-) -> ClassReport {
-    let embeddings = embedder.embeddings(&d.skeletons()[class]);
-    let origins: Vec<usize> = embeddings.iter().map(|h| h.origin).collect();
-    let witnesses = witness_regions(d, class, &origins);
-    let valid_candidates = embeddings
-        .iter()
-        .zip(&witnesses)
-        .map(|(h, w)| valid_candidate_edges(index, h, w))
-        .collect();
-    let kernels: Vec<ConvexRegion> = embeddings.iter().map(|h| h.kernel(map)).collect();
-    let overlapping = overlapping_valid_pairs(map, &embeddings, &witnesses)
-        .into_iter()
-        .map(|(a, b)| Overlap {
-            a,
-            b,
-            kernels_overlap: kernels_overlap(&kernels[a], &kernels[b]),
-            sight: sightlines.regions_by_lines(&witnesses[a].pieces(), &witnesses[b].pieces()),
-        })
-        .collect();
+fn analyse<'s>(study: &'s Study<'_>, class: usize) -> ClassReport<'s> {
+    let embeddings = &study.embeddings()[class];
     ClassReport {
         class,
         embeddings,
-        witnesses,
-        valid_candidates,
-        kernels,
-        overlapping,
+        witnesses: &study.witnesses()[class],
+        valid_candidates: (0..embeddings.len())
+            .map(|i| study.valid_candidates(class, i))
+            .collect(),
+        overlapping: study
+            .overlapping_pairs()
+            .iter()
+            .filter(|p| p.class == class)
+            .collect(),
     }
 }
 
@@ -101,10 +83,10 @@ fn json_class(map: &Map, d: &Decomposition<'_>, r: &ClassReport) -> serde_json::
     let embeddings: Vec<_> = r
         .embeddings
         .iter()
-        .zip(&r.witnesses)
+        .zip(r.witnesses)
         .zip(&r.valid_candidates)
-        .zip(&r.kernels)
-        .map(|(((h, w), vc), kernel)| {
+        .map(|((e, w), vc)| {
+            let (h, kernel) = (&e.embedding, &e.kernel);
             serde_json::json!({
                 "origin": h.origin,
                 "origin_point": show(map, &v[h.origin].into()),
@@ -165,12 +147,13 @@ fn text_class(map: &Map, d: &Decomposition<'_>, r: &ClassReport, out: &mut Strin
         r.embeddings.len(),
         r.overlapping.len()
     );
-    for ((h, w), vc) in r
+    for ((e, w), vc) in r
         .embeddings
         .iter()
-        .zip(&r.witnesses)
+        .zip(r.witnesses)
         .zip(&r.valid_candidates)
     {
+        let h = &e.embedding;
         let cells: Vec<String> = w.cells.iter().map(|c| cell_name(d, c.cell)).collect();
         let _ = writeln!(
             out,
@@ -222,22 +205,28 @@ fn svg(map: &Map, r: &ClassReport, out: &Path) -> Result<(), Failure> {
     let drawn: Vec<EmbeddingDrawn> = r
         .embeddings
         .iter()
-        .zip(&r.witnesses)
+        .zip(r.witnesses)
         .zip(&r.valid_candidates)
-        .zip(&r.kernels)
-        .map(|(((h, w), vc), kernel)| EmbeddingDrawn {
+        .map(|((e, w), vc)| (&e.embedding, &e.kernel, w, vc))
+        .map(|(h, kernel, w, vc)| EmbeddingDrawn {
             origin: h.origin,
             polygon: h.polygon(map),
             kernel: kernel.vertices().to_vec(),
             witnesses: w
                 .cells
                 .iter()
-                .map(|c| c.piece.vertices().iter().map(Pt::to_rat_point).collect())
+                .map(|c| {
+                    c.piece
+                        .vertices()
+                        .iter()
+                        .map(QPoint::to_rat_point)
+                        .collect()
+                })
                 .collect(),
             candidate_edges: h
                 .candidates
                 .iter()
-                .zip(vc)
+                .zip(vc.iter())
                 .flat_map(|(cs, valid)| cs.iter().map(|&e| (e, valid.contains(&e))))
                 .collect(),
         })
@@ -258,10 +247,11 @@ fn svg(map: &Map, r: &ClassReport, out: &Path) -> Result<(), Failure> {
     std::fs::write(out, picture).map_err(|e| Failure::io(format!("{}: {e}", out.display())))
 }
 
-pub fn embeddings(path: &Path, opts: &Options<'_>, format: Format) -> Result<(), Failure> {
-    let loaded = load(path, format)?;
+pub fn run(args: &Args) -> Result<(), Failure> {
+    let opts = args;
+    let loaded = load(&args.map, args.format.format)?;
     let map = &loaded.map;
-    let bar = progress_bar("skeletons of cells", "cells of every dimension");
+    let bar = counted_bar("skeletons of cells", "cells of every dimension");
     let d = Decomposition::with_progress(map, &mut |done, total| {
         bar.set_length(total as u64);
         bar.set_position(done as u64);
@@ -276,24 +266,14 @@ pub fn embeddings(path: &Path, opts: &Options<'_>, format: Format) -> Result<(),
             )));
         }
     }
-    let index = VisibilityIndex::new(map);
-    let embedder = Embedder::new(&index);
-    let sightlines = Sightlines::new(map);
+    let study = Study::from_decomposition(d);
+    let d = study.decomposition();
     let wanted: Vec<usize> = match opts.class {
         Some(k) => vec![k],
         None => (0..classes).collect(),
     };
-    let bar = progress_bar("embeddings", "classes");
-    bar.set_length(wanted.len() as u64);
-    let reports: Vec<ClassReport> = wanted
-        .iter()
-        .map(|&k| {
-            bar.inc(1);
-            analyse(map, &d, &index, &embedder, &sightlines, k)
-        })
-        .collect();
-    bar.finish_and_clear();
-    if let Some(out) = opts.svg {
+    let reports: Vec<ClassReport> = wanted.iter().map(|&k| analyse(&study, k)).collect();
+    if let Some(out) = opts.svg.as_deref() {
         // The class asked for, else the one with the most valid embeddings.
         let shown = reports
             .iter()
@@ -311,7 +291,7 @@ pub fn embeddings(path: &Path, opts: &Options<'_>, format: Format) -> Result<(),
             "name": map.name(),
             "n": map.n(),
             "r": map.r(),
-            "classes": reports.iter().map(|r| json_class(map, &d, r)).collect::<Vec<_>>(),
+            "classes": reports.iter().map(|r| json_class(map, d, r)).collect::<Vec<_>>(),
         });
         println!("{}", serde_json::to_string_pretty(&v).expect("plain JSON"));
         return Ok(());
@@ -349,7 +329,7 @@ pub fn embeddings(path: &Path, opts: &Options<'_>, format: Format) -> Result<(),
     for r in &reports {
         // Without --class, only skeletons with two or more embeddings.
         if opts.class.is_some() || r.embeddings.len() > 1 {
-            text_class(map, &d, r, &mut out);
+            text_class(map, d, r, &mut out);
         }
     }
     print!("{out}");

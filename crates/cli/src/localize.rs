@@ -1,12 +1,12 @@
-//! `wai preprocess` and `wai localize`: the exact reference localizer
-//! (Alg 3.14 and 3.13).
+//! `wai localize`: the exact reference localizer (Alg 3.13): every
+//! position where the robot can be, given what it sees.
 
-use crate::input::{load, load_bytes, read_bytes, Format};
+use crate::failure::Failure;
+use crate::input::{load_bytes, read_bytes, Format};
 use crate::vis::{parse_viewpoint, show};
-use crate::Failure;
 use rug::{Integer, Rational};
 use serde_json::Value;
-use std::path::Path;
+use std::path::{Path, PathBuf};
 use wai_exact::RatPoint;
 use wai_localize::{Localizer, RobotView};
 use wai_map::{format_exact, parse_exact, Map};
@@ -33,7 +33,7 @@ fn localizer(path: &Path, format: Format) -> Result<Localizer, Failure> {
 }
 
 /// Alg 3.14 on `map`, read from `path`, saying so on stderr.
-fn preprocessed(path: &Path, map: &Map) -> Localizer {
+pub(crate) fn preprocessed(path: &Path, map: &Map) -> Localizer {
     eprintln!(
         "preprocessing {} (n = {}, r = {}) …",
         path.display(),
@@ -41,22 +41,6 @@ fn preprocessed(path: &Path, map: &Map) -> Localizer {
         map.r()
     );
     Localizer::new(map)
-}
-
-pub fn preprocess(path: &Path, out: &Path, format: Format) -> Result<(), Failure> {
-    let loaded = load(path, format)?;
-    let loc = preprocessed(path, &loaded.map);
-    let text = wai_localize::file::to_json(&loc);
-    std::fs::write(out, &text).map_err(|e| Failure::io(format!("{}: {e}", out.display())))?;
-    let (cells, traps) = (loc.cells(), loc.trapezoids());
-    println!(
-        "{}: {} classes, {cells} cells of every dimension, {traps} trapezoids; {} bytes written to {}",
-        path.display(),
-        loc.classes(),
-        text.len(),
-        out.display()
-    );
-    Ok(())
 }
 
 /// Read V: a JSON array of [x, y] pairs, or an object with "vertices",
@@ -155,17 +139,34 @@ pub(crate) fn answers_svg(map: &Map, view: &RobotView, answer: &wai_localize::An
     c.finish(map.name().unwrap_or("localize"), &caption)
 }
 
-pub struct Options<'a> {
-    pub at: Option<&'a str>,
-    pub polygon: Option<&'a Path>,
+#[derive(clap::Args, Debug)]
+pub struct Args {
+    /// A map file (preprocessed now) or a file written by `wai preprocess`.
+    pub map: PathBuf,
+    /// Simulate the view at `x,y` (exact numbers in the map's units).
+    #[arg(long, allow_hyphen_values = true)]
+    pub at: Option<String>,
+    /// A JSON file with the polygon: an array of [x, y] pairs (or an
+    /// object with "vertices"), exact numbers in the map's units,
+    /// relative to the robot, counter-clockwise.
+    #[arg(long)]
+    pub polygon: Option<PathBuf>,
+    /// Print JSON: {"answers": [{"position": [x, y], "origin_vertex": i}], "class": k}
+    /// (and "reason" when there is no answer).
+    #[arg(long)]
     pub json: bool,
-    pub svg: Option<&'a Path>,
+    /// Draw the map, the polygon at every answer and the answers into this SVG file.
+    #[arg(long)]
+    pub svg: Option<PathBuf>,
+    #[command(flatten)]
+    pub format: crate::input::FormatArg,
 }
 
-pub fn localize(path: &Path, opts: &Options<'_>, format: Format) -> Result<(), Failure> {
-    let loc = localizer(path, format)?;
+pub fn run(args: &Args) -> Result<(), Failure> {
+    let opts = args;
+    let loc = localizer(&args.map, args.format.format)?;
     let map = loc.map();
-    let view = match (opts.at, opts.polygon) {
+    let view = match (opts.at.as_deref(), opts.polygon.as_deref()) {
         (Some(at), None) => {
             let p = parse_viewpoint(at, map)?;
             let vp = VisibilityIndex::new(map)
@@ -186,7 +187,7 @@ pub fn localize(path: &Path, opts: &Options<'_>, format: Format) -> Result<(), F
         }
     };
     let answer = loc.localize(&view);
-    if let Some(out) = opts.svg {
+    if let Some(out) = opts.svg.as_deref() {
         std::fs::write(out, answers_svg(map, &view, &answer))
             .map_err(|e| Failure::io(format!("{}: {e}", out.display())))?;
     }

@@ -1,6 +1,6 @@
 #![allow(
     clippy::float_arithmetic,
-    reason = "sensor settings and scans are approximate (issue 12)"
+    reason = "sensor settings and scans are approximate"
 )]
 //! `wai scan`: a simulated laser scan of a map from a pose (thesis sec. 6.1;
 //! the engine is [`wai_scan`]), written as JSON.
@@ -77,15 +77,15 @@ fn parse_pose(text: &str) -> Result<Pose, Failure> {
     }
 }
 
-pub fn scan(args: &Args) -> Result<(), Failure> {
+pub fn run(args: &Args) -> Result<(), Failure> {
     let pose = parse_pose(&args.at)?;
     let map = match args.map.to_str() {
-        Some(spec) if crate::scan_eval::is_generated(spec) || args.units != "auto" => {
-            crate::scan_eval::load_map(spec, &args.units)?.map
+        Some(spec) if crate::scan_maps::is_generated(spec) || args.units != "auto" => {
+            crate::scan_maps::load_map(spec, &args.units)?.map
         }
         _ => {
             let map = load(&args.map, Format::Auto)?.map;
-            crate::scan_eval::in_metres(&args.map.display().to_string(), map, "auto")?.0
+            crate::scan_maps::in_metres(&args.map.display().to_string(), map, "auto")?.0
         }
     };
     let sensor = Sensor {

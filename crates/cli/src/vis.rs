@@ -1,9 +1,9 @@
 //! `wai vis`: the visibility polygon V_p and skeleton V*_p of a viewpoint.
 
-use crate::input::{load, Format};
-use crate::Failure;
+use crate::failure::Failure;
+use crate::input::load;
 use rug::{Integer, Rational};
-use std::path::Path;
+use std::path::PathBuf;
 use wai_exact::RatPoint;
 use wai_map::{format_exact, parse_exact, Map};
 use wai_render::{visibility_svg, MapStyle};
@@ -180,14 +180,26 @@ fn json(map: &Map, vp: &VisibilityPolygon, sk: &Skeleton) -> String {
     )
 }
 
-pub fn vis(
-    path: &Path,
-    at: &str,
-    as_json: bool,
-    svg: Option<&Path>,
-    format: Format,
-) -> Result<(), Failure> {
-    let loaded = load(path, format)?;
+#[derive(clap::Args, Debug)]
+pub struct Args {
+    /// Map file (JSON map format or GeoJSON); `-` reads standard input.
+    pub map: PathBuf,
+    /// The viewpoint `x,y`, exact numbers in the map's units (e.g. `3/2,0.25`).
+    #[arg(long, allow_hyphen_values = true)]
+    pub at: String,
+    /// Print JSON instead of text.
+    #[arg(long)]
+    pub json: bool,
+    /// Also draw V_p, its spurious edges and the skeleton into this SVG file.
+    #[arg(long)]
+    pub svg: Option<PathBuf>,
+    #[command(flatten)]
+    pub format: crate::input::FormatArg,
+}
+
+pub fn run(args: &Args) -> Result<(), Failure> {
+    let (path, at, as_json, svg) = (&args.map, &args.at, args.json, args.svg.as_deref());
+    let loaded = load(path, args.format.format)?;
     let map = &loaded.map;
     let p = parse_viewpoint(at, map)?;
     let index = VisibilityIndex::new(map);

@@ -43,9 +43,9 @@
 use std::cmp::Ordering;
 
 use rug::Rational;
-use wai_exact::{sees, Point};
+use wai_exact::{convex_hull, sees, turn, Point, QPoint};
 
-use crate::piece::{convex_hull, dot, line_cut, segments_meet, turn, Bounds, Piece, Pt};
+use crate::piece::{line_cut, segments_meet, Bounds, Piece};
 
 /// The lines of sight from one witness cell through one embedded
 /// artificial edge to the candidate edge the cell sees (module doc).
@@ -58,10 +58,10 @@ pub struct SightFan {
     /// The map edge seen through it.
     pub edge: usize,
     /// h(a), counter-clockwise along h(V◇).
-    pub v1: Pt,
-    pub v2: Pt,
+    pub v1: QPoint,
+    pub v2: QPoint,
     /// The candidate edge's ends.
-    c: (Pt, Pt),
+    c: (QPoint, QPoint),
     /// The witness cell.
     witnesses: Piece,
     /// The parts in h(V◇): the open hull, h(a)°, and the cell unless it
@@ -78,9 +78,9 @@ pub struct SightFan {
 /// point `p` of its candidate edge, and a point `at` they share.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct Crossing {
-    pub at: Pt,
-    pub first: (Pt, Pt),
-    pub second: (Pt, Pt),
+    pub at: QPoint,
+    pub first: (QPoint, QPoint),
+    pub second: (QPoint, QPoint),
 }
 
 impl SightFan {
@@ -97,9 +97,9 @@ impl SightFan {
         witnesses: &Piece,
         cell: usize,
         artificial: usize,
-        (v1, v2): (Pt, Pt),
+        (v1, v2): (QPoint, QPoint),
         edge: usize,
-        (c0, c1): (Pt, Pt),
+        (c0, c1): (QPoint, QPoint),
     ) -> SightFan {
         let corners = witnesses.vertices();
         // The cell is inside h(a)'s line; its closure may touch the line
@@ -109,19 +109,19 @@ impl SightFan {
                 && corners.iter().all(|u| turn(&v1, &v2, u) != Ordering::Less),
             "witness cell {cell} is not inside artificial edge {v1}–{v2}"
         );
-        let ray_end = |u: &Pt, v: &Pt| line_cut(u, v, &c0, &c1);
+        let ray_end = |u: &QPoint, v: &QPoint| line_cut(u, v, &c0, &c1);
         // Along c's line, from the s1 side to the s2 side.
         let w0 = witnesses.inner_point();
         let origin = ray_end(&w0, &v1);
         let dir = ray_end(&w0, &v2).sub(&origin);
-        let along = |p: &Pt| dot(&p.sub(&origin), &dir);
+        let along = |p: &QPoint| p.sub(&origin).dot(&dir);
         let c_dir = c1.sub(&c0);
-        let extreme = |v: &Pt, first: bool| -> Pt {
+        let extreme = |v: &QPoint, first: bool| -> QPoint {
             // A corner whose ray runs parallel to c's line is skipped: the
             // cell's other rays all reach c, so its limit is no extreme.
             let ends = corners
                 .iter()
-                .filter(|u| crate::piece::cross(&v.sub(u), &c_dir) != 0)
+                .filter(|u| v.sub(u).cross_sign(&c_dir) != Ordering::Equal)
                 .map(|u| ray_end(u, v));
             let best = if first {
                 ends.min_by_key(|p| along(p))
@@ -154,7 +154,7 @@ impl SightFan {
         if t1 != t2 {
             beyond.push(Piece::Segment(t1, t2));
         }
-        let points: Vec<Pt> = inside
+        let points: Vec<QPoint> = inside
             .iter()
             .chain(&beyond)
             .flat_map(Piece::vertices)
@@ -187,7 +187,7 @@ impl SightFan {
     /// A point shared by a line of sight of this fan and one of `other`:
     /// of any part, or (`beyond_only`) of the parts behind the artificial
     /// edges only.
-    pub fn meets(&self, other: &SightFan, beyond_only: bool) -> Option<Pt> {
+    pub fn meets(&self, other: &SightFan, beyond_only: bool) -> Option<QPoint> {
         if !self.bounds.meets_box(&other.bounds) {
             return None;
         }
@@ -230,9 +230,9 @@ impl SightFan {
     /// by the cuts of the segments between their vertices. A miss is
     /// looked for on the lines from the cell's inner point through the
     /// window at 1/4, 1/2 and 3/4, each a line of sight (module doc).
-    pub fn lines_meet_segment(&self, a: &Pt, b: &Pt) -> Option<bool> {
+    pub fn lines_meet_segment(&self, a: &QPoint, b: &QPoint) -> Option<bool> {
         let (v1, v2) = (&self.v1, &self.v2);
-        let on_ab = |z: &Pt| segments_meet(z, z, a, b);
+        let on_ab = |z: &QPoint| segments_meet(z, z, a, b);
         if turn(a, b, v1) == Ordering::Equal
             && turn(a, b, v2) == Ordering::Equal
             && on_ab(v1)
@@ -240,11 +240,11 @@ impl SightFan {
         {
             return Some(true);
         }
-        let side = |z: &Pt| turn(a, b, z);
+        let side = |z: &QPoint| turn(a, b, z);
         // Whether the line ab strictly separates the open convex sets with
         // closures spanned by `p` and `q` (`p_in`, `q_in` inner points) and
         // cuts their hull inside [a, b].
-        let cuts_inside = |p: &[Pt], p_in: &Pt, q: &[Pt], q_in: &Pt| -> bool {
+        let cuts_inside = |p: &[QPoint], p_in: &QPoint, q: &[QPoint], q_in: &QPoint| -> bool {
             let sp = side(p_in);
             if sp == Ordering::Equal || side(q_in) != sp.reverse() {
                 return false;
@@ -266,7 +266,7 @@ impl SightFan {
         let window = [v1.clone(), v2.clone()];
         let mid = v1.add(v2).scale(&Rational::from((1, 2)));
         // (t1, t2): the segment part behind the window, if it has one.
-        let landing: Vec<Pt> = self
+        let landing: Vec<QPoint> = self
             .beyond
             .iter()
             .find(|x| matches!(x, Piece::Segment(..)))
@@ -299,9 +299,9 @@ impl SightFan {
     ///
     /// # Panics
     /// If no such line is found or it fails the re-check (a bug).
-    pub fn sight_through(&self, ring: &[Point], x: &Pt) -> (Pt, Pt) {
+    pub fn sight_through(&self, ring: &[Point], x: &QPoint) -> (QPoint, QPoint) {
         let (v1, v2) = (&self.v1, &self.v2);
-        let to_c = |w: &Pt, through: &Pt| line_cut(w, through, &self.c.0, &self.c.1);
+        let to_c = |w: &QPoint, through: &QPoint| line_cut(w, through, &self.c.0, &self.c.1);
         let on_c_line = turn(&self.c.0, &self.c.1, x) == Ordering::Equal;
         let (w, p) = if self.witnesses.contains(x) {
             let mid = v1.add(v2).scale(&Rational::from((1, 2)));
@@ -330,7 +330,7 @@ impl SightFan {
         (w, p)
     }
 
-    fn recheck(&self, ring: &[Point], x: &Pt, w: &Pt, p: &Pt) {
+    fn recheck(&self, ring: &[Point], x: &QPoint, w: &QPoint, p: &QPoint) {
         let (v1, v2) = (&self.v1, &self.v2);
         let through = turn(v1, v2, w) == Ordering::Greater
             && turn(v1, v2, p) == Ordering::Less
@@ -359,20 +359,20 @@ impl SightFan {
 /// [`SightFan::lines_meet_segment`]'s hull tests may not.
 #[derive(Debug, Clone)]
 pub struct Chord {
-    x: Pt,
-    y: Pt,
+    x: QPoint,
+    y: QPoint,
     /// Vertex indices of x and y, and n.
     ix: usize,
     iy: usize,
     n: usize,
     /// The part of the arc from x to y: its vertices, x first.
-    part: Vec<Pt>,
+    part: Vec<QPoint>,
 }
 
 impl Chord {
     /// The chord [x, y] of `ring`, if x and y are distinct map vertices and
     /// no other boundary point lies on the segment.
-    pub fn new(ring: &[Pt], x: &Pt, y: &Pt) -> Option<Chord> {
+    pub fn new(ring: &[QPoint], x: &QPoint, y: &QPoint) -> Option<Chord> {
         let n = ring.len();
         let ix = ring.iter().position(|v| v == x)?;
         let iy = ring.iter().position(|v| v == y)?;
@@ -384,7 +384,7 @@ impl Chord {
             let (a, b) = (&ring[k], &ring[(k + 1) % n]);
             // An edge that touches the open chord: a vertex on it, or a
             // crossing (edges at x or y touch it only there).
-            let at_ends = |v: &Pt| v == x || v == y;
+            let at_ends = |v: &QPoint| v == x || v == y;
             if !at_ends(a) && segments_meet(a, a, x, y) {
                 return None;
             }
@@ -412,7 +412,7 @@ impl Chord {
 
     /// Whether a point off the chord and off the boundary lies in the part
     /// of the arc from x to y (crossing parity of a rightward ray).
-    fn point_in_part(&self, z: &Pt) -> bool {
+    fn point_in_part(&self, z: &QPoint) -> bool {
         let m = self.part.len();
         let mut inside = false;
         for k in 0..m {

@@ -3,18 +3,18 @@
 //! two polygons, its type (Lemma 4.7), and the crossings of artificial
 //! edges behind Lemmas 4.5, 4.8 and 4.9 — exactly, with rationals.
 
-use crate::piece::{cross, dot, segment_cuts, segments_meet, Pt};
+use crate::piece::{segment_cuts, segments_meet};
 use crate::witness::{locate, Locus};
 use rug::Rational;
 use std::cmp::Ordering;
 use std::collections::HashSet;
-use wai_exact::Point;
+use wai_exact::{Point, QPoint};
 
 /// An embedded skeleton polygon h(V◇): its vertices counter-clockwise and,
 /// by edge (from vertex i to i + 1), whether the edge is artificial.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct SkeletonRing {
-    pub ring: Vec<Pt>,
+    pub ring: Vec<QPoint>,
     pub artificial: Vec<bool>,
 }
 
@@ -22,12 +22,12 @@ impl SkeletonRing {
     /// From map points and the skeleton key's labels (`Some` = artificial).
     pub fn new(points: &[Point], artificial: Vec<bool>) -> SkeletonRing {
         SkeletonRing {
-            ring: points.iter().map(|&p| Pt::from(p)).collect(),
+            ring: points.iter().map(|&p| QPoint::from(p)).collect(),
             artificial,
         }
     }
 
-    pub fn edge(&self, i: usize) -> (&Pt, &Pt) {
+    pub fn edge(&self, i: usize) -> (&QPoint, &QPoint) {
         (&self.ring[i], &self.ring[(i + 1) % self.ring.len()])
     }
 
@@ -38,11 +38,11 @@ impl SkeletonRing {
 }
 
 /// Whether two closed segments meet other than in an end common to both.
-pub fn edges_meet(a: (&Pt, &Pt), b: (&Pt, &Pt)) -> bool {
+pub fn edges_meet(a: (&QPoint, &QPoint), b: (&QPoint, &QPoint)) -> bool {
     if !segments_meet(a.0, a.1, b.0, b.1) {
         return false;
     }
-    let shared: Vec<&Pt> = [a.0, a.1]
+    let shared: Vec<&QPoint> = [a.0, a.1]
         .into_iter()
         .filter(|p| *p == b.0 || *p == b.1)
         .collect();
@@ -53,14 +53,14 @@ pub fn edges_meet(a: (&Pt, &Pt), b: (&Pt, &Pt)) -> bool {
     // overlapping beyond it.
     let da = a.1.sub(a.0);
     let db = b.1.sub(b.0);
-    if cross(&da, &db) != 0 {
+    if da.cross_sign(&db) != Ordering::Equal {
         return false;
     }
     // Collinear with a common end: overlap beyond it iff they point the
     // same way from it.
     let x = shared[0];
-    let away = |s: (&Pt, &Pt)| if s.0 == x { s.1.sub(x) } else { s.0.sub(x) };
-    dot(&away(a), &away(b)) > 0
+    let away = |s: (&QPoint, &QPoint)| if s.0 == x { s.1.sub(x) } else { s.0.sub(x) };
+    away(a).dot(&away(b)) > 0
 }
 
 /// The artificial edges of `other` that `ring`'s edge `i` meets (other
@@ -74,7 +74,7 @@ pub fn artificial_crossings(ring: &SkeletonRing, i: usize, other: &SkeletonRing)
 
 /// How many connected pieces (intervals, possibly single points) the
 /// closed segment `ab` has inside the closed polygon `q`.
-pub fn pieces_inside(a: &Pt, b: &Pt, q: &[Pt]) -> usize {
+pub fn pieces_inside(a: &QPoint, b: &QPoint, q: &[QPoint]) -> usize {
     let mut cuts = vec![Rational::new(), Rational::from(1)];
     for j in 0..q.len() {
         cuts.extend(segment_cuts(a, b, &q[j], &q[(j + 1) % q.len()]));
@@ -109,8 +109,8 @@ pub fn pieces_inside(a: &Pt, b: &Pt, q: &[Pt]) -> usize {
 /// the intersection on its left, and the edges of P and Q it lies on.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct BoundaryEdge {
-    pub from: Pt,
-    pub to: Pt,
+    pub from: QPoint,
+    pub to: QPoint,
     pub on_p: Option<usize>,
     pub on_q: Option<usize>,
 }
@@ -157,8 +157,8 @@ pub struct Intersection {
 /// A directed boundary piece before merging.
 #[derive(Clone, Debug)]
 struct Stretch {
-    from: Pt,
-    to: Pt,
+    from: QPoint,
+    to: QPoint,
     on_p: Option<usize>,
     on_q: Option<usize>,
 }
@@ -168,7 +168,7 @@ struct Stretch {
 /// inside `q` (midpoint strictly inside, or on an edge of `q` running the
 /// same way — then recorded on both). `shared`: keep the pieces along
 /// `q`'s edges (only for one of the two polygons, so they count once).
-fn boundary_pieces(p: &[Pt], q: &[Pt], p_is_first: bool, shared: bool) -> Vec<Stretch> {
+fn boundary_pieces(p: &[QPoint], q: &[QPoint], p_is_first: bool, shared: bool) -> Vec<Stretch> {
     let mut out = Vec::new();
     for i in 0..p.len() {
         let (a, b) = (&p[i], &p[(i + 1) % p.len()]);
@@ -186,7 +186,7 @@ fn boundary_pieces(p: &[Pt], q: &[Pt], p_is_first: bool, shared: bool) -> Vec<St
                 Locus::Outside => continue,
                 Locus::OnEdge(j) => {
                     let (c, e) = (&q[j], &q[(j + 1) % q.len()]);
-                    if !shared || dot(&d, &e.sub(c)) <= 0 {
+                    if !shared || d.dot(&e.sub(c)) <= 0 {
                         continue;
                     }
                     Some(j)
@@ -210,20 +210,20 @@ fn boundary_pieces(p: &[Pt], q: &[Pt], p_is_first: bool, shared: bool) -> Vec<St
 
 /// Clockwise angle order from direction `r`: directions just clockwise of
 /// `r` first, `r` itself last.
-fn clockwise_from(r: &Pt, u: &Pt, v: &Pt) -> Ordering {
-    let half = |w: &Pt| {
-        let c = cross(r, w);
+fn clockwise_from(r: &QPoint, u: &QPoint, v: &QPoint) -> Ordering {
+    let half = |w: &QPoint| {
+        let c = r.cross_sign(w);
         // 0: strictly clockwise of r within a half turn (or opposite r);
         // 1: counter-clockwise of r, or r itself.
-        u8::from(!(c < 0 || (c == 0 && dot(r, w) < 0)))
+        u8::from(!(c == Ordering::Less || (c == Ordering::Equal && r.dot(w) < 0)))
     };
-    half(u).cmp(&half(v)).then_with(|| cross(v, u).cmp0())
+    half(u).cmp(&half(v)).then_with(|| v.cross_sign(u))
 }
 
 impl Intersection {
     /// The boundary of P ∩ Q (closed polygons, counter-clockwise, simple).
     /// Empty if the interiors do not meet.
-    pub fn of(p: &[Pt], q: &[Pt]) -> Intersection {
+    pub fn of(p: &[QPoint], q: &[QPoint]) -> Intersection {
         let mut pieces = boundary_pieces(p, q, true, true);
         pieces.extend(boundary_pieces(q, p, false, false));
         // Chain: at each end, of the pieces leaving it, take the first
@@ -267,7 +267,7 @@ impl Intersection {
             .filter(|c| {
                 let area = c
                     .iter()
-                    .fold(Rational::new(), |s, e| s + cross(&e.from, &e.to));
+                    .fold(Rational::new(), |s, e| s + e.from.cross(&e.to));
                 area > 0
             })
             .count()
@@ -296,9 +296,11 @@ pub fn edge_type(
     e: &BoundaryEdge,
     p: &SkeletonRing,
     q: &SkeletonRing,
-    map_vertices: &HashSet<Pt>,
+    map_vertices: &HashSet<QPoint>,
 ) -> Option<EdgeType> {
-    let same = |x: (&Pt, &Pt)| (x.0 == &e.from && x.1 == &e.to) || (x.0 == &e.to && x.1 == &e.from);
+    let same = |x: (&QPoint, &QPoint)| {
+        (x.0 == &e.from && x.1 == &e.to) || (x.0 == &e.to && x.1 == &e.from)
+    };
     let full_p = e.on_p.filter(|&i| !p.artificial[i]);
     let full_q = e.on_q.filter(|&j| !q.artificial[j]);
     if full_p.is_some() || full_q.is_some() {
@@ -340,15 +342,15 @@ pub fn edge_type(
 /// edge `b` of the other. `Some(true)` for LR (w and a's left end on the
 /// same side of b), `Some(false)` for RL, `None` if a point lies on the
 /// line or the ends are not told apart.
-pub fn left_right(w: &Pt, a: (&Pt, &Pt), b: (&Pt, &Pt)) -> Option<bool> {
-    use crate::piece::turn;
+pub fn left_right(w: &QPoint, a: (&QPoint, &QPoint), b: (&QPoint, &QPoint)) -> Option<bool> {
+    use wai_exact::turn;
     // The left end, viewed from w: the one counter-clockwise of the other.
     let (left, right) = match turn(w, a.0, a.1) {
         Ordering::Greater => (a.1, a.0),
         Ordering::Less => (a.0, a.1),
         Ordering::Equal => return None,
     };
-    let side = |x: &Pt| turn(b.0, b.1, x);
+    let side = |x: &QPoint| turn(b.0, b.1, x);
     let sw = side(w);
     if sw == Ordering::Equal {
         return None;
@@ -415,7 +417,7 @@ mod tests {
             (2, 6),
             (0, 6),
         ]);
-        let pt = |x: i64, y: i64| Pt::new(Rational::from(x), Rational::from(y));
+        let pt = |x: i64, y: i64| QPoint::new(Rational::from(x), Rational::from(y));
         assert_eq!(pieces_inside(&pt(-1, 4), &pt(7, 4), &u), 2);
         assert_eq!(pieces_inside(&pt(-1, 1), &pt(7, 1), &u), 1);
         assert_eq!(pieces_inside(&pt(-1, 8), &pt(7, 8), &u), 0);
@@ -425,7 +427,7 @@ mod tests {
 
     #[test]
     fn meeting_edges_exclude_a_shared_end() {
-        let pt = |x: i64, y: i64| Pt::new(Rational::from(x), Rational::from(y));
+        let pt = |x: i64, y: i64| QPoint::new(Rational::from(x), Rational::from(y));
         let (a, b, c) = (pt(0, 0), pt(2, 0), pt(2, 2));
         assert!(!edges_meet((&a, &b), (&b, &c)));
         assert!(edges_meet((&a, &b), (&pt(1, -1), &pt(1, 1))));
@@ -436,7 +438,7 @@ mod tests {
 
     #[test]
     fn left_right_follows_def_4_2() {
-        let pt = |x: i64, y: i64| Pt::new(Rational::from(x), Rational::from(y));
+        let pt = |x: i64, y: i64| QPoint::new(Rational::from(x), Rational::from(y));
         // w below, a horizontal above it from (-2, 2) to (2, 2): its left
         // end seen from w is (-2, 2).
         let w = pt(0, 0);

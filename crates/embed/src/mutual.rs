@@ -26,12 +26,10 @@
 //! which the strict in-between samples find. Every "visible" answer comes
 //! with two exact points, re-checked by [`wai_exact::sees`].
 
-use crate::piece::{
-    cross, dot, offsets_between, projection, segments_meet, turn, Bounds, Parallel, Piece, Pt, Span,
-};
+use crate::piece::{offsets_between, projection, segments_meet, Bounds, Parallel, Piece, Span};
 use rug::{Integer, Rational};
 use std::cmp::Ordering;
-use wai_exact::{sees, Point};
+use wai_exact::{convex_hull, sees, turn, Point, QPoint};
 use wai_map::Map;
 
 /// The verdict of a mutual-visibility test.
@@ -39,7 +37,7 @@ use wai_map::Map;
 pub enum Mutual {
     /// `from` (of the first region) sees `to` (of the second), re-checked
     /// with [`wai_exact::sees`].
-    Visible { from: Pt, to: Pt },
+    Visible { from: QPoint, to: QPoint },
     /// No point of one sees a point of the other; `tested` sight lines
     /// (lines or rays) were examined to decide it.
     Invisible { tested: u64 },
@@ -55,7 +53,7 @@ impl Mutual {
 #[derive(Debug)]
 pub struct Sightlines<'m> {
     ring: &'m [Point],
-    points: Vec<Pt>,
+    points: Vec<QPoint>,
     reflex: Vec<bool>,
     /// By map edge: its line as homogeneous integer coefficients (the
     /// cross product of its ends), positive on its left (the inside).
@@ -63,7 +61,7 @@ pub struct Sightlines<'m> {
 }
 
 /// `(x, y, w)` with `w > 0` for a rational point.
-fn homogeneous(p: &Pt) -> [Integer; 3] {
+fn homogeneous(p: &QPoint) -> [Integer; 3] {
     let (xd, yd) = (p.x.denom(), p.y.denom());
     [
         Integer::from(p.x.numer() * yd),
@@ -88,89 +86,47 @@ fn side_of(l: &[Integer; 3], r: &[Integer; 3]) -> Ordering {
 }
 
 /// Directions `d` with `d.y > 0` or `d.y = 0, d.x > 0`: each line once.
-pub(crate) fn upper(d: Pt) -> Pt {
-    if d.y < 0 || (d.y == 0 && d.x < 0) {
-        Pt::new(-d.x, -d.y)
-    } else {
+pub(crate) fn upper(d: QPoint) -> QPoint {
+    if d.upper_half() {
         d
+    } else {
+        d.neg()
     }
-}
-
-/// Half-plane index for a full-circle angular order from direction (1, 0).
-pub(crate) fn half(d: &Pt) -> u8 {
-    u8::from(!(d.y > 0 || (d.y == 0 && d.x > 0)))
-}
-
-/// Counter-clockwise angular order of directions from (1, 0).
-fn by_angle(a: &Pt, b: &Pt) -> Ordering {
-    half(a).cmp(&half(b)).then_with(|| cross(b, a).cmp0())
 }
 
 /// The axis directions, added to every set of critical directions so that
 /// consecutive ones are less than a quarter turn apart and their sum lies
 /// strictly between them.
-pub(crate) fn axes() -> [Pt; 4] {
-    let v = |x: i32, y: i32| Pt::new(Rational::from(x), Rational::from(y));
+pub(crate) fn axes() -> [QPoint; 4] {
+    let v = |x: i32, y: i32| QPoint::new(Rational::from(x), Rational::from(y));
     [v(1, 0), v(0, 1), v(-1, 0), v(0, -1)]
 }
 
 /// Sorted, deduplicated by angle; consecutive pairs (cyclically) give
 /// the directions strictly between them as sums.
-pub(crate) fn between(mut dirs: Vec<Pt>) -> Vec<Pt> {
-    dirs.sort_by(by_angle);
-    dirs.dedup_by(|a, b| by_angle(a, b) == Ordering::Equal);
+pub(crate) fn between(mut dirs: Vec<QPoint>) -> Vec<QPoint> {
+    dirs.sort_by(QPoint::compare_angle);
+    dirs.dedup_by(|a, b| a.compare_angle(b) == Ordering::Equal);
     (0..dirs.len())
         .map(|i| dirs[i].add(&dirs[(i + 1) % dirs.len()]))
         .collect()
 }
 
-/// The convex hull of `pts` (closed), counter-clockwise, collinear points
-/// dropped; fewer than three points for a degenerate hull.
-pub(crate) fn hull(mut pts: Vec<Pt>) -> Vec<Pt> {
-    pts.sort();
-    pts.dedup();
-    if pts.len() < 3 {
-        return pts;
-    }
-    let mut lower: Vec<Pt> = Vec::new();
-    for p in &pts {
-        while lower.len() >= 2
-            && turn(&lower[lower.len() - 2], &lower[lower.len() - 1], p) != Ordering::Greater
-        {
-            lower.pop();
-        }
-        lower.push(p.clone());
-    }
-    let mut upper_: Vec<Pt> = Vec::new();
-    for p in pts.iter().rev() {
-        while upper_.len() >= 2
-            && turn(&upper_[upper_.len() - 2], &upper_[upper_.len() - 1], p) != Ordering::Greater
-        {
-            upper_.pop();
-        }
-        upper_.push(p.clone());
-    }
-    lower.pop();
-    upper_.pop();
-    lower.extend(upper_);
-    lower
-}
-
 /// A closed cone of directions from `lo` counter-clockwise to `hi`, less
 /// than a half turn wide.
 struct Cone {
-    lo: Pt,
-    hi: Pt,
+    lo: QPoint,
+    hi: QPoint,
 }
 
 impl Cone {
-    fn holds(&self, d: &Pt) -> bool {
-        cross(&self.lo, d) >= 0 && cross(d, &self.hi) >= 0
+    fn holds(&self, d: &QPoint) -> bool {
+        self.lo.cross_sign(d) != Ordering::Less && d.cross_sign(&self.hi) != Ordering::Less
     }
 
     /// Whether the line of direction `d` has a direction in the cone.
-    fn holds_line(&self, d: &Pt) -> bool {
-        self.holds(d) || self.holds(&Pt::new(Rational::from(-&d.x), Rational::from(-&d.y)))
+    fn holds_line(&self, d: &QPoint) -> bool {
+        self.holds(d) || self.holds(&QPoint::new(Rational::from(-&d.x), Rational::from(-&d.y)))
     }
 }
 
@@ -178,7 +134,7 @@ impl Cone {
 /// open half-plane (else `None`: every direction may matter). Grown one
 /// vector at a time: a vector that cannot extend the cone on either side
 /// within a half turn proves the vectors span a half turn or more.
-fn cone(vs: impl IntoIterator<Item = Pt>) -> Option<Cone> {
+fn cone(vs: impl IntoIterator<Item = QPoint>) -> Option<Cone> {
     let mut vs = vs.into_iter();
     let first = vs.next()?;
     if first.is_zero() {
@@ -195,9 +151,10 @@ fn cone(vs: impl IntoIterator<Item = Pt>) -> Option<Cone> {
         if c.holds(&v) {
             continue;
         }
-        if cross(&c.hi, &v) > 0 && cross(&c.lo, &v) > 0 {
+        let left = |u: &QPoint, w: &QPoint| u.cross_sign(w) == Ordering::Greater;
+        if left(&c.hi, &v) && left(&c.lo, &v) {
             c.hi = v;
-        } else if cross(&v, &c.lo) > 0 && cross(&v, &c.hi) > 0 {
+        } else if left(&v, &c.lo) && left(&v, &c.hi) {
             c.lo = v;
         } else {
             return None;
@@ -206,8 +163,9 @@ fn cone(vs: impl IntoIterator<Item = Pt>) -> Option<Cone> {
     Some(c)
 }
 
-/// Whether `p` lies in the closed convex hull `h` (as [`hull`] returns it).
-fn in_hull(h: &[Pt], p: &Pt) -> bool {
+/// Whether `p` lies in the closed convex hull `h` (as [`convex_hull`]
+/// returns it).
+fn in_hull(h: &[QPoint], p: &QPoint) -> bool {
     match h.len() {
         0 => false,
         1 => h[0] == *p,
@@ -217,7 +175,7 @@ fn in_hull(h: &[Pt], p: &Pt) -> bool {
 }
 
 /// Whether the closed segment `ab` meets the closed convex hull `h`.
-fn segment_meets_hull(h: &[Pt], a: &Pt, b: &Pt) -> bool {
+fn segment_meets_hull(h: &[QPoint], a: &QPoint, b: &QPoint) -> bool {
     if in_hull(h, a) || in_hull(h, b) {
         return true;
     }
@@ -248,18 +206,18 @@ impl<'m> Sightlines<'m> {
             .collect();
         Sightlines {
             ring,
-            points: ring.iter().map(|&p| Pt::from(p)).collect(),
+            points: ring.iter().map(|&p| QPoint::from(p)).collect(),
             reflex,
             lines,
         }
     }
 
-    fn edge(&self, i: usize) -> (&Pt, &Pt) {
+    fn edge(&self, i: usize) -> (&QPoint, &QPoint) {
         (&self.points[i], &self.points[(i + 1) % self.points.len()])
     }
 
     /// The map edges that meet the closed hull `h`.
-    fn edges_near(&self, h: &[Pt]) -> Vec<usize> {
+    fn edges_near(&self, h: &[QPoint]) -> Vec<usize> {
         let b = Bounds::of(h);
         (0..self.points.len())
             .filter(|&i| {
@@ -270,7 +228,7 @@ impl<'m> Sightlines<'m> {
     }
 
     /// The reflex map vertices in the closed hull `h`.
-    fn reflex_in(&self, h: &[Pt]) -> Vec<Pt> {
+    fn reflex_in(&self, h: &[QPoint]) -> Vec<QPoint> {
         let b = Bounds::of(h);
         (0..self.points.len())
             .filter(|&i| {
@@ -289,7 +247,7 @@ impl<'m> Sightlines<'m> {
     /// line `a × b`, and each map edge's line from its integer ends. Only
     /// a test with a zero sign (an end on the other's line) takes the
     /// rational path.
-    fn clear(&self, edges: &[usize], a: &Pt, b: &Pt) -> bool {
+    fn clear(&self, edges: &[usize], a: &QPoint, b: &QPoint) -> bool {
         let (ha, hb) = (homogeneous(a), homogeneous(b));
         let l = line_through(&ha, &hb);
         edges.iter().all(|&i| {
@@ -318,7 +276,7 @@ impl<'m> Sightlines<'m> {
     }
 
     /// The certificate, re-checked by the reference predicate.
-    fn certify(&self, from: Pt, to: Pt) -> Mutual {
+    fn certify(&self, from: QPoint, to: QPoint) -> Mutual {
         assert!(
             sees(self.ring, &from.to_rat_point(), &to.to_rat_point()).is_visible(),
             "a sight line found between {from} and {to} is blocked: a bug in the mutual-visibility search"
@@ -341,7 +299,7 @@ impl<'m> Sightlines<'m> {
     /// One pair of pieces, by the search over lines.
     pub fn by_lines(&self, a: &Piece, b: &Piece) -> Mutual {
         let (va, vb) = (a.vertices(), b.vertices());
-        let h = hull(va.iter().chain(&vb).cloned().collect());
+        let h = convex_hull(va.iter().chain(&vb).cloned().collect());
         let edges = self.edges_near(&h);
         if let (Piece::Point(p), Piece::Point(q)) = (a, b) {
             return if self.clear(&edges, p, q) {
@@ -359,7 +317,7 @@ impl<'m> Sightlines<'m> {
         // A convex map vertex is no event: a stretch passing near it on
         // either side is blocked (it crosses both edges at the vertex, or
         // runs outside the map).
-        let mut e: Vec<Pt> = va.iter().chain(&vb).cloned().collect();
+        let mut e: Vec<QPoint> = va.iter().chain(&vb).cloned().collect();
         e.extend(self.reflex_in(&h));
         e.sort();
         e.dedup();
@@ -372,7 +330,7 @@ impl<'m> Sightlines<'m> {
         // Only directions of lines that can meet both pieces matter: those
         // of the vectors from A to B, a cone when the pieces are apart.
         let cone = cone(va.iter().flat_map(|x| vb.iter().map(move |y| y.sub(x))));
-        let mut dirs: Vec<Pt> = axes().to_vec();
+        let mut dirs: Vec<QPoint> = axes().to_vec();
         for (i, x) in e.iter().enumerate() {
             for y in &e[i + 1..] {
                 if fixed.as_ref().is_some_and(|f| f != x && f != y) {
@@ -385,13 +343,16 @@ impl<'m> Sightlines<'m> {
             }
         }
         // Lines, not rays: half the circle.
-        let tests: Vec<Pt> = between(dirs).into_iter().filter(|d| half(d) == 0).collect();
+        let tests: Vec<QPoint> = between(dirs)
+            .into_iter()
+            .filter(QPoint::upper_half)
+            .collect();
         let mut tested = 0;
         for d in tests {
             let n = d.perp();
             let ((alo, ahi), (blo, bhi)) = (projection(&n, &va), projection(&n, &vb));
             let offsets: Vec<Rational> = if let Some(f) = &fixed {
-                let u = dot(&n, f);
+                let u = n.dot(f);
                 let other = if matches!(a, Piece::Point(_)) {
                     (&blo, &bhi)
                 } else {
@@ -424,7 +385,7 @@ impl<'m> Sightlines<'m> {
     /// Whether the line `p0 + t·d` carries a sight line from `a` to `b`:
     /// it meets both, and the closed stretch between them misses the
     /// boundary edges `edges` (the pieces lie in the open map).
-    fn on_line(&self, edges: &[usize], a: &Piece, b: &Piece, p0: &Pt, d: &Pt) -> Mutual {
+    fn on_line(&self, edges: &[usize], a: &Piece, b: &Piece, p0: &QPoint, d: &QPoint) -> Mutual {
         self.stretch(edges, a, b, a.span(p0, d), b.span(p0, d), p0, d)
     }
 
@@ -437,8 +398,8 @@ impl<'m> Sightlines<'m> {
         b: &Piece,
         sa: Option<Span>,
         sb: Option<Span>,
-        p0: &Pt,
-        d: &Pt,
+        p0: &QPoint,
+        d: &QPoint,
     ) -> Mutual {
         let (Some(sa), Some(sb)) = (sa, sb) else {
             return Mutual::Invisible { tested: 1 };
@@ -460,8 +421,8 @@ impl<'m> Sightlines<'m> {
 
     /// One pair of pieces, by cutting `a` and sweeping from points.
     pub fn by_points(&self, a: &Piece, b: &Piece) -> Mutual {
-        let h = hull(a.vertices().into_iter().chain(b.vertices()).collect());
-        let mut e: Vec<Pt> = b.vertices();
+        let h = convex_hull(a.vertices().into_iter().chain(b.vertices()).collect());
+        let mut e: Vec<QPoint> = b.vertices();
         e.extend(self.reflex_in(&h));
         e.sort();
         e.dedup();
@@ -492,16 +453,16 @@ impl<'m> Sightlines<'m> {
     /// Does the point `w` (in the open map) see some point of `b`? Rays
     /// from `w` strictly between consecutive directions towards `b`'s
     /// vertices and the reflex map vertices in the hull.
-    pub fn from_point(&self, w: &Pt, b: &Piece) -> Mutual {
-        let h = hull(b.vertices().into_iter().chain([w.clone()]).collect());
+    pub fn from_point(&self, w: &QPoint, b: &Piece) -> Mutual {
+        let h = convex_hull(b.vertices().into_iter().chain([w.clone()]).collect());
         self.sweep(w, b, &self.edges_near(&h), &self.reflex_in(&h))
     }
 
     /// [`Sightlines::from_point`] with the map edges and reflex vertices
     /// of a hull that contains `w` and `b` (more than needed is harmless:
     /// more directions are tested).
-    fn sweep(&self, w: &Pt, b: &Piece, edges: &[usize], reflex: &[Pt]) -> Mutual {
-        let h = hull(b.vertices().into_iter().chain([w.clone()]).collect());
+    fn sweep(&self, w: &QPoint, b: &Piece, edges: &[usize], reflex: &[QPoint]) -> Mutual {
+        let h = convex_hull(b.vertices().into_iter().chain([w.clone()]).collect());
         if let Piece::Point(q) = b {
             return if self.clear(edges, w, q) {
                 self.certify(w.clone(), q.clone())
@@ -513,7 +474,7 @@ impl<'m> Sightlines<'m> {
             // `w` on the line of segment `b`: only along it.
             return self.on_line(edges, &Piece::Point(w.clone()), b, w, &h[1].sub(&h[0]));
         }
-        let mut dirs: Vec<Pt> = axes().to_vec();
+        let mut dirs: Vec<QPoint> = axes().to_vec();
         dirs.extend(b.vertices().iter().map(|p| p.sub(w)));
         dirs.extend(reflex.iter().map(|p| p.sub(w)));
         dirs.retain(|d| !d.is_zero());
@@ -573,21 +534,21 @@ fn all_pairs(a: &[Piece], b: &[Piece], test: impl Fn(&Piece, &Piece) -> Mutual) 
 
 /// The least `t > 0` at which the ray `w + t·d` meets the closed segment
 /// `ce`, if any.
-fn ray_hit(w: &Pt, d: &Pt, c: &Pt, e: &Pt) -> Option<Rational> {
+fn ray_hit(w: &QPoint, d: &QPoint, c: &QPoint, e: &QPoint) -> Option<Rational> {
     let f = e.sub(c);
-    let den = cross(d, &f);
+    let den = d.cross(&f);
     let r = c.sub(w);
     if den == 0 {
-        if cross(&r, d) != 0 {
+        if r.cross_sign(d) != Ordering::Equal {
             return None;
         }
-        let dd = dot(d, d);
-        let (tc, te) = (dot(&r, d) / &dd, dot(&e.sub(w), d) / dd);
+        let dd = d.dot(d);
+        let (tc, te) = (r.dot(d) / &dd, e.sub(w).dot(d) / dd);
         let lo = tc.min(te);
         return (lo > 0).then_some(lo);
     }
     // w + t·d = c + s·f: t = (r × f)/(d × f), s = (r × d)/(d × f).
-    let t = cross(&r, &f) / &den;
-    let s = cross(&r, d) / den;
+    let t = r.cross(&f) / &den;
+    let s = r.cross(d) / den;
     (t > 0 && (0..=1).contains(&s)).then_some(t)
 }

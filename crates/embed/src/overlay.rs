@@ -1,9 +1,10 @@
 //! Common interior points of several simple polygons, exactly: the
 //! question behind Lemma 4.1 ("embeddings that all overlap in one point").
 
-use crate::piece::{segment_cuts, Pt};
+use crate::piece::segment_cuts;
 use crate::witness::{locate, Locus};
 use rug::Rational;
+use wai_exact::QPoint;
 
 /// A point in the interior of every polygon of `polygons` (simple,
 /// counter-clockwise), if their interiors share one.
@@ -14,8 +15,8 @@ use rug::Rational;
 /// line the faces of the overlay are the intervals between consecutive
 /// edge crossings; the middle of each is tested. Every face of the
 /// overlay meets some slab's middle line.
-pub fn common_interior_point(polygons: &[Vec<Pt>]) -> Option<Pt> {
-    let edges: Vec<(usize, &Pt, &Pt)> = polygons
+pub fn common_interior_point(polygons: &[Vec<QPoint>]) -> Option<QPoint> {
+    let edges: Vec<(usize, &QPoint, &QPoint)> = polygons
         .iter()
         .enumerate()
         .flat_map(|(k, p)| (0..p.len()).map(move |i| (k, &p[i], &p[(i + 1) % p.len()])))
@@ -46,7 +47,7 @@ pub fn common_interior_point(polygons: &[Vec<Pt>]) -> Option<Pt> {
         ys.sort();
         ys.dedup();
         for v in ys.windows(2) {
-            let p = Pt::new(xm.clone(), Rational::from(&v[0] + &v[1]) / 2u32);
+            let p = QPoint::new(xm.clone(), Rational::from(&v[0] + &v[1]) / 2u32);
             if polygons
                 .iter()
                 .all(|q| matches!(locate(q, &p), Locus::Inside))

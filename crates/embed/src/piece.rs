@@ -1,125 +1,15 @@
 //! Relatively open convex pieces of the plane — the cells of the
 //! decomposition of dimension 0, 1 and 2 — and where a line meets them,
-//! exactly (GMP rationals).
+//! exactly, on [`wai_exact::QPoint`]s (GMP rationals).
 
 use rug::Rational;
 use std::cmp::Ordering;
-use wai_exact::{Point, RatPoint};
-
-/// A point with rational coordinates, in affine form.
-#[derive(Clone, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
-pub struct Pt {
-    pub x: Rational,
-    pub y: Rational,
-}
-
-impl Pt {
-    pub fn new(x: Rational, y: Rational) -> Pt {
-        Pt { x, y }
-    }
-
-    pub fn sub(&self, o: &Pt) -> Pt {
-        Pt::new(
-            Rational::from(&self.x - &o.x),
-            Rational::from(&self.y - &o.y),
-        )
-    }
-
-    pub fn add(&self, o: &Pt) -> Pt {
-        Pt::new(
-            Rational::from(&self.x + &o.x),
-            Rational::from(&self.y + &o.y),
-        )
-    }
-
-    pub fn scale(&self, t: &Rational) -> Pt {
-        Pt::new(Rational::from(&self.x * t), Rational::from(&self.y * t))
-    }
-
-    /// `p + t·d`.
-    pub fn along(&self, d: &Pt, t: &Rational) -> Pt {
-        self.add(&d.scale(t))
-    }
-
-    /// The vector turned a quarter counter-clockwise.
-    pub fn perp(&self) -> Pt {
-        Pt::new(Rational::from(-&self.y), self.x.clone())
-    }
-
-    pub fn is_zero(&self) -> bool {
-        self.x == 0 && self.y == 0
-    }
-
-    pub fn to_rat_point(&self) -> RatPoint {
-        // x = a/b, y = c/d → (a·d, c·b, b·d).
-        let (a, b) = (self.x.numer(), self.x.denom());
-        let (c, d) = (self.y.numer(), self.y.denom());
-        RatPoint::new(
-            rug::Integer::from(a * d),
-            rug::Integer::from(c * b),
-            rug::Integer::from(b * d),
-        )
-        .expect("denominators are positive")
-    }
-}
-
-impl From<&RatPoint> for Pt {
-    fn from(p: &RatPoint) -> Pt {
-        Pt::new(
-            Rational::from((p.hx().clone(), p.hw().clone())),
-            Rational::from((p.hy().clone(), p.hw().clone())),
-        )
-    }
-}
-
-impl From<Point> for Pt {
-    fn from(p: Point) -> Pt {
-        Pt::new(Rational::from(p.x), Rational::from(p.y))
-    }
-}
-
-impl std::fmt::Display for Pt {
-    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        write!(f, "({}, {})", self.x, self.y)
-    }
-}
-
-/// `u × w`.
-pub fn cross(u: &Pt, w: &Pt) -> Rational {
-    Rational::from(&u.x * &w.y) - Rational::from(&u.y * &w.x)
-}
-
-/// `u · w`.
-pub fn dot(u: &Pt, w: &Pt) -> Rational {
-    Rational::from(&u.x * &w.x) + Rational::from(&u.y * &w.y)
-}
-
-/// The sign of `(b − a) × (c − a)`: `Greater` for a left turn.
-pub fn turn(a: &Pt, b: &Pt, c: &Pt) -> Ordering {
-    // Integer points below 2^62 (map vertices, skeleton polygons): the
-    // differences fit 63 bits and their products an i128, exactly.
-    let small = |q: &Rational| -> Option<i128> {
-        if *q.denom() != 1 {
-            return None;
-        }
-        q.numer()
-            .to_i64()
-            .filter(|v| v.unsigned_abs() < 1 << 62)
-            .map(i128::from)
-    };
-    let fast = || -> Option<Ordering> {
-        let (ax, ay) = (small(&a.x)?, small(&a.y)?);
-        let (bx, by) = (small(&b.x)?, small(&b.y)?);
-        let (cx, cy) = (small(&c.x)?, small(&c.y)?);
-        Some(((bx - ax) * (cy - ay) - (by - ay) * (cx - ax)).cmp(&0))
-    };
-    fast().unwrap_or_else(|| cross(&b.sub(a), &c.sub(a)).cmp0())
-}
+use wai_exact::{turn, QPoint};
 
 /// Whether the closed segments `ab` and `cd` share a point.
-pub fn segments_meet(a: &Pt, b: &Pt, c: &Pt, d: &Pt) -> bool {
+pub fn segments_meet(a: &QPoint, b: &QPoint, c: &QPoint, d: &QPoint) -> bool {
     // Boxes first: comparisons only, no arithmetic.
-    let apart = |f: fn(&Pt) -> &Rational| {
+    let apart = |f: fn(&QPoint) -> &Rational| {
         let (lo1, hi1) = if f(a) <= f(b) {
             (f(a), f(b))
         } else {
@@ -137,7 +27,7 @@ pub fn segments_meet(a: &Pt, b: &Pt, c: &Pt, d: &Pt) -> bool {
     }
     let (o1, o2) = (turn(a, b, c), turn(a, b, d));
     let (o3, o4) = (turn(c, d, a), turn(c, d, b));
-    let within = |p: &Pt, q: &Pt, x: &Pt| {
+    let within = |p: &QPoint, q: &QPoint, x: &QPoint| {
         let box1 = |u: &Rational, v: &Rational, w: &Rational| u.min(v) <= w && w <= u.max(v);
         box1(&p.x, &q.x, &x.x) && box1(&p.y, &q.y, &x.y)
     };
@@ -156,28 +46,32 @@ pub fn segments_meet(a: &Pt, b: &Pt, c: &Pt, d: &Pt) -> bool {
 /// The parameters `t ∈ [0, 1]` of the points `a + t·(b − a)` where the
 /// closed segment `ce` meets `ab`: its crossing point, or, when the two
 /// overlap along a line, the ends of `ce` that lie on `ab`.
-pub fn segment_cuts(a: &Pt, b: &Pt, c: &Pt, e: &Pt) -> Vec<Rational> {
+pub fn segment_cuts(a: &QPoint, b: &QPoint, c: &QPoint, e: &QPoint) -> Vec<Rational> {
     if !segments_meet(a, b, c, e) {
         return Vec::new();
     }
     let d = b.sub(a);
     let f = e.sub(c);
-    let den = cross(&d, &f);
+    let den = d.cross(&f);
     if den == 0 {
-        let dd = dot(&d, &d);
+        let dd = d.dot(&d);
         return [c, e]
             .into_iter()
-            .map(|x| dot(&x.sub(a), &d) / &dd)
+            .map(|x| x.sub(a).dot(&d) / &dd)
             .filter(|t| *t >= 0 && *t <= 1)
             .collect();
     }
     // a + t·d = c + s·f: t = ((c − a) × f)/(d × f).
-    vec![cross(&c.sub(a), &f) / den]
+    vec![c.sub(a).cross(&f) / den]
 }
 
-/// The convex hull of `pts`, counter-clockwise, collinear points dropped.
-pub fn convex_hull(pts: Vec<Pt>) -> Vec<Pt> {
-    crate::mutual::hull(pts)
+/// The convex hull of `pts` ([`wai_exact::convex_hull`]), re-exported for
+/// the crates that name it here.
+pub use wai_exact::convex_hull;
+
+/// `u · w` ([`QPoint::dot`]), for the crates that name it here.
+pub fn dot(u: &QPoint, w: &QPoint) -> Rational {
+    u.dot(w)
 }
 
 /// The parameters `t` with `α + t·β > 0` for every `(α, β)` given, an open
@@ -210,9 +104,9 @@ fn open_span(constraints: impl Iterator<Item = (Rational, Rational)>) -> Option<
 }
 
 /// Points with small integer coordinates (for tests and figures).
-pub fn ints(pts: &[(i64, i64)]) -> Vec<Pt> {
+pub fn ints(pts: &[(i64, i64)]) -> Vec<QPoint> {
     pts.iter()
-        .map(|&(x, y)| Pt::new(Rational::from(x), Rational::from(y)))
+        .map(|&(x, y)| QPoint::new(Rational::from(x), Rational::from(y)))
         .collect()
 }
 
@@ -225,9 +119,11 @@ pub struct Bounds {
 }
 
 impl Bounds {
-    pub fn of(pts: &[Pt]) -> Bounds {
-        let min = |f: fn(&Pt) -> &Rational| pts.iter().map(f).min().cloned().unwrap_or_default();
-        let max = |f: fn(&Pt) -> &Rational| pts.iter().map(f).max().cloned().unwrap_or_default();
+    pub fn of(pts: &[QPoint]) -> Bounds {
+        let min =
+            |f: fn(&QPoint) -> &Rational| pts.iter().map(f).min().cloned().unwrap_or_default();
+        let max =
+            |f: fn(&QPoint) -> &Rational| pts.iter().map(f).max().cloned().unwrap_or_default();
         Bounds {
             lo: (min(|p| &p.x), min(|p| &p.y)),
             hi: (max(|p| &p.x), max(|p| &p.y)),
@@ -240,7 +136,7 @@ impl Bounds {
     }
 
     /// False only if the closed segment `ab` surely misses the box.
-    pub fn meets(&self, a: &Pt, b: &Pt) -> bool {
+    pub fn meets(&self, a: &QPoint, b: &QPoint) -> bool {
         let (xl, xh) = if a.x <= b.x {
             (&a.x, &b.x)
         } else {
@@ -256,8 +152,8 @@ impl Bounds {
 }
 
 /// The least and greatest of `n · v` over `vertices`.
-pub fn projection(n: &Pt, vertices: &[Pt]) -> (Rational, Rational) {
-    let proj: Vec<Rational> = vertices.iter().map(|v| dot(n, v)).collect();
+pub fn projection(n: &QPoint, vertices: &[QPoint]) -> (Rational, Rational) {
+    let proj: Vec<Rational> = vertices.iter().map(|v| n.dot(v)).collect();
     (
         proj.iter().min().cloned().unwrap_or_default(),
         proj.iter().max().cloned().unwrap_or_default(),
@@ -267,10 +163,15 @@ pub fn projection(n: &Pt, vertices: &[Pt]) -> (Rational, Rational) {
 /// Offsets strictly between `lo` and `hi` and between any two consecutive
 /// projections `n · p` of the points `e` that fall between them: one per
 /// open slab of parallel lines of normal `n`.
-pub(crate) fn offsets_between(e: &[Pt], n: &Pt, lo: Rational, hi: Rational) -> Vec<Rational> {
+pub(crate) fn offsets_between(
+    e: &[QPoint],
+    n: &QPoint,
+    lo: Rational,
+    hi: Rational,
+) -> Vec<Rational> {
     let mut cuts: Vec<Rational> = e
         .iter()
-        .map(|p| dot(n, p))
+        .map(|p| n.dot(p))
         .filter(|u| lo < *u && *u < hi)
         .collect();
     cuts.push(lo);
@@ -286,12 +187,12 @@ pub(crate) fn offsets_between(e: &[Pt], n: &Pt, lo: Rational, hi: Rational) -> V
 /// or 2 (its points; the boundary of a segment or polygon excluded).
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub enum Piece {
-    Point(Pt),
+    Point(QPoint),
     /// The open segment between two distinct points.
-    Segment(Pt, Pt),
+    Segment(QPoint, QPoint),
     /// The interior of a convex polygon, counter-clockwise, with positive
     /// area (vertices where the boundary goes straight on allowed).
-    Polygon(Vec<Pt>),
+    Polygon(Vec<QPoint>),
 }
 
 /// Where a line `p0 + t·d` meets a piece: the parameters `t` of its points.
@@ -324,7 +225,7 @@ impl Span {
 impl Piece {
     /// The piece's vertices (its closure's extreme points and any
     /// straight-on polygon vertices).
-    pub fn vertices(&self) -> Vec<Pt> {
+    pub fn vertices(&self) -> Vec<QPoint> {
         match self {
             Piece::Point(p) => vec![p.clone()],
             Piece::Segment(a, b) => vec![a.clone(), b.clone()],
@@ -343,12 +244,12 @@ impl Piece {
 
     /// A point of the piece: the point, the segment's midpoint, the
     /// polygon's vertex centroid (inside: the polygon is convex).
-    pub fn inner_point(&self) -> Pt {
+    pub fn inner_point(&self) -> QPoint {
         match self {
             Piece::Point(p) => p.clone(),
             Piece::Segment(a, b) => a.add(b).scale(&Rational::from((1, 2))),
             Piece::Polygon(v) => {
-                let mut s = Pt::new(Rational::new(), Rational::new());
+                let mut s = QPoint::new(Rational::new(), Rational::new());
                 for p in v {
                     s = s.add(p);
                 }
@@ -358,29 +259,29 @@ impl Piece {
     }
 
     /// Where the line `p0 + t·d` (`d ≠ 0`) meets the piece, if it does.
-    pub fn span(&self, p0: &Pt, d: &Pt) -> Option<Span> {
+    pub fn span(&self, p0: &QPoint, d: &QPoint) -> Option<Span> {
         match self {
             Piece::Point(c) => {
                 let r = c.sub(p0);
-                (cross(&r, d) == 0).then(|| Span::At(dot(&r, d) / dot(d, d)))
+                (r.cross_sign(d) == Ordering::Equal).then(|| Span::At(r.dot(d) / d.dot(d)))
             }
             Piece::Segment(a, b) => {
                 let e = b.sub(a);
                 let r = p0.sub(a);
-                let den = cross(&e, d);
+                let den = e.cross(d);
                 if den == 0 {
-                    if cross(&r, d) != 0 {
+                    if r.cross_sign(d) != Ordering::Equal {
                         return None;
                     }
-                    let dd = dot(d, d);
-                    let ta = dot(&a.sub(p0), d) / &dd;
-                    let tb = dot(&b.sub(p0), d) / dd;
+                    let dd = d.dot(d);
+                    let ta = a.sub(p0).dot(d) / &dd;
+                    let tb = b.sub(p0).dot(d) / dd;
                     let (lo, hi) = if ta < tb { (ta, tb) } else { (tb, ta) };
                     return Some(Span::Open(lo, hi));
                 }
                 // p0 + t·d = a + s·e: s = (r × d)/(e × d), t = (r × e)/(e × d).
-                let s = cross(&r, d) / &den;
-                (s > 0 && s < 1).then(|| Span::At(cross(&r, &e) / den))
+                let s = r.cross(d) / &den;
+                (s > 0 && s < 1).then(|| Span::At(r.cross(&e) / den))
             }
             Piece::Polygon(v) => {
                 // Inside: left of every edge a→b, (b − a) × (p0 + t·d − a) > 0,
@@ -388,7 +289,7 @@ impl Piece {
                 open_span((0..v.len()).map(|i| {
                     let (a, b) = (&v[i], &v[(i + 1) % v.len()]);
                     let e = b.sub(a);
-                    (cross(&e, &p0.sub(a)), cross(&e, d))
+                    (e.cross(&p0.sub(a)), e.cross(d))
                 }))
             }
         }
@@ -398,8 +299,8 @@ impl Piece {
     /// one, if it crosses its relative interior; otherwise `None`. The
     /// points on the line itself are left out (they form a piece of lower
     /// dimension, which the caller needs only when it matters).
-    pub fn split(&self, a: &Pt, b: &Pt) -> Option<(Piece, Piece)> {
-        let side = |p: &Pt| turn(a, b, p);
+    pub fn split(&self, a: &QPoint, b: &QPoint) -> Option<(Piece, Piece)> {
+        let side = |p: &QPoint| turn(a, b, p);
         match self {
             Piece::Point(_) => None,
             Piece::Segment(p, q) => {
@@ -445,12 +346,10 @@ impl Piece {
     }
 
     /// Whether `x` is a point of the piece.
-    pub fn contains(&self, x: &Pt) -> bool {
+    pub fn contains(&self, x: &QPoint) -> bool {
         match self {
             Piece::Point(p) => p == x,
-            Piece::Segment(a, b) => {
-                turn(a, b, x) == Ordering::Equal && dot(&a.sub(x), &b.sub(x)) < 0
-            }
+            Piece::Segment(a, b) => turn(a, b, x) == Ordering::Equal && a.sub(x).dot(&b.sub(x)) < 0,
             Piece::Polygon(v) => {
                 (0..v.len()).all(|i| turn(&v[i], &v[(i + 1) % v.len()], x) == Ordering::Greater)
             }
@@ -459,7 +358,7 @@ impl Piece {
 
     /// A point that this piece and `o` share, if they share one. Exact and
     /// complete: each piece is relatively open and convex.
-    pub fn common_point(&self, o: &Piece) -> Option<Pt> {
+    pub fn common_point(&self, o: &Piece) -> Option<QPoint> {
         match (self, o) {
             (Piece::Point(p), _) => o.contains(p).then(|| p.clone()),
             (_, Piece::Point(p)) => self.contains(p).then(|| p.clone()),
@@ -484,7 +383,7 @@ impl Piece {
 
     /// The part of the piece strictly on side `side` (`Greater`: left) of
     /// the line through `a` and `b`, if any.
-    pub fn clip(&self, a: &Pt, b: &Pt, side: Ordering) -> Option<Piece> {
+    pub fn clip(&self, a: &QPoint, b: &QPoint, side: Ordering) -> Option<Piece> {
         debug_assert_ne!(side, Ordering::Equal);
         if let Some((l, r)) = self.split(a, b) {
             return Some(if side == Ordering::Greater { l } else { r });
@@ -495,7 +394,7 @@ impl Piece {
 }
 
 /// A point of the open segment `ab` in the piece `o`, if any.
-fn segment_common(a: &Pt, b: &Pt, o: &Piece) -> Option<Pt> {
+fn segment_common(a: &QPoint, b: &QPoint, o: &Piece) -> Option<QPoint> {
     let d = b.sub(a);
     let t = match o.span(a, &d)? {
         Span::At(t) => (t > 0 && t < 1).then_some(t)?,
@@ -517,23 +416,23 @@ fn segment_common(a: &Pt, b: &Pt, o: &Piece) -> Option<Pt> {
 #[derive(Debug)]
 pub struct Parallel<'p> {
     piece: &'p Piece,
-    d: Pt,
-    n: Pt,
+    d: QPoint,
+    n: QPoint,
     nn: Rational,
     /// Polygons only: by edge `(k, c, β)`.
     edges: Vec<(Rational, Rational, Rational)>,
 }
 
 impl<'p> Parallel<'p> {
-    pub fn new(piece: &'p Piece, d: &Pt) -> Parallel<'p> {
+    pub fn new(piece: &'p Piece, d: &QPoint) -> Parallel<'p> {
         let n = d.perp();
-        let nn = dot(&n, &n);
+        let nn = n.dot(&n);
         let edges = match piece {
             Piece::Polygon(v) => (0..v.len())
                 .map(|i| {
                     let (a, b) = (&v[i], &v[(i + 1) % v.len()]);
                     let e = b.sub(a);
-                    (cross(&e, &n) / &nn, cross(&e, a), cross(&e, d))
+                    (e.cross(&n) / &nn, e.cross(a), e.cross(d))
                 })
                 .collect(),
             _ => Vec::new(),
@@ -548,7 +447,7 @@ impl<'p> Parallel<'p> {
     }
 
     /// The base point `p0(u)` of the line of offset `u`.
-    pub fn base(&self, u: &Rational) -> Pt {
+    pub fn base(&self, u: &Rational) -> QPoint {
         self.n.scale(&Rational::from(u / &self.nn))
     }
 
@@ -569,7 +468,7 @@ impl<'p> Parallel<'p> {
 /// points) cut `pieces`: across a part no point crosses a line, so
 /// whatever depends only on sides of those lines is the same at all its
 /// points. Points on a line are left out (see [`Piece::split`]).
-pub fn part_points(pieces: &[Piece], lines: &[(Pt, Pt)]) -> Vec<Pt> {
+pub fn part_points(pieces: &[Piece], lines: &[(QPoint, QPoint)]) -> Vec<QPoint> {
     let mut parts: Vec<Piece> = pieces.to_vec();
     for (a, b) in lines {
         parts = parts
@@ -586,10 +485,10 @@ pub fn part_points(pieces: &[Piece], lines: &[(Pt, Pt)]) -> Vec<Pt> {
 /// Where segment `pq` meets the line through `a` and `b` (they cross).
 /// Where the line through `p` and `q` meets the line through `a` and `b`
 /// (which must not be parallel).
-pub(crate) fn line_cut(p: &Pt, q: &Pt, a: &Pt, b: &Pt) -> Pt {
+pub(crate) fn line_cut(p: &QPoint, q: &QPoint, a: &QPoint, b: &QPoint) -> QPoint {
     let e = b.sub(a);
-    let cp = cross(&e, &p.sub(a));
-    let cq = cross(&e, &q.sub(a));
+    let cp = e.cross(&p.sub(a));
+    let cq = e.cross(&q.sub(a));
     let s = &cp / Rational::from(&cp - &cq);
     p.along(&q.sub(p), &s)
 }
@@ -598,7 +497,7 @@ pub(crate) fn line_cut(p: &Pt, q: &Pt, a: &Pt, b: &Pt) -> Pt {
 mod tests {
     use super::*;
 
-    fn pt(x: i64, y: i64) -> Pt {
+    fn pt(x: i64, y: i64) -> QPoint {
         ints(&[(x, y)]).remove(0)
     }
 

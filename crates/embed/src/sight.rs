@@ -1,8 +1,8 @@
 //! The part of a map edge that a map vertex sees (sec. 2.2), exactly.
 
-use rug::{Integer, Rational};
+use rug::Rational;
 use std::cmp::Ordering;
-use wai_exact::Point;
+use wai_exact::{BigVector, Point};
 use wai_map::Map;
 
 /// The points of map edge `e` (from `v[e]` to `v[e + 1]`) that map vertex
@@ -26,13 +26,9 @@ pub struct EdgeSight {
     points: Vec<Rational>,
 }
 
-/// `u × w` in GMP integers.
-fn cross(u: (Integer, Integer), w: (Integer, Integer)) -> Integer {
-    u.0 * &w.1 - u.1 * &w.0
-}
-
-fn diff(a: Point, b: Point) -> (Integer, Integer) {
-    (Integer::from(a.x) - b.x, Integer::from(a.y) - b.y)
+/// `a − b` in GMP integers.
+fn diff(a: Point, b: Point) -> BigVector {
+    BigVector::between(b, a)
 }
 
 impl EdgeSight {
@@ -46,9 +42,9 @@ impl EdgeSight {
         // Where the ray from y in direction d meets the line of e, as a
         // position along e: y + s·d = e0 + t·f gives
         // t = (y − e0) × d / (f × d).
-        let at = |d: (Integer, Integer)| -> Rational {
-            let num = cross(diff(v[y], v[e0]), d.clone());
-            let den = cross(f.clone(), d);
+        let at = |d: BigVector| -> Rational {
+            let num = diff(v[y], v[e0]).cross(&d);
+            let den = f.cross(&d);
             assert!(
                 den != 0,
                 "a sector that reaches edge {e} is not parallel to it at its ends"

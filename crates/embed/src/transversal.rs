@@ -2,9 +2,10 @@
 //! question behind Corollary 4.15 (does a line through two witnesses cross
 //! the intersection of their embeddings?), decided exactly and completely.
 
-use crate::mutual::{axes, between, half, hull, upper};
-use crate::piece::{dot, offsets_between, projection, Piece, Pt};
+use crate::mutual::{axes, between, upper};
+use crate::piece::{offsets_between, projection, Piece};
 use rug::Rational;
+use wai_exact::{convex_hull, QPoint};
 
 /// A line meeting `a`, `b` and `c`, as a point of `a` and a point of `b`
 /// on it, if there is one.
@@ -17,13 +18,13 @@ use rug::Rational;
 /// two consecutive projections of the vertices — as in
 /// [`crate::Sightlines::by_lines`]. Two pieces on one line leave that line
 /// only.
-pub fn transversal(a: &Piece, b: &Piece, c: &Piece) -> Option<(Pt, Pt)> {
-    let meets = |p0: &Pt, d: &Pt| -> Option<(Pt, Pt)> {
+pub fn transversal(a: &Piece, b: &Piece, c: &Piece) -> Option<(QPoint, QPoint)> {
+    let meets = |p0: &QPoint, d: &QPoint| -> Option<(QPoint, QPoint)> {
         let (sa, sb) = (a.span(p0, d)?, b.span(p0, d)?);
         c.span(p0, d)?;
         Some((p0.along(d, &sa.inner()), p0.along(d, &sb.inner())))
     };
-    let h = hull(a.vertices().into_iter().chain(b.vertices()).collect());
+    let h = convex_hull(a.vertices().into_iter().chain(b.vertices()).collect());
     if h.len() <= 2 {
         // a and b on one line (or both one point: no line at all).
         return match h.as_slice() {
@@ -37,12 +38,12 @@ pub fn transversal(a: &Piece, b: &Piece, c: &Piece) -> Option<(Pt, Pt)> {
         }
         _ => None,
     };
-    let mut e: Vec<Pt> = a.vertices();
+    let mut e: Vec<QPoint> = a.vertices();
     e.extend(b.vertices());
     e.extend(c.vertices());
     e.sort();
     e.dedup();
-    let mut dirs: Vec<Pt> = axes().to_vec();
+    let mut dirs: Vec<QPoint> = axes().to_vec();
     for (i, x) in e.iter().enumerate() {
         for y in &e[i + 1..] {
             if fixed.as_ref().is_some_and(|f| f != x && f != y) {
@@ -51,11 +52,11 @@ pub fn transversal(a: &Piece, b: &Piece, c: &Piece) -> Option<(Pt, Pt)> {
             dirs.push(upper(y.sub(x)));
         }
     }
-    for d in between(dirs).into_iter().filter(|d| half(d) == 0) {
+    for d in between(dirs).into_iter().filter(QPoint::upper_half) {
         let n = d.perp();
-        let nn = dot(&n, &n);
+        let nn = n.dot(&n);
         let offsets: Vec<Rational> = match &fixed {
-            Some(f) => vec![dot(&n, f)],
+            Some(f) => vec![n.dot(f)],
             None => {
                 let (ra, rb, rc) = (
                     projection(&n, &a.vertices()),
@@ -84,8 +85,8 @@ pub fn transversal(a: &Piece, b: &Piece, c: &Piece) -> Option<(Pt, Pt)> {
 mod tests {
     use super::*;
 
-    fn pt(x: i64, y: i64) -> Pt {
-        Pt::new(Rational::from(x), Rational::from(y))
+    fn pt(x: i64, y: i64) -> QPoint {
+        QPoint::new(Rational::from(x), Rational::from(y))
     }
 
     #[test]

@@ -14,11 +14,11 @@
 //! points of the absorbing 2-cell.
 
 use crate::embedding::Embedding;
-use crate::piece::{turn, Bounds, Piece, Pt};
+use crate::piece::{Bounds, Piece};
 use std::cmp::Ordering;
 use std::collections::BTreeSet;
 use wai_cells::{Decomposition, FaceId, LowerSite};
-use wai_exact::RatPoint;
+use wai_exact::{turn, QPoint, RatPoint};
 use wai_visibility::{Skeleton, SkeletonEdge, VisibilityIndex};
 
 /// A cell of the decomposition, of any dimension.
@@ -60,15 +60,14 @@ impl Witnesses {
 /// The points of a cell as a [`Piece`].
 pub fn piece_of(d: &Decomposition<'_>, cell: CellRef) -> Piece {
     let arr = d.arrangement();
-    let at = |v| Pt::from(arr.point(v));
+    let at = |v| QPoint::from(arr.point(v));
     match cell {
         CellRef::Face(f) => {
-            let mut v: Vec<Pt> = arr.face_points(f).iter().map(Pt::from).collect();
+            let mut v: Vec<QPoint> = arr.face_points(f).iter().map(QPoint::from).collect();
             // Counter-clockwise, as Piece wants (the arrangement's cells are,
             // but the piece's span test depends on it, so make sure).
             let area = (0..v.len()).fold(rug::Rational::new(), |s, i| {
-                let (a, b) = (&v[i], &v[(i + 1) % v.len()]);
-                s + rug::Rational::from(&a.x * &b.y) - rug::Rational::from(&a.y * &b.x)
+                s + v[i].cross(&v[(i + 1) % v.len()])
             });
             if area < 0 {
                 v.reverse();
@@ -200,7 +199,7 @@ pub fn sight_fans(
     let v = map.vertices();
     let n = v.len();
     let k = h.vertices.len();
-    let at = |m: usize| Pt::from(v[m]);
+    let at = |m: usize| QPoint::from(v[m]);
     let mut out = Vec::new();
     for (cell, (w, view)) in witnesses.cells.iter().zip(views).enumerate() {
         for (i, e) in view.iter().enumerate() {
@@ -227,9 +226,9 @@ pub fn overlapping_valid_pairs(
     embeddings: &[Embedding],
     witnesses: &[Witnesses],
 ) -> Vec<(usize, usize)> {
-    let rings: Vec<Vec<Pt>> = embeddings
+    let rings: Vec<Vec<QPoint>> = embeddings
         .iter()
-        .map(|h| h.polygon(map).into_iter().map(Pt::from).collect())
+        .map(|h| h.polygon(map).into_iter().map(QPoint::from).collect())
         .collect();
     let mut out = Vec::new();
     for a in 0..embeddings.len() {
@@ -249,8 +248,8 @@ pub fn overlapping_valid_pairs(
 /// have an interior and the interiors share a point. A kernel that is a
 /// point or a segment overlaps nothing.
 pub fn kernels_overlap(a: &wai_visibility::ConvexRegion, b: &wai_visibility::ConvexRegion) -> bool {
-    let ring = |k: &wai_visibility::ConvexRegion| -> Vec<Pt> {
-        k.vertices().iter().map(Pt::from).collect()
+    let ring = |k: &wai_visibility::ConvexRegion| -> Vec<QPoint> {
+        k.vertices().iter().map(QPoint::from).collect()
     };
     a.has_interior() && b.has_interior() && interiors_overlap(&ring(a), &ring(b))
 }
@@ -265,7 +264,7 @@ pub fn kernels_overlap(a: &wai_visibility::ConvexRegion, b: &wai_visibility::Con
 /// where the other's boundary meets it, and the left side of each piece's
 /// midpoint is tested against the other polygon: inside it, or on an edge
 /// of it running the same way.
-pub fn interiors_overlap(p: &[Pt], q: &[Pt]) -> bool {
+pub fn interiors_overlap(p: &[QPoint], q: &[QPoint]) -> bool {
     let (bp, bq) = (Bounds::of(p), Bounds::of(q));
     // Boxes that share no interior point: neither do the polygons.
     if bp.hi.0 <= bq.lo.0 || bq.hi.0 <= bp.lo.0 || bp.hi.1 <= bq.lo.1 || bq.hi.1 <= bp.lo.1 {
@@ -274,7 +273,7 @@ pub fn interiors_overlap(p: &[Pt], q: &[Pt]) -> bool {
     one_side_overlaps(p, q, &bq) || one_side_overlaps(q, p, &bp)
 }
 
-fn one_side_overlaps(p: &[Pt], q: &[Pt], bq: &Bounds) -> bool {
+fn one_side_overlaps(p: &[QPoint], q: &[QPoint], bq: &Bounds) -> bool {
     let (np, nq) = (p.len(), q.len());
     for i in 0..np {
         let (a, b) = (&p[i], &p[(i + 1) % np]);
@@ -301,7 +300,7 @@ fn one_side_overlaps(p: &[Pt], q: &[Pt], bq: &Bounds) -> bool {
                 Locus::OnEdge(j) => {
                     let (c, e) = (&q[j], &q[(j + 1) % nq]);
                     // Same direction: both interiors on the left.
-                    if crate::piece::dot(&dir, &e.sub(c)) > 0 {
+                    if dir.dot(&e.sub(c)) > 0 {
                         return true;
                     }
                 }
@@ -313,7 +312,7 @@ fn one_side_overlaps(p: &[Pt], q: &[Pt], bq: &Bounds) -> bool {
 
 /// Whether the closed segment `ab` and the closed simple polygon `q`
 /// share a point.
-pub fn segment_meets_polygon(a: &Pt, b: &Pt, q: &[Pt]) -> bool {
+pub fn segment_meets_polygon(a: &QPoint, b: &QPoint, q: &[QPoint]) -> bool {
     !matches!(locate(q, a), Locus::Outside)
         || (0..q.len()).any(|j| crate::piece::segments_meet(a, b, &q[j], &q[(j + 1) % q.len()]))
 }
@@ -326,7 +325,7 @@ pub(crate) enum Locus {
 
 /// Where `x` lies relative to the simple polygon `q` (crossing number,
 /// exact).
-pub(crate) fn locate(q: &[Pt], x: &Pt) -> Locus {
+pub(crate) fn locate(q: &[QPoint], x: &QPoint) -> Locus {
     let n = q.len();
     let mut inside = false;
     for j in 0..n {

@@ -9,6 +9,7 @@ use crate::line::Line;
 use crate::point::{fits_bits, Point, RatPoint};
 use crate::predicates::Side;
 use crate::reference;
+use crate::vector::Vector;
 use std::cmp::Ordering;
 
 /// Input coordinates below `2^INTERSECTION_FAST_BITS` in magnitude take the
@@ -42,11 +43,6 @@ pub fn mul_checked(a: i128, b: i128) -> Option<i128> {
     } else {
         a.checked_mul(b)
     }
-}
-
-#[inline]
-fn cross(ux: i128, uy: i128, vx: i128, vy: i128) -> i128 {
-    ux * vy - uy * vx
 }
 
 /// The meeting point of `l1` and `l2`; `None` if they are parallel
@@ -99,16 +95,17 @@ pub fn side_of_intersection(l3: &Line, l1: &Line, l2: &Line) -> Option<Side> {
     if !fast(&[a1, b1, a2, b2, a3, b3]) {
         return reference::side_of_intersection(l3, l1, l2);
     }
-    let (d1x, d1y) = (b1.x - a1.x, b1.y - a1.y);
-    let (d2x, d2y) = (b2.x - a2.x, b2.y - a2.y);
-    let (d3x, d3y) = (b3.x - a3.x, b3.y - a3.y);
-    let den = cross(d1x, d1y, d2x, d2y);
+    // Differences below 2^31 and their cross products below 2^63: within
+    // VECTOR_FAST_BITS, so `Vector::cross` is exact (the note above).
+    let d = Vector::between_fast;
+    let (d1, d2, d3) = (d(a1, b1), d(a2, b2), d(a3, b3));
+    let den = d1.cross_fast(d2);
     if den == 0 {
         return None;
     }
-    let num = cross(a2.x - a1.x, a2.y - a1.y, d2x, d2y);
+    let num = d(a1, a2).cross_fast(d2);
     // I = a1 + (num/den) d1;  d3 × (I - a3) = [d3 × (a1 - a3) · den + num · (d3 × d1)] / den.
-    let s = cross(d3x, d3y, a1.x - a3.x, a1.y - a3.y) * den + num * cross(d3x, d3y, d1x, d1y);
+    let s = d3.cross_fast(d(a3, a1)) * den + num * d3.cross_fast(d1);
     Some(Side::from_sign(s.cmp(&0)).flip_if(den < 0))
 }
 
@@ -120,17 +117,15 @@ pub fn compare_intersections_along(l0: &Line, l1: &Line, l2: &Line) -> Option<Or
     if !fast(&[a0, b0, a1, b1, a2, b2]) {
         return reference::compare_intersections_along(l0, l1, l2);
     }
-    let (d0x, d0y) = (b0.x - a0.x, b0.y - a0.y);
-    let (d1x, d1y) = (b1.x - a1.x, b1.y - a1.y);
-    let (d2x, d2y) = (b2.x - a2.x, b2.y - a2.y);
-    let e1 = cross(d0x, d0y, d1x, d1y);
-    let e2 = cross(d0x, d0y, d2x, d2y);
+    // Within VECTOR_FAST_BITS, as in side_of_intersection.
+    let d = Vector::between_fast;
+    let (d0, d1, d2) = (d(a0, b0), d(a1, b1), d(a2, b2));
+    let (e1, e2) = (d0.cross_fast(d1), d0.cross_fast(d2));
     if e1 == 0 || e2 == 0 {
         return None;
     }
     // t_k = n_k / e_k is the parameter of the meeting point on l0.
-    let n1 = cross(a1.x - a0.x, a1.y - a0.y, d1x, d1y);
-    let n2 = cross(a2.x - a0.x, a2.y - a0.y, d2x, d2y);
+    let (n1, n2) = (d(a0, a1).cross_fast(d1), d(a0, a2).cross_fast(d2));
     let s = n1 * e2 - n2 * e1;
     let ord = s.cmp(&0);
     Some(if (e1 < 0) != (e2 < 0) {

@@ -8,6 +8,12 @@
 //! predicates of [`intersection`] decide its position from the defining
 //! lines.
 //!
+//! The vector vocabulary every crate shares lives in the `vector` module:
+//! [`Vector`] (an `i128` difference of input points), [`BigVector`] (GMP
+//! integer directions), [`QPoint`] (an affine rational point or vector for
+//! constructions), their cross and dot products and angular order, [`turn`]
+//! on three [`QPoint`]s and one [`convex_hull`].
+//!
 //! Predicates return enums ([`Orientation`], [`Side`], [`Containment`],
 //! [`SegmentIntersection`], [`Sight`]); constructions return new exact
 //! values. Each predicate on input points has a machine-integer fast path
@@ -25,6 +31,7 @@ mod polygon;
 mod predicates;
 pub mod reference;
 mod segment;
+mod vector;
 mod visibility;
 
 pub use intersection::{
@@ -39,4 +46,7 @@ pub use predicates::{
     ORIENTATION_FAST_BITS,
 };
 pub use segment::{classify_segments, Segment, SegmentIntersection};
+pub use vector::{
+    convex_hull, turn, BigVector, QPoint, Vector, HOMOGENEOUS_FAST_BITS, VECTOR_FAST_BITS,
+};
 pub use visibility::{sees, Sight};

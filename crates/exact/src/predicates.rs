@@ -3,6 +3,7 @@
 use crate::line::Line;
 use crate::point::{fits_bits, Point, RatPoint};
 use crate::reference;
+use crate::vector::{det3_sign_big, det3_sign_small, rat_point_small, BigVector, Vector};
 use rug::Integer;
 use std::cmp::Ordering;
 
@@ -18,11 +19,22 @@ pub enum Orientation {
 }
 
 impl Orientation {
-    pub(crate) fn from_sign(s: Ordering) -> Self {
+    /// The orientation whose determinant has sign `s`: `Greater` is
+    /// counter-clockwise (the convention of [`crate::turn`]).
+    pub fn from_sign(s: Ordering) -> Self {
         match s {
             Ordering::Greater => Orientation::CounterClockwise,
             Ordering::Equal => Orientation::Collinear,
             Ordering::Less => Orientation::Clockwise,
+        }
+    }
+
+    /// The sign of the determinant: `Greater` for counter-clockwise.
+    pub fn sign(self) -> Ordering {
+        match self {
+            Orientation::CounterClockwise => Ordering::Greater,
+            Orientation::Collinear => Ordering::Equal,
+            Orientation::Clockwise => Ordering::Less,
         }
     }
 
@@ -93,8 +105,9 @@ fn fast(p: &Point) -> bool {
 #[inline]
 pub fn orientation(a: Point, b: Point, c: Point) -> Orientation {
     if fast(&a) && fast(&b) && fast(&c) {
-        let d = (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x);
-        Orientation::from_sign(d.cmp(&0))
+        // Differences below 2^63: within VECTOR_FAST_BITS.
+        let d = Vector::between_fast;
+        Orientation::from_sign(d(a, b).cross_fast(d(a, c)).cmp(&0))
     } else {
         reference::orientation(a, b, c)
     }
@@ -114,29 +127,29 @@ pub fn compare_along(l: &Line, p: Point, q: Point) -> Ordering {
     let (a, b) = (l.a(), l.b());
     if fast(&a) && fast(&b) && fast(&p) && fast(&q) {
         // Same bound as orientation: a sum of two products of differences.
-        let d = (q.x - p.x) * (b.x - a.x) + (q.y - p.y) * (b.y - a.y);
-        0.cmp(&d)
+        let d = Vector::between_fast;
+        0.cmp(&d(p, q).dot_fast(d(a, b)))
     } else {
         reference::compare_along(l, p, q)
     }
 }
 
-/// The orientation of three rational points (always on the GMP path).
+/// The orientation of three rational points.
+///
+/// Implementation note: homogeneous rows `(X, Y, W)` with `W > 0`, so the
+/// 3×3 determinant has the sign of the affine orientation determinant. It
+/// is taken in `i128` when every entry is below
+/// `2^HOMOGENEOUS_FAST_BITS` (the bound is derived there), else in GMP.
 pub fn orientation_rat(a: &RatPoint, b: &RatPoint, c: &RatPoint) -> Orientation {
-    // Homogeneous rows (X, Y, W) with W > 0: the determinant has the sign of
-    // the affine orientation determinant.
-    let det = |r0: [&Integer; 3], r1: [&Integer; 3], r2: [&Integer; 3]| {
-        let m0 = Integer::from(r1[1] * r2[2]) - Integer::from(r1[2] * r2[1]);
-        let m1 = Integer::from(r1[0] * r2[2]) - Integer::from(r1[2] * r2[0]);
-        let m2 = Integer::from(r1[0] * r2[1]) - Integer::from(r1[1] * r2[0]);
-        Integer::from(r0[0] * &m0) - Integer::from(r0[1] * &m1) + Integer::from(r0[2] * &m2)
-    };
-    let d = det(
-        [a.hx(), a.hy(), a.hw()],
-        [b.hx(), b.hy(), b.hw()],
-        [c.hx(), c.hy(), c.hw()],
-    );
-    Orientation::from_sign(d.cmp0())
+    if let (Some(a), Some(b), Some(c)) =
+        (rat_point_small(a), rat_point_small(b), rat_point_small(c))
+    {
+        return Orientation::from_sign(det3_sign_small(a, b, c));
+    }
+    fn row(p: &RatPoint) -> [&Integer; 3] {
+        [p.hx(), p.hy(), p.hw()]
+    }
+    Orientation::from_sign(det3_sign_big(row(a), row(b), row(c)))
 }
 
 /// The side of the directed line `l` that the rational point `p` lies on.
@@ -147,10 +160,8 @@ pub fn side_of_line_rat(l: &Line, p: &RatPoint) -> Side {
     let (a, b) = (l.a(), l.b());
     // sign((b - a) × (p - a)) with p = (X/W, Y/W), W > 0, scaled by W. The
     // differences are taken in GMP: in i128 they overflow beyond 2^126.
-    let dx = Integer::from(b.x) - a.x;
-    let dy = Integer::from(b.y) - a.y;
-    let px = p.hx() - Integer::from(p.hw() * a.x);
-    let py = p.hy() - Integer::from(p.hw() * a.y);
-    let d = dx * py - dy * px;
-    Side::from_sign(d.cmp0())
+    let d = BigVector::between(a, b);
+    let toward = BigVector::toward(p, a);
+    // toward = W·a − (X, Y) = −W·(p − a).
+    Side::from_sign(toward.cross_sign(&d))
 }

@@ -2,39 +2,50 @@
 //! maps ([`crate::stream`]), in parallel, for a number of maps or a time
 //! budget.
 //!
-//! [`search`] runs every checker on every map, one map per task, and merges
-//! the per-map summaries in map order, so a run of `--count N` gives the
-//! same summary whatever the number of threads. With a budget, the maps
-//! reached depend on the machine; the summary says how many.
+//! [`search`] runs every checker on every map, one map per task on rayon's
+//! threads, each worker taking the next map as soon as it is done (no
+//! batch waits for its slowest map). With a count, the maps are the first
+//! N of the stream, and the summary is the same whatever the number of
+//! threads. With a budget, every lane of the stream (each generated kind,
+//! the fixed maps) gets an equal share of the time: a worker takes the next
+//! map of the lane that has used the least time so far, so a kind whose maps
+//! are slow does not starve the quick ones; each lane's maps are a prefix
+//! of its part of the stream (the maps of the round-robin stream with the
+//! same arguments), and a finite lane that runs out leaves its share to
+//! the others. The maps a budget reaches depend on the machine; the
+//! summary says how many of each kind.
 //!
 //! Violations that are known failures stay in the summary, reduced to their
 //! kind and without their map, but are not counterexamples;
 //! [`Outcome::counterexamples`] leaves them out.
 
+use std::sync::mpsc;
+use std::sync::Mutex;
 use std::time::{Duration, Instant};
 
-use rayon::prelude::*;
 use wai_lemmas::Checker;
 use wai_map::Map;
 
-use crate::stream::Stream;
+use crate::stream::{Lane, Stream};
 use crate::summary::{run_profiled, FoundViolation, Profile, Summary};
 
 /// How long a search runs.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Limit {
-    /// This many maps (fewer if a fixed stream ends first).
+    /// The first this many maps of the stream (fewer if a fixed stream
+    /// ends first).
     Count(u64),
-    /// Until this much time has passed (and the batch under way is done).
+    /// Until this much time has passed (the maps under way are finished),
+    /// shared equally by the lanes of the stream.
     Budget(Duration),
 }
 
 /// What [`search`] found.
 #[derive(Debug, Clone)]
 pub struct Outcome {
-    /// Every checker's totals over the maps, map indices in stream order.
+    /// Every checker's totals over the maps; violations in stream order.
     pub summary: Summary,
-    /// Maps per kind, in order of first appearance.
+    /// Maps per kind, in the order of their first map in the stream.
     pub map_kinds: Vec<(String, u64)>,
     pub elapsed: Duration,
     /// Where the time went, summed over every worker (so it can exceed
@@ -49,65 +60,144 @@ impl Outcome {
     }
 }
 
-/// Runs `checkers` over `stream` until `limit`, `batch` maps at a time in
-/// parallel (rayon's pool: set its threads before calling), calling
-/// `progress(maps done, elapsed)` after each batch. With `stop_early`, stops
-/// after the first batch with a counterexample.
+/// The scheduler's state: per lane, the next map, the time its finished
+/// maps took and the start of each map under way.
+struct Lanes {
+    lanes: Vec<Lane>,
+    next: Vec<u64>,
+    used: Vec<Duration>,
+    running: Vec<Vec<(u64, Instant)>>,
+    stop: bool,
+}
+
+impl Lanes {
+    /// The next map to check: (lane, stream index), from the lane that has
+    /// used the least time — its finished maps and the maps under way so
+    /// far, so a slow map in progress counts against its lane at once —
+    /// and still has maps; `None` when every lane is done or the search
+    /// stops.
+    fn take(&mut self) -> Option<(usize, u64)> {
+        if self.stop {
+            return None;
+        }
+        let now = Instant::now();
+        let spent = |l: usize| -> Duration {
+            self.used[l]
+                + self.running[l]
+                    .iter()
+                    .map(|(_, t)| now - *t)
+                    .sum::<Duration>()
+        };
+        let lane = (0..self.lanes.len())
+            .filter(|&l| self.lanes[l].index(self.next[l]).is_some())
+            .min_by_key(|&l| (spent(l), l))?;
+        let index = self.lanes[lane].index(self.next[lane])?;
+        self.next[lane] += 1;
+        self.running[lane].push((index, now));
+        Some((lane, index))
+    }
+
+    /// Map `index` of lane `lane` is done.
+    fn done(&mut self, lane: usize, index: u64) {
+        let now = Instant::now();
+        if let Some(k) = self.running[lane].iter().position(|(i, _)| *i == index) {
+            let (_, began) = self.running[lane].swap_remove(k);
+            self.used[lane] += now - began;
+        }
+    }
+}
+
+/// Runs `checkers` over `stream` until `limit` on rayon's threads (set the
+/// pool's size before calling), calling `progress(maps done, elapsed)` as
+/// maps finish. With `stop_early`, stops taking maps once a counterexample
+/// is found.
 pub fn search(
     checkers: &[Checker],
     stream: &Stream,
     limit: Limit,
-    batch: u64,
     stop_early: bool,
     progress: &(dyn Fn(u64, Duration) + Sync),
 ) -> Outcome {
     let start = Instant::now();
-    let end = match (limit, stream.len()) {
-        (Limit::Count(n), Some(len)) => n.min(len),
-        (Limit::Count(n), None) => n,
-        (Limit::Budget(_), Some(len)) => len,
-        (Limit::Budget(_), None) => u64::MAX,
+    let lanes = match limit {
+        Limit::Count(n) => vec![Lane {
+            name: String::new(),
+            start: 0,
+            step: 1,
+            len: Some(stream.len().map_or(n, |len| n.min(len))),
+        }],
+        Limit::Budget(_) => stream.lanes(),
+    };
+    let budget = match limit {
+        Limit::Budget(b) => Some(b),
+        Limit::Count(_) => None,
+    };
+    let state = Mutex::new(Lanes {
+        next: vec![0; lanes.len()],
+        used: vec![Duration::ZERO; lanes.len()],
+        running: vec![Vec::new(); lanes.len()],
+        lanes,
+        stop: false,
+    });
+    let take = || {
+        let mut s = state.lock().expect("no worker panics holding the lock");
+        if budget.is_some_and(|b| start.elapsed() >= b) {
+            s.stop = true;
+        }
+        s.take()
     };
     let mut summary = Summary::empty(checkers);
     let mut profile = Profile::default();
-    let mut map_kinds: Vec<(String, u64)> = Vec::new();
-    let mut i = 0u64;
-    while i < end {
-        if let Limit::Budget(budget) = limit {
-            if start.elapsed() >= budget {
-                break;
-            }
+    // (kind, maps, the stream index of its first map).
+    let mut per_kind: Vec<(String, u64, u64)> = Vec::new();
+    let workers = rayon::current_num_threads().max(1);
+    let (tx, rx) = mpsc::channel::<(u64, String, Summary, Profile)>();
+    rayon::scope(|scope| {
+        for _ in 0..workers {
+            let tx = tx.clone();
+            let take = &take;
+            let state = &state;
+            scope.spawn(move |_| {
+                while let Some((lane, index)) = take() {
+                    let (kind, map): (String, Map) =
+                        stream.map(index).expect("lanes hold indices of the stream");
+                    let (one, p) = run_profiled(checkers, [&map]);
+                    state
+                        .lock()
+                        .expect("no worker panics holding the lock")
+                        .done(lane, index);
+                    if tx.send((index, kind, light(one), p)).is_err() {
+                        break;
+                    }
+                }
+            });
         }
-        let upto = (i + batch.max(1)).min(end);
-        let results: Vec<(String, Summary, Profile)> = (i..upto)
-            .into_par_iter()
-            .map(|j| {
-                let (kind, map) = stream.map(j).expect("j is below the stream's length");
-                let (one, p) = run_profiled(checkers, [&map]);
-                (kind, light(one), p)
-            })
-            .collect();
-        // Only this batch's maps are new: the earlier ones were looked at.
-        let found = results
-            .iter()
-            .any(|(_, one, _)| one.counterexamples().next().is_some());
-        for (offset, (kind, one, p)) in results.into_iter().enumerate() {
+        drop(tx);
+        for (index, kind, one, p) in rx {
+            if stop_early && one.counterexamples().next().is_some() {
+                state
+                    .lock()
+                    .expect("no worker panics holding the lock")
+                    .stop = true;
+            }
             profile.absorb(&p);
-            match map_kinds.iter_mut().find(|(k, _)| *k == kind) {
-                Some((_, count)) => *count += 1,
-                None => map_kinds.push((kind, 1)),
+            match per_kind.iter_mut().find(|(k, _, _)| *k == kind) {
+                Some((_, count, first)) => {
+                    *count += 1;
+                    *first = (*first).min(index);
+                }
+                None => per_kind.push((kind, 1, index)),
             }
-            summary.absorb(one, i as usize + offset);
+            summary.absorb(one, index as usize);
+            progress(summary.maps as u64, start.elapsed());
         }
-        i = upto;
-        progress(i, start.elapsed());
-        if stop_early && found {
-            break;
-        }
-    }
+    });
+    summary.sort_by_map();
+    // Kinds in the order of their first map in the stream.
+    per_kind.sort_by_key(|(_, _, first)| *first);
     Outcome {
         summary,
-        map_kinds,
+        map_kinds: per_kind.into_iter().map(|(k, n, _)| (k, n)).collect(),
         elapsed: start.elapsed(),
         profile,
     }
@@ -142,7 +232,7 @@ mod tests {
     use crate::stream::parse_kinds;
 
     #[test]
-    fn a_count_gives_the_same_summary_in_any_batch_size() {
+    fn a_count_gives_the_same_summary_on_any_number_of_threads() {
         let stream = Stream::Generated {
             kinds: parse_kinds("random-orthogonal:6-10,random-simple-star:5-9").unwrap(),
             seed: 3,
@@ -151,8 +241,12 @@ mod tests {
             wai_lemmas::ch3::t3_3a::CHECKER,
             wai_lemmas::ch5::t5_17::CHECKER,
         ];
-        let a = search(&checkers, &stream, Limit::Count(12), 1, false, &|_, _| {});
-        let b = search(&checkers, &stream, Limit::Count(12), 5, false, &|_, _| {});
+        let a = search(&checkers, &stream, Limit::Count(12), false, &|_, _| {});
+        let b = rayon::ThreadPoolBuilder::new()
+            .num_threads(3)
+            .build()
+            .unwrap()
+            .install(|| search(&checkers, &stream, Limit::Count(12), false, &|_, _| {}));
         assert_eq!(a.summary, b.summary);
         assert_eq!(a.summary.maps, 12);
         assert_eq!(
@@ -165,13 +259,49 @@ mod tests {
     }
 
     #[test]
+    fn a_budget_shares_the_time_among_the_lanes() {
+        // Layouts take tens of milliseconds a map, small random maps less:
+        // with a budget both kinds progress, the quick one further, and
+        // each kind's maps are the first of its lane.
+        let stream = Stream::Generated {
+            kinds: parse_kinds("repeated-niches,random-orthogonal:6-8").unwrap(),
+            seed: 2,
+        };
+        let checkers = [
+            wai_lemmas::ch5::t5_17::CHECKER,
+            wai_lemmas::ch3::l3_7::CHECKER,
+        ];
+        let out = search(
+            &checkers,
+            &stream,
+            Limit::Budget(Duration::from_millis(600)),
+            false,
+            &|_, _| {},
+        );
+        let count = |kind: &str| {
+            out.map_kinds
+                .iter()
+                .find(|(k, _)| k == kind)
+                .map_or(0, |(_, n)| *n)
+        };
+        let (slow, quick) = (count("repeated-niches"), count("random-orthogonal"));
+        assert!(slow >= 1 && quick > slow, "{:?}", out.map_kinds);
+        assert_eq!(out.summary.maps as u64, slow + quick);
+        // The same maps by count: lane 1's first `quick` maps are stream
+        // indices 1, 3, 5, ...; re-checking them alone gives the same T5.17
+        // examined count as the budgeted run's share of them.
+        let t = out.summary.tally("T5.17").unwrap();
+        assert_eq!(t.examined, slow + quick);
+    }
+
+    #[test]
     fn the_planted_bug_is_found_and_stops_early() {
         let stream = Stream::Generated {
             kinds: parse_kinds("random-orthogonal:6-12").unwrap(),
             seed: 0,
         };
         let checkers = [wai_lemmas::planted::SHIFTED_LABELS];
-        let out = search(&checkers, &stream, Limit::Count(100), 4, true, &|_, _| {});
+        let out = search(&checkers, &stream, Limit::Count(100), true, &|_, _| {});
         assert!(!out.counterexamples().is_empty());
         assert!(out.summary.maps <= 8, "{}", out.summary.maps);
         let v = out.counterexamples()[0];

@@ -155,6 +155,21 @@ fn parse_range(r: &str) -> Result<RangeInclusive<usize>, String> {
     Ok(a..=b)
 }
 
+/// The maps of the `family` kind over parameters `sizes`: (family, k) for
+/// each k in turn and each family of [`wai_gen::FAMILIES`] that accepts k
+/// (`comb-convex-chain` needs k ≥ 2), each once.
+pub fn family_maps(sizes: &RangeInclusive<usize>) -> Vec<(&'static str, u32)> {
+    sizes
+        .clone()
+        .flat_map(|k| {
+            wai_gen::FAMILIES
+                .iter()
+                .filter(move |f| wai_gen::family(f.id, &[k as u32]).is_ok())
+                .map(move |f| (f.id, k as u32))
+        })
+        .collect()
+}
+
 /// Where the maps come from.
 #[derive(Debug, Clone)]
 pub enum Stream {
@@ -162,14 +177,83 @@ pub enum Stream {
     Generated { kinds: Vec<KindSpec>, seed: u64 },
     /// These maps, each with the name of its kind.
     Fixed(Vec<(String, Map)>),
+    /// The fixed maps first, then the generated stream: map `fixed.len() +
+    /// i` is map i of `Generated { kinds, seed }`.
+    Mixed {
+        fixed: Vec<(String, Map)>,
+        kinds: Vec<KindSpec>,
+        seed: u64,
+    },
+}
+
+/// One lane of a stream: the indices `start + j·step` for `j < len` (or
+/// every j when `len` is `None`), the maps of one kind (or the fixed
+/// maps). A budgeted search gives every lane an equal share of the time.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Lane {
+    /// The kind's name (`fixed` for the fixed maps).
+    pub name: String,
+    pub start: u64,
+    pub step: u64,
+    pub len: Option<u64>,
+}
+
+impl Lane {
+    /// The stream index of the lane's j-th map, if the lane has one.
+    pub fn index(&self, j: u64) -> Option<u64> {
+        if self.len.is_some_and(|len| j >= len) {
+            return None;
+        }
+        Some(self.start + j * self.step)
+    }
 }
 
 impl Stream {
     /// How many maps the stream holds (`None`: unbounded).
     pub fn len(&self) -> Option<u64> {
         match self {
-            Stream::Generated { .. } => None,
+            Stream::Generated { .. } | Stream::Mixed { .. } => None,
             Stream::Fixed(maps) => Some(maps.len() as u64),
+        }
+    }
+
+    /// The lanes of the stream: the fixed maps (if any), then one lane per
+    /// generated kind, kind `k` of `K` holding the indices ≡ k (mod K) of
+    /// the generated part. A kind without seeds (`family`: the thesis
+    /// families at each parameter of its range) holds its distinct maps
+    /// only, once each.
+    pub fn lanes(&self) -> Vec<Lane> {
+        let generated = |kinds: &[KindSpec], shift: u64| -> Vec<Lane> {
+            let k = kinds.len() as u64;
+            kinds
+                .iter()
+                .enumerate()
+                .map(|(i, spec)| Lane {
+                    name: spec.kind.id().to_owned(),
+                    start: shift + i as u64,
+                    step: k,
+                    len: match spec.kind {
+                        MapKind::Family => Some(family_maps(&spec.sizes).len() as u64),
+                        _ => None,
+                    },
+                })
+                .collect()
+        };
+        let fixed_lane = |fixed: &[(String, Map)]| Lane {
+            name: "fixed".to_owned(),
+            start: 0,
+            step: 1,
+            len: Some(fixed.len() as u64),
+        };
+        match self {
+            Stream::Fixed(maps) => vec![fixed_lane(maps)],
+            Stream::Generated { kinds, .. } => generated(kinds, 0),
+            Stream::Mixed { fixed, kinds, .. } => {
+                let mut lanes = vec![fixed_lane(fixed)];
+                lanes.extend(generated(kinds, fixed.len() as u64));
+                lanes.retain(|l| l.len != Some(0));
+                lanes
+            }
         }
     }
 
@@ -183,6 +267,14 @@ impl Stream {
     pub fn map(&self, i: u64) -> Option<(String, Map)> {
         match self {
             Stream::Fixed(maps) => maps.get(i as usize).cloned(),
+            Stream::Mixed { fixed, kinds, seed } => match fixed.get(i as usize) {
+                Some(m) => Some(m.clone()),
+                None => Stream::Generated {
+                    kinds: kinds.clone(),
+                    seed: *seed,
+                }
+                .map(i - fixed.len() as u64),
+            },
             Stream::Generated { kinds, seed } => {
                 let k = kinds.len() as u64;
                 let spec = &kinds[(i % k) as usize];
@@ -198,16 +290,11 @@ impl Stream {
                         .expect("a layout of LAYOUTS")
                         .with_name(format!("{id} seed={seed}")),
                     MapKind::Family => {
-                        let families = wai_gen::FAMILIES;
-                        let f = &families[(round % families.len() as u64) as usize];
-                        let k =
-                            *spec.sizes.start() + ((round / families.len() as u64) % span) as usize;
-                        // Families whose parameter must be larger take the
-                        // next parameter they accept; the name says which.
-                        let (k, map) = (k..k + 8)
-                            .find_map(|k| wai_gen::family(f.id, &[k as u32]).ok().map(|m| (k, m)))
-                            .expect("every family has a map within 8 parameters of k");
-                        map.with_name(format!("{} k={k}", f.id))
+                        let pairs = family_maps(&spec.sizes);
+                        let (id, k) = pairs[(round % pairs.len() as u64) as usize];
+                        wai_gen::family(id, &[k])
+                            .expect("family_maps lists accepted parameters")
+                            .with_name(format!("{id} k={k}"))
                     }
                     MapKind::Bytes => wai_gen::bytes::map_from_seed(seed),
                 };
@@ -238,6 +325,47 @@ mod tests {
         );
         for bad in ["nope", "family:0", "random-orthogonal:9-3", "bytes:x", ""] {
             assert!(parse_kinds(bad).is_err(), "{bad}");
+        }
+    }
+
+    #[test]
+    fn lanes_partition_the_stream_by_kind() {
+        let kinds = parse_kinds("random-orthogonal,family:1-2,bytes").unwrap();
+        let fixed = vec![(
+            "fixed".to_owned(),
+            wai_gen::family("corridor-niches", &[1]).unwrap(),
+        )];
+        let stream = Stream::Mixed {
+            fixed,
+            kinds: kinds.clone(),
+            seed: 5,
+        };
+        let lanes = stream.lanes();
+        let names: Vec<&str> = lanes.iter().map(|l| l.name.as_str()).collect();
+        assert_eq!(names, ["fixed", "random-orthogonal", "family", "bytes"]);
+        assert_eq!(lanes[0].len, Some(1));
+        // The family lane holds each family map at parameters 1 and 2 once
+        // (comb-convex-chain has no k = 1).
+        let family = &lanes[2];
+        assert_eq!(family.len, Some(2 * wai_gen::FAMILIES.len() as u64 - 1));
+        let maps: Vec<Map> = (0..family.len.unwrap())
+            .map(|j| stream.map(family.index(j).unwrap()).unwrap().1)
+            .collect();
+        for (a, m) in maps.iter().enumerate() {
+            assert!(
+                maps[..a].iter().all(|o| o.vertices() != m.vertices()),
+                "{a}"
+            );
+        }
+        assert_eq!(family.index(family.len.unwrap()), None);
+        // Lane k's maps are the generated stream's maps of kind k.
+        let generated = Stream::Generated { kinds, seed: 5 };
+        for (k, lane) in lanes[1..].iter().enumerate() {
+            for j in 0..3 {
+                let (kind, a) = stream.map(lane.index(j).unwrap()).unwrap();
+                let (_, b) = generated.map(j * 3 + k as u64).unwrap();
+                assert_eq!((kind.as_str(), &a), (lane.name.as_str(), &b));
+            }
         }
     }
 

@@ -76,12 +76,13 @@ impl ClaimTally {
         }
     }
 
-    /// True if `ratio` is larger than the tally's largest so far (the only
-    /// rule by which a run's largest ratio is replaced).
-    fn beaten_by(&self, ratio: &rug::Rational) -> bool {
-        self.largest
-            .as_ref()
-            .is_none_or(|l| *ratio > l.largest.ratio)
+    /// True if `ratio`, reached on map `index`, beats the tally's largest
+    /// so far: a larger ratio, or the same on an earlier map (so the run's
+    /// largest does not depend on the order maps finish in).
+    fn beaten_by(&self, ratio: &rug::Rational, index: usize) -> bool {
+        self.largest.as_ref().is_none_or(|l| {
+            *ratio > l.largest.ratio || (*ratio == l.largest.ratio && index < l.map_index)
+        })
     }
 
     /// The violations that are not known failures.
@@ -252,11 +253,19 @@ impl Summary {
                     v
                 }));
             if let Some(mut l) = t.largest {
-                if mine.beaten_by(&l.largest.ratio) {
-                    l.map_index += first;
+                l.map_index += first;
+                if mine.beaten_by(&l.largest.ratio, l.map_index) {
                     mine.largest = Some(l);
                 }
             }
+        }
+    }
+
+    /// Puts every tally's violations in stream order (stable among one
+    /// map's), as a search that absorbs maps as they finish must.
+    pub fn sort_by_map(&mut self) {
+        for t in &mut self.tallies {
+            t.violations.sort_by_key(|v| v.map_index);
         }
     }
 
@@ -358,7 +367,7 @@ pub fn run_profiled<M: Borrow<Map>>(
                 *tally.counts.entry(name).or_default() += by;
             }
             if let Some(l) = report.largest {
-                if tally.beaten_by(&l.ratio) {
+                if tally.beaten_by(&l.ratio, map_index) {
                     tally.largest = Some(FoundLargest {
                         largest: l,
                         map_index,

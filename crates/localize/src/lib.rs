@@ -51,12 +51,6 @@ pub(crate) fn small_triple(p: &RatPoint) -> Option<[i128; 3]> {
     ])
 }
 
-/// The sign of a · b (position vectors).
-pub(crate) fn dot_sign(a: &RatPoint, b: &RatPoint) -> Ordering {
-    use rug::Integer;
-    (Integer::from(a.hx() * b.hx()) + Integer::from(a.hy() * b.hy())).cmp0()
-}
-
 /// p + o for an integer point o (`sign` 1) or p − o (`sign` −1), exactly.
 pub(crate) fn shifted(p: &RatPoint, o: wai_exact::Point, sign: i128) -> RatPoint {
     use rug::Integer;
@@ -67,16 +61,4 @@ pub(crate) fn shifted(p: &RatPoint, o: wai_exact::Point, sign: i128) -> RatPoint
         w.clone(),
     )
     .expect("w > 0")
-}
-
-/// a − b, exactly.
-pub(crate) fn sub(a: &RatPoint, b: &RatPoint) -> RatPoint {
-    use rug::Integer;
-    let (aw, bw) = (a.hw(), b.hw());
-    RatPoint::new(
-        Integer::from(a.hx() * bw) - Integer::from(b.hx() * aw),
-        Integer::from(a.hy() * bw) - Integer::from(b.hy() * aw),
-        Integer::from(aw * bw),
-    )
-    .expect("positive denominators")
 }

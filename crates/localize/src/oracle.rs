@@ -15,13 +15,13 @@
 //! et al.'s one-shot query), without any visibility polygon.
 
 use crate::ray_exits::{Exit, RayExits, Side};
+use crate::shifted;
 use crate::view::{RobotView, ViewSkeleton};
-use crate::{dot_sign, shifted, sub};
 use crate::{Answer, Localizer};
 use rug::Integer;
 use std::cmp::Ordering;
 use std::collections::HashMap;
-use wai_exact::{orientation_rat, Containment, Orientation, Point, RatPoint};
+use wai_exact::{orientation_rat, BigVector, Containment, Orientation, Point, RatPoint};
 use wai_map::Map;
 use wai_visibility::{Skeleton, VisibilityIndex};
 
@@ -144,29 +144,21 @@ enum Cone {
     Along,
 }
 
-/// The sign of u × d for an integer u and a homogeneous direction d.
-fn cross_dir(u: (i128, i128), d: &(Integer, Integer)) -> Ordering {
-    (Integer::from(u.0) * &d.1 - Integer::from(u.1) * &d.0).cmp0()
-}
-
 /// Where the direction `d` (homogeneous numerators, any positive scale)
 /// goes from map vertex `a` of the counter-clockwise `ring`: the interior
 /// near `a` is the cone turning counter-clockwise from the edge to `a + 1`
 /// to the edge to `a − 1`.
-fn cone(ring: &[Point], a: usize, d: &(Integer, Integer)) -> Cone {
+fn cone(ring: &[Point], a: usize, d: &BigVector) -> Cone {
     let n = ring.len();
     let (p, v, q) = (ring[(a + n - 1) % n], ring[a], ring[(a + 1) % n]);
-    let out = (q.x - v.x, q.y - v.y);
-    let back = (p.x - v.x, p.y - v.y);
-    let (s1, s2) = (cross_dir(out, d), cross_dir(back, d).reverse());
-    let parallel = |u: (i128, i128)| {
-        cross_dir(u, d) == Ordering::Equal
-            && (Integer::from(u.0) * &d.0 + Integer::from(u.1) * &d.1).cmp0() == Ordering::Greater
-    };
-    if parallel(out) || parallel(back) {
+    let (out, back) = ((q - v).to_big(), (p - v).to_big());
+    let (s1, s2) = (out.cross_sign(d), back.cross_sign(d).reverse());
+    let parallel =
+        |u: &BigVector| u.cross_sign(d) == Ordering::Equal && u.dot_sign(d) == Ordering::Greater;
+    if parallel(&out) || parallel(&back) {
         return Cone::Along;
     }
-    let convex = Integer::from(out.0) * back.1 - Integer::from(out.1) * back.0 > 0;
+    let convex = out.cross_sign(&back) == Ordering::Greater;
     let inside = if convex {
         s1 == Ordering::Greater && s2 == Ordering::Greater
     } else {
@@ -255,7 +247,7 @@ pub fn one_shot(map: &Map, v: &RobotView) -> OneShot {
     let mut tables: Vec<Option<RayExits>> = vec![None; rays.len()];
     // Offsets of V's vertices from v0, exact.
     let v0 = &verts[sk.origin_index];
-    let rel: Vec<RatPoint> = verts.iter().map(|p| sub(p, v0)).collect();
+    let rel: Vec<RatPoint> = verts.iter().map(|p| p.sub(v0)).collect();
     'placement: for u in v0_images(map) {
         let uo = ring[u];
         let place = |p: &RatPoint| shifted(p, uo, 1);
@@ -295,7 +287,7 @@ pub fn one_shot(map: &Map, v: &RobotView) -> OneShot {
             if spurious[i] || beyond {
                 continue;
             }
-            let d = (verts[i].hx().clone(), verts[i].hy().clone());
+            let d = BigVector::new(verts[i].hx().clone(), verts[i].hy().clone());
             if cone(ring, idx[i], &d) != Cone::Outside {
                 continue 'placement;
             }
@@ -366,16 +358,16 @@ fn on_edge(ring: &[Point], e: usize, p: &RatPoint) -> bool {
     if orientation_rat(&a, &b, p) != Orientation::Collinear {
         return false;
     }
-    let d1 = sub(p, &a);
-    let d2 = sub(&b, p);
-    let e = sub(&b, &a);
-    dot_sign(&d1, &e) != Ordering::Less && dot_sign(&d2, &e) != Ordering::Less
+    let d1 = p.sub(&a);
+    let d2 = b.sub(p);
+    let e = b.sub(&a);
+    d1.dot_sign(&e) != Ordering::Less && d2.dot_sign(&e) != Ordering::Less
 }
 
 /// Whether s1 → s2 runs the way of map edge `e`.
 fn same_way(ring: &[Point], e: usize, s1: &RatPoint, s2: &RatPoint) -> bool {
     let (a, b) = (ring[e], ring[(e + 1) % ring.len()]);
-    let d = sub(s2, s1);
+    let d = s2.sub(s1);
     (Integer::from(d.hx() * (b.x - a.x)) + Integer::from(d.hy() * (b.y - a.y))).cmp0()
         == Ordering::Greater
 }

@@ -20,7 +20,7 @@
 //! with testing every cell of the class (`locate_exact`).
 
 use crate::fast::cmp_products;
-use crate::{dot_sign, small_i128, small_triple, sub};
+use crate::{small_i128, small_triple};
 use rug::{Integer, Rational};
 use std::cmp::Ordering;
 use std::collections::HashMap;
@@ -151,8 +151,8 @@ impl Item {
             }
             Shape::Segment(a, b) => {
                 orientation_rat(a, b, p) == Orientation::Collinear
-                    && dot_sign(&sub(p, a), &sub(b, a)) == Ordering::Greater
-                    && dot_sign(&sub(p, b), &sub(a, b)) == Ordering::Greater
+                    && p.sub(a).dot_sign(&b.sub(a)) == Ordering::Greater
+                    && p.sub(b).dot_sign(&a.sub(b)) == Ordering::Greater
             }
             Shape::Point(q) => q == p,
         }

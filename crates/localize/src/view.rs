@@ -10,7 +10,7 @@
 //! with the map-side skeleton of the same viewpoint.
 
 use crate::fast::{cmp_products, det2};
-use crate::{dot_sign, small_triple, sub};
+use crate::small_triple;
 use rug::Integer;
 use std::cmp::Ordering;
 use wai_exact::{orientation_rat, Orientation, RatPoint};
@@ -78,27 +78,10 @@ fn origin() -> RatPoint {
     RatPoint::from_i128(0, 0, 1).expect("w = 1")
 }
 
-/// The sign of the cross product a × b (of positions relative to o).
-fn cross(a: &RatPoint, b: &RatPoint) -> Ordering {
-    (Integer::from(a.hx() * b.hy()) - Integer::from(a.hy() * b.hx())).cmp0()
-}
-
-/// 0 for directions in [0, π), 1 for [π, 2π).
-fn half(p: &RatPoint) -> u8 {
-    match (p.hy().cmp0(), p.hx().cmp0()) {
-        (Ordering::Greater, _) | (Ordering::Equal, Ordering::Greater) => 0,
-        _ => 1,
-    }
-}
-
-fn neg(a: &RatPoint) -> RatPoint {
-    RatPoint::new(-a.hx().clone(), -a.hy().clone(), a.hw().clone()).expect("w > 0")
-}
-
 /// The label (a, b, c) of the line through `p` and `q`, in coordinates
 /// relative to `o`: a·x + b·y = c, primitive, a > 0 or a = 0 < b.
 pub(crate) fn label_through(p: &RatPoint, q: &RatPoint, o: &RatPoint) -> LineLabel {
-    let (p, q) = (sub(p, o), sub(q, o));
+    let (p, q) = (p.sub(o), q.sub(o));
     // The homogeneous line p × q: A·x + B·y + C·w = 0.
     let a = Integer::from(p.hy() * q.hw()) - Integer::from(p.hw() * q.hy());
     let b = Integer::from(p.hw() * q.hx()) - Integer::from(p.hx() * q.hw());
@@ -183,7 +166,7 @@ impl RobotView {
         for i in 0..m {
             let (h, j) = ((i + m - 1) % m, (i + 1) % m);
             if view.orient(h, i, j) == Orientation::Collinear {
-                let back = dot_sign(&sub(&v[i], &v[h]), &sub(&v[j], &v[i])) != Ordering::Greater;
+                let back = v[i].sub(&v[h]).dot_sign(&v[j].sub(&v[i])) != Ordering::Greater;
                 if back {
                     return Err(ViewError::Spike(h, i));
                 }
@@ -225,7 +208,7 @@ impl RobotView {
     fn cross_ij(&self, i: usize, j: usize) -> Ordering {
         match &self.fast {
             Some(f) => cmp_products(f[i][0], f[j][1], f[i][1], f[j][0]),
-            None => cross(&self.vertices[i], &self.vertices[j]),
+            None => self.vertices[i].cross_sign(&self.vertices[j]),
         }
     }
 
@@ -235,7 +218,7 @@ impl RobotView {
         match &self.fast {
             // Coordinates below 2^126: the negation is safe.
             Some(f) => cmp_products(f[i][0], f[j][0], -f[i][1], f[j][1]),
-            None => dot_sign(&self.vertices[i], &self.vertices[j]),
+            None => self.vertices[i].dot_sign(&self.vertices[j]),
         }
     }
 
@@ -243,7 +226,8 @@ impl RobotView {
     /// [0, 2π), for v_a, v_b not on one ray.
     fn angle_before(&self, b: usize, a: usize) -> bool {
         let (pb, pa) = (&self.vertices[b], &self.vertices[a]);
-        match half(pb).cmp(&half(pa)) {
+        // RatPoint::compare_angle, with the cross sign's fast path.
+        match pa.upper_half().cmp(&pb.upper_half()) {
             Ordering::Less => true,
             Ordering::Greater => false,
             Ordering::Equal => self.cross_ij(b, a) == Ordering::Greater,
@@ -260,7 +244,7 @@ impl RobotView {
                 == Ordering::Greater;
         }
         let v = &self.vertices;
-        dot_sign(&sub(&v[j], &v[i]), &v[i]) == Ordering::Greater
+        v[j].sub(&v[i]).dot_sign(&v[i]) == Ordering::Greater
     }
 
     /// The orientation of (v_h, v_i, v_j).
@@ -360,7 +344,8 @@ impl RobotView {
                 return exact_quotients(nx, ny, den);
             }
         }
-        sub(&self.vertices[i], &self.vertices[o])
+        self.vertices[i]
+            .sub(&self.vertices[o])
             .to_point()
             .map(|p| (p.x, p.y))
     }
@@ -370,7 +355,7 @@ impl RobotView {
     pub fn from_visibility(vp: &wai_visibility::VisibilityPolygon) -> RobotView {
         let p = vp.viewpoint();
         RobotView::build(
-            vp.vertices().iter().map(|u| sub(&u.point, p)).collect(),
+            vp.vertices().iter().map(|u| u.point.sub(p)).collect(),
             Vec::new(),
         )
     }
@@ -387,7 +372,7 @@ impl RobotView {
 
     /// V translated so that the robot stands at `p`.
     pub fn placed_at(&self, p: &RatPoint) -> Vec<RatPoint> {
-        self.vertices.iter().map(|u| sub(u, &neg(p))).collect()
+        self.vertices.iter().map(|u| u.sub(&p.neg())).collect()
     }
 
     /// Whether edge `i` is spurious (Def 3.4): collinear with the robot.
@@ -474,7 +459,7 @@ impl RobotView {
         }
         Ok(ViewSkeleton {
             key: SkeletonKey { offsets, labels },
-            robot: neg(v0),
+            robot: v0.neg(),
             origin_index: o0,
         })
     }
@@ -485,7 +470,7 @@ impl RobotView {
         let v = &self.vertices;
         let m = v.len();
         (0..m)
-            .map(|s| sub(&v[(origin_index + s) % m], &v[origin_index]))
+            .map(|s| v[(origin_index + s) % m].sub(&v[origin_index]))
             .collect()
     }
 }

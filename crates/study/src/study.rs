@@ -224,6 +224,14 @@ impl<'m> Study<'m> {
         }
     }
 
+    /// A study of a map whose decomposition is built already (with a
+    /// progress bar, say).
+    pub fn from_decomposition(decomposition: Decomposition<'m>) -> Study<'m> {
+        let study = Study::new(decomposition.map());
+        let _ = study.decomposition.set(decomposition);
+        study
+    }
+
     pub fn map(&self) -> &'m Map {
         self.map
     }

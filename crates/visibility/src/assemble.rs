@@ -11,7 +11,7 @@ use crate::classify::{classify, Along, RawVertex};
 use crate::polygon::{OnMap, VisibilityPolygon};
 use rug::Integer;
 use std::cmp::Ordering;
-use wai_exact::RatPoint;
+use wai_exact::{BigVector, RatPoint, Vector};
 use wai_map::Map;
 
 /// A point `p + (num / den)·(v − p)` on the ray from p through vertex v.
@@ -47,47 +47,32 @@ fn ray_meets_edge_line(
 ) -> Option<RayPoint> {
     let v = map.vertices();
     let (a, b) = (edge, (edge + 1) % map.n());
-    let (num, den, dx, dy) = if fast {
+    let (num, den, d) = if fast {
         let (x, y, w) = (
             p.hx().to_i128().expect("fast"),
             p.hy().to_i128().expect("fast"),
             p.hw().to_i128().expect("fast"),
         );
-        let rel = |i: usize| (w * v[i].x - x, w * v[i].y - y);
+        // Within VECTOR_FAST_BITS by `fits_fast`: directions below 2^62,
+        // an edge vector below 2^63.
+        let rel = |i: usize| Vector::new(w * v[i].x - x, w * v[i].y - y);
         let (d, ra, rb) = (rel(through), rel(a), rel(b));
-        let e = (rb.0 - ra.0, rb.1 - ra.1);
-        let den = d.0 * e.1 - d.1 * e.0;
+        let den = d.cross(Vector::new(rb.x - ra.x, rb.y - ra.y));
         if den == 0 {
             return None;
         }
-        let num = ra.0 * rb.1 - ra.1 * rb.0;
-        (
-            Integer::from(num),
-            Integer::from(den),
-            Integer::from(d.0),
-            Integer::from(d.1),
-        )
+        (Integer::from(ra.cross(rb)), Integer::from(den), d.to_big())
     } else {
-        let w = p.hw();
-        let rel = |i: usize| {
-            (
-                Integer::from(w * v[i].x) - p.hx(),
-                Integer::from(w * v[i].y) - p.hy(),
-            )
-        };
-        let cross = |a: &(Integer, Integer), b: &(Integer, Integer)| {
-            Integer::from(&a.0 * &b.1) - Integer::from(&a.1 * &b.0)
-        };
+        let rel = |i: usize| BigVector::toward(p, v[i]);
         let (d, ra, rb) = (rel(through), rel(a), rel(b));
-        let e = (Integer::from(&rb.0 - &ra.0), Integer::from(&rb.1 - &ra.1));
-        let den = cross(&d, &e);
+        let den = d.cross(&rb.sub(&ra));
         if den == 0 {
             return None;
         }
-        (cross(&ra, &rb), den, d.0, d.1)
+        (ra.cross(&rb), den, d)
     };
-    let x = Integer::from(p.hx() * &den) + Integer::from(&num * &dx);
-    let y = Integer::from(p.hy() * &den) + Integer::from(&num * &dy);
+    let x = Integer::from(p.hx() * &den) + Integer::from(&num * &d.x);
+    let y = Integer::from(p.hy() * &den) + Integer::from(&num * &d.y);
     let point = RatPoint::new(x, y, Integer::from(p.hw() * &den)).expect("den != 0");
     Some(RayPoint { point, num, den })
 }

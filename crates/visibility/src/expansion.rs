@@ -13,7 +13,7 @@ use crate::polygon::{VisibilityError, VisibilityPolygon};
 use crate::triangulation::{Across, Triangulation};
 use rug::Integer;
 use std::cmp::Ordering;
-use wai_exact::{Point, RatPoint};
+use wai_exact::{BigVector, Point, RatPoint, Vector};
 use wai_map::Map;
 
 /// A map prepared for many visibility queries.
@@ -76,14 +76,16 @@ impl<'a> Frame<'a> {
     fn turn(&self, i: usize, j: usize) -> Ordering {
         match self {
             Frame::Fast { x, y, w, v } => {
-                let (ax, ay) = (w * v[i].x - x, w * v[i].y - y);
-                let (bx, by) = (w * v[j].x - x, w * v[j].y - y);
-                (ax * by - ay * bx).cmp(&0)
+                // Directions below 2^62 (the note above): the differences
+                // fit, and the cross sign takes its i128 path.
+                let d = |k: usize| Vector::new(w * v[k].x - x, w * v[k].y - y);
+                d(i).cross_sign(d(j))
             }
             Frame::Exact { x, y, w, v } => {
-                let d = |k: usize| (Integer::from(w * v[k].x) - x, Integer::from(w * v[k].y) - y);
-                let (a, b) = (d(i), d(j));
-                (a.0 * &b.1 - a.1 * &b.0).cmp0()
+                let d = |k: usize| {
+                    BigVector::new(Integer::from(w * v[k].x) - x, Integer::from(w * v[k].y) - y)
+                };
+                d(i).cross_sign(&d(j))
             }
         }
     }

@@ -16,7 +16,6 @@
 //! Every decision is exact: vertices of V_p are [`wai_exact::RatPoint`]s and
 //! no floating point is used.
 
-mod angle;
 mod assemble;
 mod classify;
 mod expansion;

@@ -9,19 +9,18 @@
 //! spurious edge, Def 3.4), or passes a corner where the two meet, or goes
 //! straight on when they are the same edge.
 
-use crate::angle::{compare_angle, cross, Dir};
 use crate::assemble::assemble;
 use crate::polygon::{VisibilityError, VisibilityPolygon};
 use rug::Integer;
 use std::cmp::Ordering;
-use wai_exact::{locate_rat, Containment, RatPoint};
+use wai_exact::{locate_rat, BigVector, Containment, RatPoint};
 use wai_map::Map;
 
 /// The map seen from p, translated to p and scaled by p's denominator so
 /// that every coordinate is an integer.
 struct Frame {
     /// `W·v_i − (X, Y)` for every map vertex `v_i`, with `p = (X, Y) / W`.
-    rel: Vec<Dir>,
+    rel: Vec<BigVector>,
 }
 
 /// A fraction `num / den` with `den != 0`: the parameter of a point on a
@@ -50,37 +49,31 @@ impl Frame {
         let rel = map
             .vertices()
             .iter()
-            .map(|v| {
-                (
-                    Integer::from(p.hw() * v.x) - p.hx(),
-                    Integer::from(p.hw() * v.y) - p.hy(),
-                )
-            })
+            .map(|&v| BigVector::toward(p, v))
             .collect();
         Frame { rel }
     }
 
-    fn edge(&self, i: usize) -> (&Dir, &Dir) {
+    fn edge(&self, i: usize) -> (&BigVector, &BigVector) {
         (&self.rel[i], &self.rel[(i + 1) % self.rel.len()])
     }
 
     /// Where the ray in direction `d` meets the line of edge `i`:
     /// the parameter `s` with the point at `s·d`. `None` if parallel.
-    fn hit_line(&self, d: &Dir, i: usize) -> Option<Param> {
+    fn hit_line(&self, d: &BigVector, i: usize) -> Option<Param> {
         let (a, b) = self.edge(i);
-        let e = (Integer::from(&b.0 - &a.0), Integer::from(&b.1 - &a.1));
-        let den = cross(d, &e);
+        let den = d.cross(&b.sub(a));
         (den != 0).then(|| Param {
-            num: cross(a, b),
+            num: a.cross(b),
             den,
         })
     }
 
     /// Whether the ray in direction `r` crosses edge `i` in its interior, in
     /// front of p, given that no vertex lies on the ray.
-    fn proper_hit(&self, r: &Dir, i: usize) -> Option<Param> {
+    fn proper_hit(&self, r: &BigVector, i: usize) -> Option<Param> {
         let (a, b) = self.edge(i);
-        let (sa, sb) = (cross(r, a).cmp0(), cross(r, b).cmp0());
+        let (sa, sb) = (r.cross_sign(a), r.cross_sign(b));
         let straddles = matches!(
             (sa, sb),
             (Ordering::Less, Ordering::Greater) | (Ordering::Greater, Ordering::Less)
@@ -93,7 +86,7 @@ impl Frame {
     }
 
     /// The edge nearest to p along the ray in direction `r`.
-    fn nearest(&self, r: &Dir) -> Option<usize> {
+    fn nearest(&self, r: &BigVector) -> Option<usize> {
         let mut best: Option<(usize, Param)> = None;
         for i in 0..self.rel.len() {
             if let Some(s) = self.proper_hit(r, i) {
@@ -119,12 +112,12 @@ pub fn visibility_polygon(map: &Map, p: &RatPoint) -> Result<VisibilityPolygon, 
     let frame = Frame::new(map, p);
     // Distinct vertex directions, counter-clockwise, each with one vertex.
     let mut order: Vec<usize> = (0..map.n()).collect();
-    order.sort_by(|&i, &j| compare_angle(&frame.rel[i], &frame.rel[j]));
+    order.sort_by(|&i, &j| frame.rel[i].compare_angle(&frame.rel[j]));
     let mut dirs: Vec<usize> = Vec::new();
     for &i in &order {
         let new = dirs
             .last()
-            .is_none_or(|&last| compare_angle(&frame.rel[last], &frame.rel[i]) != Ordering::Equal);
+            .is_none_or(|&last| frame.rel[last].compare_angle(&frame.rel[i]) != Ordering::Equal);
         if new {
             dirs.push(i);
         }
@@ -136,8 +129,11 @@ pub fn visibility_polygon(map: &Map, p: &RatPoint) -> Result<VisibilityPolygon, 
     let leaves: Vec<(usize, usize)> = (0..g)
         .map(|k| {
             let (a, b) = (&frame.rel[dirs[k]], &frame.rel[dirs[(k + 1) % g]]);
-            debug_assert!(cross(a, b) > 0, "gap of π or more around an interior point");
-            let r = (Integer::from(&a.0 + &b.0), Integer::from(&a.1 + &b.1));
+            debug_assert!(
+                a.cross_sign(b) == Ordering::Greater,
+                "gap of π or more around an interior point"
+            );
+            let r = a.add(b);
             let edge = frame
                 .nearest(&r)
                 .expect("every ray from an interior point leaves the map");

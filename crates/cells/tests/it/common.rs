@@ -42,16 +42,7 @@ pub fn just_beyond(p: &RatPoint, q: &RatPoint) -> RatPoint {
 
 /// The sign of `(b − a) · (c − a)` for rational points.
 fn dot_sign(a: &RatPoint, b: &RatPoint, c: &RatPoint) -> std::cmp::Ordering {
-    // Scale each difference by the product of its denominators (positive).
-    let diff = |p: &RatPoint, q: &RatPoint| {
-        (
-            Integer::from(p.hx() * q.hw()) - Integer::from(q.hx() * p.hw()),
-            Integer::from(p.hy() * q.hw()) - Integer::from(q.hy() * p.hw()),
-        )
-    };
-    let (ux, uy) = diff(b, a);
-    let (vx, vy) = diff(c, a);
-    (ux * vx + uy * vy).cmp0()
+    b.sub(a).dot_sign(&c.sub(a))
 }
 
 /// For `x` on the line through `a` and `b`: whether it is on the closed

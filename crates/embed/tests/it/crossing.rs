@@ -2,9 +2,9 @@
 //! against lines of sight sampled exactly, and certified crossings.
 
 use rug::Rational;
-use wai_embed::piece::{ints, turn};
-use wai_embed::{crossing, Piece, Pt, SightFan};
-use wai_exact::Point;
+use wai_embed::piece::ints;
+use wai_embed::{crossing, Piece, SightFan};
+use wai_exact::{turn, Point, QPoint};
 
 /// A room [0, 10]², a passage x ∈ [4, 6] up to y = 11 and a chamber
 /// [1, 9] × [11, 14] above it; the passage's top (6, 11)→(4, 11) is the
@@ -58,8 +58,11 @@ fn square(x0: i64, y0: i64) -> Piece {
 #[test]
 fn the_pieces_hold_every_sampled_line_of_sight_and_nothing_else() {
     let fan = fan_of(square(4, 2));
-    let (v1, v2) = (Pt::new(q(6, 1), q(11, 1)), Pt::new(q(4, 1), q(11, 1)));
-    let ceiling = |w: &Pt, through: &Pt| {
+    let (v1, v2) = (
+        QPoint::new(q(6, 1), q(11, 1)),
+        QPoint::new(q(4, 1), q(11, 1)),
+    );
+    let ceiling = |w: &QPoint, through: &QPoint| {
         // Where the line from w through `through` meets y = 14.
         let t = (q(14, 1) - &w.y) / (through.y.clone() - &w.y);
         w.along(&through.sub(w), &t)
@@ -67,7 +70,7 @@ fn the_pieces_hold_every_sampled_line_of_sight_and_nothing_else() {
     let mut sampled = 0;
     for i in 1..8 {
         for j in 1..8 {
-            let w = Pt::new(q(4 * 8 + i, 8), q(2 * 8 + j, 8));
+            let w = QPoint::new(q(4 * 8 + i, 8), q(2 * 8 + j, 8));
             let (s1, s2) = (ceiling(&w, &v1), ceiling(&w, &v2));
             for k in 1..6 {
                 let p = s1.along(&s2.sub(&s1), &q(k, 6));
@@ -83,7 +86,7 @@ fn the_pieces_hold_every_sampled_line_of_sight_and_nothing_else() {
     // Beside the view: the chamber's corner, the passage's wall, a point
     // of the room below the cell, and the ceiling beyond the rays.
     for (x, y) in [(3, 26), (2, 27), (12, 20), (9, 3), (4, 28)] {
-        let x = Pt::new(q(x, 2), q(y, 2));
+        let x = QPoint::new(q(x, 2), q(y, 2));
         assert!(
             !fan.pieces().any(|piece| piece.contains(&x)),
             "{x} included"
@@ -91,7 +94,7 @@ fn the_pieces_hold_every_sampled_line_of_sight_and_nothing_else() {
     }
     // From a single point, the rays through the window's ends graze it:
     // not lines of sight through it.
-    let w = Pt::new(q(5, 1), q(3, 1));
+    let w = QPoint::new(q(5, 1), q(3, 1));
     let point = fan_of(Piece::Point(w.clone()));
     let on_ray = w.along(&ceiling(&w, &v1).sub(&w), &q(99, 100));
     assert!(!point.pieces().any(|piece| piece.contains(&on_ray)));
@@ -114,7 +117,7 @@ fn lines_of_sight_from_two_cells_cross_and_are_certified() {
         std::cmp::Ordering::Less
     );
     // A fan meets itself, a point cell's fan too.
-    let point = fan_of(Piece::Point(Pt::new(q(5, 1), q(5, 1))));
+    let point = fan_of(Piece::Point(QPoint::new(q(5, 1), q(5, 1))));
     assert!(crossing(&ring, &point, &left, false).is_some());
 }
 

@@ -4,8 +4,8 @@
 
 use std::fmt::Write;
 use wai_cells::Decomposition;
-use wai_embed::{common_interior_point, witness_regions, Embedder, Pt};
-use wai_exact::RatPoint;
+use wai_embed::{common_interior_point, witness_regions, Embedder};
+use wai_exact::{QPoint, RatPoint};
 use wai_visibility::{Skeleton, VisibilityIndex};
 
 #[test]
@@ -23,11 +23,11 @@ fn fan_counts() {
         let hs = Embedder::new(&index).embeddings(&key);
         let origins: Vec<usize> = hs.iter().map(|h| h.origin).collect();
         let ws = witness_regions(&d, class, &origins);
-        let valid: Vec<Vec<Pt>> = hs
+        let valid: Vec<Vec<QPoint>> = hs
             .iter()
             .zip(&ws)
             .filter(|(_, w)| w.is_valid())
-            .map(|(h, _)| h.polygon(&map).into_iter().map(Pt::from).collect())
+            .map(|(h, _)| h.polygon(&map).into_iter().map(QPoint::from).collect())
             .collect();
         let sharing = common_interior_point(&valid).is_some();
         writeln!(

@@ -6,12 +6,12 @@
 use crate::common::maps;
 use rug::Rational;
 use wai_cells::Decomposition;
-use wai_embed::{piece_of, CellRef, Mutual, Piece, Pt, Sightlines};
-use wai_exact::sees;
+use wai_embed::{piece_of, CellRef, Mutual, Piece, Sightlines};
+use wai_exact::{sees, QPoint};
 
 /// A few points of a piece: its inner point and, for a polygon, convex
 /// combinations of its vertices with small positive weights.
-fn samples(p: &Piece) -> Vec<Pt> {
+fn samples(p: &Piece) -> Vec<QPoint> {
     let mut out = vec![p.inner_point()];
     let v = p.vertices();
     if let Piece::Segment(a, b) = p {
@@ -25,7 +25,7 @@ fn samples(p: &Piece) -> Vec<Pt> {
                 .map(|i| 1 + ((i * 7 + s * 3) % 5) as u32)
                 .collect();
             let total: u32 = weights.iter().sum();
-            let mut q = Pt::new(Rational::new(), Rational::new());
+            let mut q = QPoint::new(Rational::new(), Rational::new());
             for (p, w) in v.iter().zip(&weights) {
                 q = q.add(&p.scale(&Rational::from((*w, total))));
             }
@@ -104,8 +104,8 @@ fn grazing_blocks_and_collinear_pieces_are_handled() {
         .to_vec();
     let m = wai_map::Map::from_ring(ring).unwrap().0;
     let sl = Sightlines::new(&m);
-    let pt = |x: i64, y: i64| Pt::new(Rational::from(x), Rational::from(y));
-    let q = |x: i64, y: i64, d: i64| Pt::new(Rational::from((x, d)), Rational::from((y, d)));
+    let pt = |x: i64, y: i64| QPoint::new(Rational::from(x), Rational::from(y));
+    let q = |x: i64, y: i64, d: i64| QPoint::new(Rational::from((x, d)), Rational::from((y, d)));
     // Two triangles beyond the diagonal x + y = 4 through the reflex
     // vertex (2, 2), their tips on it: every segment between them passes
     // at or beyond the vertex.

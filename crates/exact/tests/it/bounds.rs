@@ -18,7 +18,9 @@
 //!   none does.
 
 use rug::Integer;
-use wai_exact::{INTERSECTION_FAST_BITS, ORIENTATION_FAST_BITS};
+use wai_exact::{
+    HOMOGENEOUS_FAST_BITS, INTERSECTION_FAST_BITS, ORIENTATION_FAST_BITS, VECTOR_FAST_BITS,
+};
 
 /// The arithmetic of one fast path.
 trait Arith: Clone {
@@ -156,6 +158,35 @@ fn compare_along<N: Arith>(c: &[N]) -> N {
         .add(&qy.sub(py).mul(&by.sub(ay)))
 }
 
+/// `Vector::cross(u, v)` as in `vector.rs`: `c = [ux, uy, vx, vy]`.
+fn vector_cross<N: Arith>(c: &[N]) -> N {
+    let [ux, uy, vx, vy] = c else {
+        panic!("4 components")
+    };
+    cross(ux, uy, vx, vy)
+}
+
+/// `Vector::dot(u, v)` as in `vector.rs`.
+fn vector_dot<N: Arith>(c: &[N]) -> N {
+    let [ux, uy, vx, vy] = c else {
+        panic!("4 components")
+    };
+    ux.mul(vx).add(&uy.mul(vy))
+}
+
+/// The homogeneous determinant of `det3_sign_small` in `vector.rs` (the
+/// fast path of `turn` and `orientation_rat`): rows `(X, Y, W)` of `a`,
+/// `b`, `c`.
+fn homogeneous_orientation<N: Arith>(c: &[N]) -> N {
+    let [a0, a1, a2, b0, b1, b2, c0, c1, c2] = c else {
+        panic!("9 entries")
+    };
+    let m0 = b1.mul(c2).sub(&b2.mul(c1));
+    let m1 = b0.mul(c2).sub(&b2.mul(c0));
+    let m2 = b0.mul(c1).sub(&b1.mul(c0));
+    a0.mul(&m0).sub(&a1.mul(&m1)).add(&a2.mul(&m2))
+}
+
 /// The six points of three lines, as `(ax, ay, bx, by)` per line.
 type Lines<'a, N> = [(&'a N, &'a N, &'a N, &'a N); 3];
 
@@ -208,8 +239,32 @@ struct FastPath {
     checked: fn(&[Checked]) -> Checked,
 }
 
-fn fast_paths() -> [FastPath; 4] {
+fn fast_paths() -> [FastPath; 7] {
     [
+        FastPath {
+            name: "vector_cross",
+            arity: 4,
+            bits: VECTOR_FAST_BITS,
+            exact: vector_cross,
+            interval: vector_cross,
+            checked: vector_cross,
+        },
+        FastPath {
+            name: "vector_dot",
+            arity: 4,
+            bits: VECTOR_FAST_BITS,
+            exact: vector_dot,
+            interval: vector_dot,
+            checked: vector_dot,
+        },
+        FastPath {
+            name: "homogeneous_orientation",
+            arity: 9,
+            bits: HOMOGENEOUS_FAST_BITS,
+            exact: homogeneous_orientation,
+            interval: homogeneous_orientation,
+            checked: homogeneous_orientation,
+        },
         FastPath {
             name: "orientation",
             arity: 6,
@@ -370,6 +425,14 @@ fn slack_of_each_bound_is_as_derived() {
     // reach 125 bits, one or two below the proven 127.
     check("side_of_intersection", 127, 125);
     check("compare_intersections_along", 127, 125);
+    // Vector::cross and Vector::dot: components below 2^63, products below
+    // 2^126, their sum or difference reaches 2 (2^63 - 1)^2 < 2^127: tight.
+    check("vector_cross", 127, 127);
+    check("vector_dot", 127, 127);
+    // The homogeneous determinant at B = 41: minors below 2^83, terms below
+    // 2^124, the sum of three below 3 · 2^124 < 2^126 (proven); the corner
+    // inputs reach 125 bits.
+    check("homogeneous_orientation", 126, 125);
 }
 
 /// The derivation of each note, number by number: differences, cross

@@ -12,8 +12,8 @@ use proptest::prelude::*;
 use rug::Integer;
 use std::mem::discriminant;
 use wai_exact::{
-    classify_segments, locate, orientation, sees, Containment, Orientation, Point, RatPoint,
-    Segment, SegmentIntersection as X, Sight,
+    classify_segments, convex_hull, locate, sees, Containment, Point, QPoint, RatPoint, Segment,
+    SegmentIntersection as X, Sight,
 };
 
 use Sight::{EndpointOutside, Exterior, Visible};
@@ -229,27 +229,13 @@ fn w_shape() {
 // ---------------------------------------------------------------------------
 // Properties.
 
-/// The convex hull of `ps`, counter-clockwise, without collinear vertices.
-fn hull(mut ps: Vec<Point>) -> Vec<Point> {
-    ps.sort();
-    ps.dedup();
-    let mut h: Vec<Point> = Vec::new();
-    for pass in 0..2 {
-        let start = h.len();
-        for &p in &ps {
-            while h.len() >= start + 2
-                && orientation(h[h.len() - 2], h[h.len() - 1], p) != Orientation::CounterClockwise
-            {
-                h.pop();
-            }
-            h.push(p);
-        }
-        h.pop();
-        if pass == 0 {
-            ps.reverse();
-        }
-    }
-    h
+/// The convex hull of `ps`, counter-clockwise, without collinear vertices
+/// (the crate's [`convex_hull`], on integer points).
+fn hull(ps: Vec<Point>) -> Vec<Point> {
+    convex_hull(ps.into_iter().map(QPoint::from).collect())
+        .iter()
+        .map(|q| q.to_point().expect("a hull vertex is an input point"))
+        .collect()
 }
 
 /// A strictly positive combination of the vertices: an interior point of a

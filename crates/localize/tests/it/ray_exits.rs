@@ -6,7 +6,9 @@
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 use rug::{Integer, Rational};
-use wai_exact::{locate_rat, orientation_rat, Containment, Orientation, Point, RatPoint};
+use wai_exact::{
+    locate_rat, orientation_rat, BigVector, Containment, Orientation, Point, RatPoint,
+};
 use wai_localize::ray_exits::{Exit, RayExits, Side};
 use wai_map::Map;
 
@@ -105,10 +107,9 @@ fn exit_point(ring: &[Point], a: usize, d: &(Integer, Integer), exit: Exit) -> R
         Exit::Edge(e) => {
             let (p, q) = (ring[e], ring[(e + 1) % n]);
             let o = ring[a];
-            let pq = (Integer::from(q.x - p.x), Integer::from(q.y - p.y));
-            let po = (Integer::from(p.x - o.x), Integer::from(p.y - o.y));
-            let num = Integer::from(&po.0 * &pq.1) - Integer::from(&po.1 * &pq.0);
-            let den = Integer::from(&d.0 * &pq.1) - Integer::from(&d.1 * &pq.0);
+            let pq = BigVector::between(p, q);
+            let num = BigVector::between(o, p).cross(&pq);
+            let den = BigVector::new(d.0.clone(), d.1.clone()).cross(&pq);
             let (num, den) = if den < 0 { (-num, -den) } else { (num, den) };
             let x = along(o, d, &num, &den);
             // An edge exit lies strictly inside its edge.

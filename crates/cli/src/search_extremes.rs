@@ -168,7 +168,7 @@ impl Progress {
     }
 }
 
-pub fn search_extremes(args: &Args) -> Result<(), Failure> {
+pub fn run(args: &Args) -> Result<(), Failure> {
     let budget = args
         .budget
         .as_deref()
@@ -316,7 +316,7 @@ fn note(args: &Args, f: &Found, outcome: &Outcome, rank: usize) -> String {
     };
     format!(
         "An extreme map, not a figure of the thesis: {place} value of {} that the seeded local \
-         search of `wai search-extremes` (issue 10) reached with seed {} in {} evaluations: {v} \
+         search of `wai search-extremes` reached with seed {} in {} evaluations: {v} \
          ≈ {} on n = {}, r = {}, from the start {} after {} accepted mutations (evaluation {}). \
          For comparison, {families}. {verdict}. meta.search has the details and the command \
          that reproduces the run.",
@@ -524,7 +524,7 @@ mod tests {
             stall: 5,
             free_angles: false,
         };
-        search_extremes(&args).unwrap();
+        run(&args).unwrap();
         let first = dir.join("T5.17-extreme-ec-seed1.json");
         let v: serde_json::Value = serde_json::from_slice(&std::fs::read(&first).unwrap()).unwrap();
         assert_eq!(

@@ -11,15 +11,23 @@ use wai_gen::mutate::Limits;
 use wai_hunt::climb::{self, Config, Starts};
 use wai_hunt::target::Target;
 
-use crate::check::Args;
 use crate::Failure;
 
 /// Evaluations when neither --evals nor --budget is given.
 const DEFAULT_EVALS: u64 = 2000;
 
-pub fn target(args: &Args, spec: &str, budget: Option<Duration>) -> Result<(), Failure> {
+/// The search of `--target spec`: at most `evals` evaluations (default
+/// [`DEFAULT_EVALS`] without a budget) or `budget`, from `seed`; a map found
+/// is stored in `out` (default `counterexamples/`).
+pub fn run(
+    spec: &str,
+    evals: Option<u64>,
+    budget: Option<Duration>,
+    seed: u64,
+    out: Option<&std::path::Path>,
+) -> Result<(), Failure> {
     let target = Target::parse(spec).map_err(Failure::usage)?;
-    let evals = match (args.evals, budget) {
+    let evals = match (evals, budget) {
         (None, None) => Some(DEFAULT_EVALS),
         (e, _) => e,
     };
@@ -27,16 +35,16 @@ pub fn target(args: &Args, spec: &str, budget: Option<Duration>) -> Result<(), F
         max_n: 40,
         ..Limits::default()
     };
-    let mut starts = climb::start_maps(Starts::Both, args.seed, &limits);
+    let mut starts = climb::start_maps(Starts::Both, seed, &limits);
     for layout in wai_gen::LAYOUTS {
         for s in 0..4 {
-            if let Ok(m) = wai_gen::layout(layout.id, args.seed.wrapping_add(s)) {
-                starts.push((format!("{} seed={}", layout.id, args.seed + s), m));
+            if let Ok(m) = wai_gen::layout(layout.id, seed.wrapping_add(s)) {
+                starts.push((format!("{} seed={}", layout.id, seed + s), m));
             }
         }
     }
     let config = Config {
-        seed: args.seed,
+        seed: seed,
         evals,
         budget,
         limits,
@@ -62,7 +70,7 @@ pub fn target(args: &Args, spec: &str, budget: Option<Duration>) -> Result<(), F
         outcome.evaluations,
         outcome.elapsed.as_secs(),
         outcome.starts.len(),
-        args.seed
+        seed
     );
     let Some(best) = outcome.best.first() else {
         println!(
@@ -82,10 +90,7 @@ pub fn target(args: &Args, spec: &str, budget: Option<Duration>) -> Result<(), F
         );
         return Ok(());
     }
-    let out = args
-        .out
-        .clone()
-        .unwrap_or_else(|| PathBuf::from("counterexamples"));
+    let out = out.map_or_else(|| PathBuf::from("counterexamples"), PathBuf::from);
     std::fs::create_dir_all(&out).map_err(|e| Failure::io(format!("{}: {e}", out.display())))?;
     let slug: String = target
         .case
@@ -98,7 +103,7 @@ pub fn target(args: &Args, spec: &str, budget: Option<Duration>) -> Result<(), F
     let reproduce = format!(
         "wai check --target {} --seed {} --evals {}",
         target.name(),
-        args.seed,
+        seed,
         best.at
     );
     let note = format!(
