@@ -226,7 +226,8 @@ pub static CLAIMS: &[Claim] = &[
         Exact,
         "Corollary 3.8",
         "A localization query has at most r answers.",
-    ),
+    )
+    .checked(ch3::c3_8::CHECKER),
     c(
         "T3.9a",
         Exact,
@@ -246,7 +247,8 @@ pub static CLAIMS: &[Claim] = &[
         Tight,
         "Theorem 3.9 (tightness), Fig 3.15",
         "A corridor with r niches opposite a convex chain has Omega(n^2 r) cells.",
-    ),
+    )
+    .checked(ch3::t3_9c::CHECKER),
     c(
         "L3.7t",
         Tight,
@@ -266,7 +268,8 @@ pub static CLAIMS: &[Claim] = &[
         Example,
         "Remark 3.4, Fig 3.10",
         "An embedding can have no witness when its candidate edge is shorter than the artificial edge.",
-    ),
+    )
+    .checked(ch3::r3_4::CHECKER),
     // Chapter 4 — overlapping embeddings.
     c(
         "E4.1",

@@ -689,6 +689,13 @@ struct Tight {
 /// term from n.
 const TIGHT: &[Tight] = &[
     Tight {
+        plot: "cells_vs_n2r.svg",
+        series: "comb-convex-chain",
+        slope: 1.0,
+        what: "T3.9c: cells = Omega(n^2 r), Fig 3.15 with niches = chain = k \
+               (k·⌈k/2⌉·⌊k/2⌋ crossings against (5k + 2)²·2k)",
+    },
+    Tight {
         plot: "c_sing_vs_r2.svg",
         series: "convex-niches",
         slope: 1.0,

@@ -51,6 +51,23 @@ fn members(id: &str) -> Arc<Vec<(u32, Vec<Point>)>> {
     m
 }
 
+/// `(niches, chain)` if `map` is exactly `wai_gen::comb_convex_chain(niches,
+/// chain)` (same vertices in the same order), at any size the family
+/// builds. The two parameters follow from n = 4·niches + chain + 2 and
+/// r = 2·niches, so one map is generated and compared.
+pub fn comb_parameters(map: &Map) -> Option<(u32, u32)> {
+    let r = map.reflex_vertices().len();
+    if r == 0 || !r.is_multiple_of(2) {
+        return None;
+    }
+    let niches = r / 2;
+    let chain = map.n().checked_sub(4 * niches + 2)?;
+    let (niches, chain) = (u32::try_from(niches).ok()?, u32::try_from(chain).ok()?);
+    wai_gen::comb_convex_chain(niches, chain)
+        .is_ok_and(|f| f.vertices() == map.vertices())
+        .then_some((niches, chain))
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -64,5 +81,17 @@ mod tests {
         assert_eq!(parameter_of(&m, "corridor-niches"), None);
         let r = wai_gen::random("random-orthogonal", 12, 0).unwrap();
         assert_eq!(parameter_of(&r, "overlap-fan"), None);
+    }
+
+    #[test]
+    fn recognises_both_comb_parameters() {
+        for (niches, chain) in [(1, 2), (3, 3), (2, 16), (12, 5)] {
+            let m = wai_gen::family("comb-convex-chain", &[niches, chain])
+                .unwrap()
+                .with_name("renamed");
+            assert_eq!(comb_parameters(&m), Some((niches, chain)));
+        }
+        let c = wai_gen::family("corridor-niches", &[3]).unwrap();
+        assert_eq!(comb_parameters(&c), None);
     }
 }

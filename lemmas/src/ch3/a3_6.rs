@@ -41,6 +41,16 @@
 //! interior point (T3.3b checks that it is the skeleton of the whole open
 //! cell). **Not covered:** points of ∂M (the thesis assumes viewpoints off
 //! the boundary).
+//!
+//! ## Cases
+//! Where the rule holds, by the part of it that decided: **one ray** (an
+//! edge covered by one ray: its anchor's side), **collinear rays** (an edge
+//! covered by several rays pointing one way: the nearest anchor behind it),
+//! **vertex** (an interior vertex: the cell on the assigned side of every
+//! ray through it); where it fails: **fails on 1-cell**, **fails on 0-cell**
+//! (the known failures) and **wrong cell** (unexplained). Counts: `ray
+//! edges` and `interior vertices` examined, `conflicts` (pieces the
+//! assignment reports as a [`Conflict`]), `no skeleton`.
 
 use serde_json::{json, Value};
 use wai_cells::{Arrangement, Conflict, FaceId, Support};
@@ -49,25 +59,56 @@ use wai_map::Map;
 use wai_visibility::VisibilityIndex;
 
 use super::t3_3b::{embedded_json, interior_points, skeleton_at, Embedded};
-use crate::framework::{Checker, Known, Report, Violation};
+use crate::framework::{Case, Checker, Known, Report, Violation};
 use wai_study::sample;
 use wai_study::Study;
 
 const ID: &str = "A3.6";
 
 /// The checker of this claim, with its two known failures.
-pub const CHECKER: Checker = Checker::new(ID, check_study).with_known(&[
-    Known {
-        kind: FAILS_ON_1_CELL,
-        what: "a ray edge whose skeleton is no adjacent 2-cell's: a one-dimensional cell \
+pub const CHECKER: Checker = Checker::new(ID, check_study)
+    .with_cases(&[
+        Case {
+            name: ONE_RAY,
+            what: "the rule holds on an edge covered by one ray (its anchor's side, sec. 3.6)",
+        },
+        Case {
+            name: COLLINEAR_RAYS,
+            what: "the rule holds on an edge covered by collinear rays pointing one way (the \
+                   nearest anchor behind it decides)",
+        },
+        Case {
+            name: VERTEX,
+            what: "the rule holds at an interior vertex (the cell on the assigned side of \
+                   every ray through it)",
+        },
+        Case {
+            name: FAILS_1,
+            what: "an edge with the skeleton of no adjacent 2-cell, or rays pointing both ways \
+                   along it: a 1-cell (known failure)",
+        },
+        Case {
+            name: FAILS_0,
+            what: "an interior vertex with the skeleton of no incident 2-cell, or rays with no \
+                   common side: a 0-cell (known failure)",
+        },
+        Case {
+            name: WRONG,
+            what: "a piece with an adjacent 2-cell's skeleton that the rule did not choose",
+        },
+    ])
+    .with_known(&[
+        Known {
+            kind: FAILS_ON_1_CELL,
+            what: "a ray edge whose skeleton is no adjacent 2-cell's: a one-dimensional cell \
                (opposite collinear rays, counterexamples/T3.3b-doorway-1d-cell.json)",
-    },
-    Known {
-        kind: FAILS_ON_0_CELL,
-        what: "an interior vertex whose skeleton is no incident 2-cell's: a zero-dimensional \
+        },
+        Known {
+            kind: FAILS_ON_0_CELL,
+            what: "an interior vertex whose skeleton is no incident 2-cell's: a zero-dimensional \
                cell (rays crossing with no common side)",
-    },
-]);
+        },
+    ]);
 
 /// `data["kind"]`: an edge whose skeleton is no adjacent 2-cell's (the
 /// known failure: a one-dimensional cell).
@@ -81,30 +122,22 @@ pub const WRONG_CELL: &str = "wrong-cell";
 /// `data["kind"]`: a point or cell whose skeleton cannot be built.
 pub const NO_SKELETON: &str = "no-skeleton";
 
-/// How the examined pieces of one map (or a run) came out.
-#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
-pub struct Tally {
-    /// Ray edges examined.
-    pub edges: u64,
-    /// Interior vertices examined.
-    pub vertices: u64,
-    /// Pieces with the skeleton of their assigned cell.
-    pub holds: u64,
-    /// Edges with the skeleton of no adjacent 2-cell.
-    pub fails_on_1_cell: u64,
-    /// Vertices with the skeleton of no incident 2-cell.
-    pub fails_on_0_cell: u64,
-    /// Pieces with an adjacent 2-cell's skeleton, not the assigned one's.
-    pub wrong_cell: u64,
-    /// Pieces or cells without a skeleton.
-    pub no_skeleton: u64,
-    /// Pieces the assignment reports as a [`Conflict`].
-    pub conflicts: u64,
-}
+/// Case: the rule holds on an edge of one ray.
+pub const ONE_RAY: &str = "one ray";
+/// Case: the rule holds on an edge of collinear rays pointing one way.
+pub const COLLINEAR_RAYS: &str = "collinear rays";
+/// Case: the rule holds at an interior vertex.
+pub const VERTEX: &str = "vertex";
+/// Case: the known failure on a 1-cell.
+pub const FAILS_1: &str = "fails on 1-cell";
+/// Case: the known failure on a 0-cell.
+pub const FAILS_0: &str = "fails on 0-cell";
+/// Case: a piece given the wrong adjacent cell.
+pub const WRONG: &str = "wrong cell";
 
 /// Checks A3.6 on every ray piece and ray vertex of a map.
 fn check_study(study: &Study<'_>) -> Report {
-    check_with_tally(study).0
+    check_arrangement(study.map(), study.arrangement(), study.index(), None)
 }
 
 /// The verdict on one piece, from its skeleton, its assigned cell's (`None`:
@@ -131,11 +164,6 @@ fn verdict(
     }
 }
 
-/// [`Checker::check`] with the tally of outcomes.
-pub fn check_with_tally(study: &Study<'_>) -> (Report, Tally) {
-    check_arrangement(study.map(), study.arrangement(), study.index(), None)
-}
-
 /// The check on a built arrangement. `plant` replaces the skeleton of
 /// one cell, for the planted-violation test.
 fn check_arrangement(
@@ -143,10 +171,9 @@ fn check_arrangement(
     arr: &Arrangement,
     index: &VisibilityIndex<'_>,
     plant: Option<(FaceId, Embedded)>,
-) -> (Report, Tally) {
+) -> Report {
     let name = sample::map_name(map);
     let mut report = Report::new(ID);
-    let mut tally = Tally::default();
     // The skeleton of each cell, at an interior point.
     let mut cell: Vec<Result<Embedded, String>> =
         vec![Err("the outer face".into()); arr.face_count()];
@@ -181,8 +208,8 @@ fn check_arrangement(
         let owner = arr.owner_of_edge(e);
         let at = skeleton_at(index, &p);
         let conflict = conflict_here.is_some();
-        tally.edges += 1;
-        tally.conflicts += u64::from(conflict);
+        report.count("ray edges", 1);
+        report.count("conflicts", u64::from(conflict));
         // Rays pointing both ways along the edge with opposite sides
         // (a doorway): the rule has no answer, whatever the skeleton.
         let both_ways = conflict_here == Some(true);
@@ -192,7 +219,12 @@ fn check_arrangement(
             &[&cell[f0], &cell[f1]],
             FAILS_ON_1_CELL,
         );
-        count(&mut tally, v);
+        let holds = if arr.edge_rays(e).len() > 1 {
+            COLLINEAR_RAYS
+        } else {
+            ONE_RAY
+        };
+        count(&mut report, v, holds);
         report.record(v.map(|kind| {
             Violation::with_data(
                 format!(
@@ -222,10 +254,10 @@ fn check_arrangement(
         let owner = arr.owner_of_vertex(v);
         let at = skeleton_at(index, &p);
         let adjacent: Vec<&Result<Embedded, String>> = incident.iter().map(|&f| &cell[f]).collect();
-        tally.vertices += 1;
-        tally.conflicts += u64::from(owner.is_none());
+        report.count("interior vertices", 1);
+        report.count("conflicts", u64::from(owner.is_none()));
         let verdict = verdict(&at, owner.map(|f| &cell[f]), &adjacent, FAILS_ON_0_CELL);
-        count(&mut tally, verdict);
+        count(&mut report, verdict, VERTEX);
         report.record(verdict.map(|kind| {
             Violation::with_data(
                 format!(
@@ -243,16 +275,17 @@ fn check_arrangement(
             )
         }));
     }
-    (report, tally)
+    report
 }
 
-fn count(t: &mut Tally, v: Option<&str>) {
+/// Counts a verdict: `holds` is the case of a piece where the rule holds.
+fn count(report: &mut Report, v: Option<&str>, holds: &'static str) {
     match v {
-        None => t.holds += 1,
-        Some(FAILS_ON_1_CELL) => t.fails_on_1_cell += 1,
-        Some(FAILS_ON_0_CELL) => t.fails_on_0_cell += 1,
-        Some(WRONG_CELL) => t.wrong_cell += 1,
-        Some(_) => t.no_skeleton += 1,
+        None => report.hit(holds),
+        Some(FAILS_ON_1_CELL) => report.hit(FAILS_1),
+        Some(FAILS_ON_0_CELL) => report.hit(FAILS_0),
+        Some(WRONG_CELL) => report.hit(WRONG),
+        Some(_) => report.count("no skeleton", 1),
     }
 }
 
@@ -271,20 +304,28 @@ mod tests {
     use super::*;
     use crate::fixtures;
 
+    fn case(r: &Report, c: &str) -> u64 {
+        r.cases.get(c).copied().unwrap_or(0)
+    }
+
     #[test]
     fn the_rule_holds_in_the_l_room() {
-        let (r, t) = check_with_tally(&Study::new(&fixtures::l_room().0));
+        let r = CHECKER.run(&Study::new(&fixtures::l_room().0));
         assert!(r.violations.is_empty(), "{:?}", r.violations);
-        assert_eq!(r.examined, t.edges + t.vertices);
-        assert!(t.edges >= 4 && t.holds == r.examined, "{t:?}");
+        let count = |c: &str| r.counts.get(c).copied().unwrap_or(0);
+        let (edges, vertices) = (count("ray edges"), count("interior vertices"));
+        assert_eq!(r.examined, edges + vertices);
+        let holds = case(&r, ONE_RAY) + case(&r, COLLINEAR_RAYS) + case(&r, VERTEX);
+        assert!(edges >= 4 && holds == r.examined, "{:?}", r.cases);
     }
 
     /// The known failure: the doorway's segment is a 1-cell.
     #[test]
     fn the_doorway_fails_on_a_1_cell() {
-        let (r, t) = check_with_tally(&Study::new(&fixtures::s_tetromino()));
-        assert!(t.fails_on_1_cell >= 1, "{t:?}");
-        assert_eq!((t.wrong_cell, t.no_skeleton), (0, 0), "{t:?}");
+        let r = CHECKER.run(&Study::new(&fixtures::s_tetromino()));
+        assert!(case(&r, FAILS_1) >= 1, "{:?}", r.cases);
+        assert_eq!(case(&r, WRONG), 0, "{:?}", r.cases);
+        assert!(!r.counts.contains_key("no skeleton"), "{:?}", r.counts);
         assert!(r.violations.iter().all(|v| CHECKER.is_known(v)));
     }
 
@@ -301,11 +342,12 @@ mod tests {
         let ring: Vec<RatPoint> = arr.face_points(f);
         let (o, mut key) = skeleton_at(&index, &interior_points(&ring).unwrap()[0]).unwrap();
         key.offsets[0].0 += 1;
-        let (r, t) = check_arrangement(&map, &arr, &index, Some((f, (o, key))));
+        let r = check_arrangement(&map, &arr, &index, Some((f, (o, key))));
         assert!(!r.violations.is_empty());
         assert!(
-            t.fails_on_1_cell + t.fails_on_0_cell + t.wrong_cell > 0,
-            "{t:?}"
+            case(&r, FAILS_1) + case(&r, FAILS_0) + case(&r, WRONG) > 0,
+            "{:?}",
+            r.cases
         );
     }
 }

@@ -22,19 +22,95 @@
 //!
 //! The checker trusts no stored field it can recompute. What is not
 //! covered: viewpoints outside the sample.
+//!
+//! ## Cases
+//! Each edge by the kind its geometry gives: **spurious**, **full**,
+//! **half**, **partial**; among the spurious ones, **along a map edge**
+//! (the spurious edge runs along a map edge collinear with p, which p
+//! cannot certify: the leftmost spurious edge of Fig 3.3); each blocking
+//! vertex by its edge: **blocks a half edge**, **blocks a partial edge**
+//! (Def 3.6: one, resp. two per edge).
 
 use serde_json::json;
+use wai_exact::{orientation_rat, Orientation, RatPoint};
 use wai_map::Map;
 use wai_visibility::{EdgeKind, OnMap, VisibilityPolygon};
 
-use crate::framework::{Checker, Report, Violation};
+use crate::framework::{Case, Checker, Report, Violation};
 use wai_study::sample::{self, closer, edge_collinear_with_viewpoint, vertex_spurious_by_def};
 use wai_study::Study;
 
 const ID: &str = "D3.5";
 
 /// The checker of this claim.
-pub const CHECKER: Checker = Checker::new(ID, check_study);
+pub const CHECKER: Checker = Checker::new(ID, check_study).with_cases(&[
+    Case {
+        name: SPURIOUS,
+        what: "a spurious edge of V_p (Def 3.4: collinear with p)",
+    },
+    Case {
+        name: FULL,
+        what: "a full edge (Def 3.5: both ends non-spurious)",
+    },
+    Case {
+        name: HALF,
+        what: "a half edge (Def 3.5: one end spurious)",
+    },
+    Case {
+        name: PARTIAL,
+        what: "a partial edge (Def 3.5: both ends spurious)",
+    },
+    Case {
+        name: ALONG_MAP_EDGE,
+        what: "a spurious edge running along a map edge collinear with p (Fig 3.3, after \
+               Def 3.4)",
+    },
+    Case {
+        name: BLOCKS_HALF,
+        what: "the blocking vertex of a half edge (Def 3.6)",
+    },
+    Case {
+        name: BLOCKS_PARTIAL,
+        what: "one of the two blocking vertices of a partial edge (Def 3.6)",
+    },
+]);
+
+/// Case: a spurious edge.
+pub const SPURIOUS: &str = "spurious";
+/// Case: a full edge.
+pub const FULL: &str = "full";
+/// Case: a half edge.
+pub const HALF: &str = "half";
+/// Case: a partial edge.
+pub const PARTIAL: &str = "partial";
+/// Case: a spurious edge along a map edge.
+pub const ALONG_MAP_EDGE: &str = "along a map edge";
+/// Case: a blocking vertex of a half edge.
+pub const BLOCKS_HALF: &str = "blocks a half edge";
+/// Case: a blocking vertex of a partial edge.
+pub const BLOCKS_PARTIAL: &str = "blocks a partial edge";
+
+/// Whether spurious edge `i` of V_p runs along a map edge: its near end is
+/// a map vertex one of whose neighbours lies on the edge's ray from p,
+/// beyond it.
+fn along_map_edge(map: &Map, vp: &VisibilityPolygon, i: usize) -> bool {
+    let n = vp.len();
+    let v = vp.vertices();
+    let p = vp.viewpoint();
+    let (a, b) = (&v[i].point, &v[(i + 1) % n].point);
+    let near = if closer(p, a, b) { i } else { (i + 1) % n };
+    let OnMap::Vertex(m) = v[near].on_map else {
+        return false;
+    };
+    if m >= map.n() {
+        return false;
+    }
+    let u = &v[near].point;
+    [(m + 1) % map.n(), (m + map.n() - 1) % map.n()]
+        .into_iter()
+        .map(|k| RatPoint::from(map.vertices()[k]))
+        .any(|w| orientation_rat(p, u, &w) == Orientation::Collinear && closer(p, u, &w))
+}
 
 /// Checks D3.5 on the sampled viewpoints of a map.
 fn check_study(study: &Study<'_>) -> Report {
@@ -88,6 +164,15 @@ pub fn check_polygon(map: &Map, vp: &VisibilityPolygon) -> Report {
                 .collect()
         };
         let want_blocking: Vec<usize> = ends.iter().map(|&(_, _, u)| u).collect();
+        report.hit(match want {
+            EdgeKind::Spurious => SPURIOUS,
+            EdgeKind::Full => FULL,
+            EdgeKind::Half => HALF,
+            EdgeKind::Partial => PARTIAL,
+        });
+        if want == EdgeKind::Spurious && along_map_edge(map, vp, i) {
+            report.hit(ALONG_MAP_EDGE);
+        }
         // Every edge: one kind, the one its geometry gives.
         let flags_ok = [i, j]
             .iter()
@@ -133,6 +218,11 @@ pub fn check_polygon(map: &Map, vp: &VisibilityPolygon) -> Report {
                 )
             }));
             // Its blocking vertex u is a reflex vertex of M (after Def 3.6).
+            report.hit(if want == EdgeKind::Half {
+                BLOCKS_HALF
+            } else {
+                BLOCKS_PARTIAL
+            });
             let at_map_vertex = match v[u].on_map {
                 OnMap::Vertex(m) if m < map.n() => {
                     (v[u].point.to_point() == Some(map.vertices()[m])).then_some(m)
@@ -173,9 +263,34 @@ mod tests {
         // spurious edge pair around the partial edge.
         assert!(r.examined >= vp.len() as u64 + 4, "{}", r.examined);
         assert!(r.violations.is_empty(), "{:?}", r.violations);
+        assert_eq!(r.cases.get(PARTIAL), Some(&1));
+        assert_eq!(r.cases.get(BLOCKS_PARTIAL), Some(&2));
+        let edges = [SPURIOUS, FULL, HALF, PARTIAL].map(|c| r.cases.get(c).copied().unwrap_or(0));
+        assert_eq!(edges.iter().sum::<u64>(), vp.len() as u64);
         let r = CHECKER.check_map(&map);
         assert!(r.examined > 0);
         assert!(r.violations.is_empty(), "{:?}", r.violations);
+    }
+
+    #[test]
+    fn a_spurious_edge_along_a_map_edge_is_counted() {
+        // From (2, 1) in the L room the wall (2, 2)–(2, 4) lies on the ray
+        // from p through the reflex vertex (2, 2): V_p's spurious edge from
+        // (2, 2) to (2, 4) runs along it, and p cannot certify it.
+        let pts = [(0, 0), (4, 0), (4, 2), (2, 2), (2, 4), (0, 4)];
+        let map = Map::from_ring(
+            pts.iter()
+                .map(|&(x, y)| wai_exact::Point::new(x, y))
+                .collect(),
+        )
+        .unwrap()
+        .0;
+        let vp = wai_visibility::VisibilityIndex::new(&map)
+            .visibility_polygon(&RatPoint::from(wai_exact::Point::new(2, 1)))
+            .unwrap();
+        let r = check_polygon(&map, &vp);
+        assert!(r.violations.is_empty(), "{:?}", r.violations);
+        assert_eq!(r.cases.get(ALONG_MAP_EDGE), Some(&1), "{:?}", r.cases);
     }
 
     #[test]

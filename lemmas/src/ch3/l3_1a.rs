@@ -16,19 +16,44 @@
 //! (an adjacent edge collinear with p whose other endpoint is closer to p),
 //! makes it spurious — so the verdict does not rest on the stored flags
 //! alone. What is not covered: viewpoints outside the sample.
+//!
+//! ## Cases
+//! A reflex vertex of V_p has two edges of V_p; Lemma 3.1(2) leaves two
+//! configurations, counted apart: **blocking vertex** (one edge is
+//! spurious, the vertex its near end: the reflex map vertex that hides what
+//! lies behind it, Def 3.6) and **map corner** (neither is: a reflex map
+//! vertex whose two map edges p sees).
 
 use serde_json::json;
 use wai_map::Map;
 use wai_visibility::VisibilityPolygon;
 
-use crate::framework::{Checker, Report, Violation};
-use wai_study::sample::{self, reflex_in_vp, vertex_spurious_by_def};
+use crate::framework::{Case, Checker, Report, Violation};
+use wai_study::sample::{
+    self, edge_collinear_with_viewpoint, reflex_in_vp, vertex_spurious_by_def,
+};
 use wai_study::Study;
 
 const ID: &str = "L3.1a";
 
 /// The checker of this claim.
-pub const CHECKER: Checker = Checker::new(ID, check_study);
+pub const CHECKER: Checker = Checker::new(ID, check_study).with_cases(&[
+    Case {
+        name: BLOCKING,
+        what: "a reflex vertex of V_p beside a spurious edge, its near end: a blocking \
+               vertex (Def 3.6)",
+    },
+    Case {
+        name: CORNER,
+        what: "a reflex vertex of V_p between two non-spurious edges: a reflex map vertex \
+               whose two map edges p sees",
+    },
+]);
+
+/// Case: a reflex vertex of V_p beside a spurious edge.
+pub const BLOCKING: &str = "blocking vertex";
+/// Case: a reflex vertex of V_p between two non-spurious edges.
+pub const CORNER: &str = "map corner";
 
 /// Checks L3.1a on the sampled viewpoints of a map.
 fn check_study(study: &Study<'_>) -> Report {
@@ -42,6 +67,10 @@ pub fn check_polygon(map: &Map, vp: &VisibilityPolygon) -> Report {
         if !reflex_in_vp(vp, i) {
             continue;
         }
+        let n = vp.len();
+        let beside_spurious = edge_collinear_with_viewpoint(vp, (i + n - 1) % n)
+            || edge_collinear_with_viewpoint(vp, i);
+        report.hit(if beside_spurious { BLOCKING } else { CORNER });
         let flagged = vp.vertices()[i].spurious;
         let by_def = vertex_spurious_by_def(vp, i);
         report.record((flagged || by_def).then(|| {
@@ -77,6 +106,8 @@ mod tests {
         let r = check_polygon(&map, &vp);
         assert_eq!(r.examined, 1);
         assert!(r.violations.is_empty(), "{:?}", r.violations);
+        // (2, 2) blocks the view of the east wing from (1, 3).
+        assert_eq!(r.cases.get(BLOCKING), Some(&1));
         let r = CHECKER.check_map(&map);
         assert!(r.examined > 0);
         assert!(r.violations.is_empty(), "{:?}", r.violations);

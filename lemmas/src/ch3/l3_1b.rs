@@ -12,19 +12,54 @@
 //! spurious if V_p classifies it so *or* it is collinear with p (Def 3.4,
 //! decided exactly), so the verdict does not rest on the stored kinds
 //! alone. What is not covered: viewpoints outside the sample.
+//!
+//! ## Cases
+//! A pair with no spurious edge is counted as **no spurious edge**; a pair
+//! with one by what the other edge is (Defs 3.4, 3.5, read off the
+//! geometry): **beside full** (at its near end, the blocking vertex),
+//! **beside half** and **beside partial** (at its far end, the spurious
+//! vertex, or at the near end when the blocking vertex is itself the
+//! non-spurious end of a half edge).
 
 use serde_json::json;
 use wai_map::Map;
 use wai_visibility::{EdgeKind, VisibilityPolygon};
 
-use crate::framework::{Checker, Report, Violation};
+use super::d3_5::kind_by_def;
+use crate::framework::{Case, Checker, Report, Violation};
 use wai_study::sample::{self, edge_collinear_with_viewpoint};
 use wai_study::Study;
 
 const ID: &str = "L3.1b";
 
 /// The checker of this claim.
-pub const CHECKER: Checker = Checker::new(ID, check_study);
+pub const CHECKER: Checker = Checker::new(ID, check_study).with_cases(&[
+    Case {
+        name: NONE,
+        what: "two adjacent edges of V_p, neither spurious",
+    },
+    Case {
+        name: BESIDE_FULL,
+        what: "a spurious edge beside a full edge (Def 3.5)",
+    },
+    Case {
+        name: BESIDE_HALF,
+        what: "a spurious edge beside a half edge (Def 3.5)",
+    },
+    Case {
+        name: BESIDE_PARTIAL,
+        what: "a spurious edge beside a partial edge (Def 3.5)",
+    },
+]);
+
+/// Case: a pair of adjacent edges with no spurious edge.
+pub const NONE: &str = "no spurious edge";
+/// Case: a spurious edge next to a full edge.
+pub const BESIDE_FULL: &str = "beside full";
+/// Case: a spurious edge next to a half edge.
+pub const BESIDE_HALF: &str = "beside half";
+/// Case: a spurious edge next to a partial edge.
+pub const BESIDE_PARTIAL: &str = "beside partial";
 
 /// Checks L3.1b on the sampled viewpoints of a map.
 fn check_study(study: &Study<'_>) -> Report {
@@ -39,6 +74,21 @@ pub fn check_polygon(map: &Map, vp: &VisibilityPolygon) -> Report {
         |i: usize| vp.edges()[i].kind == EdgeKind::Spurious || edge_collinear_with_viewpoint(vp, i);
     for i in 0..n {
         let j = (i + 1) % n;
+        let beside = |e: usize| match kind_by_def(vp, e) {
+            EdgeKind::Full => Some(BESIDE_FULL),
+            EdgeKind::Half => Some(BESIDE_HALF),
+            EdgeKind::Partial => Some(BESIDE_PARTIAL),
+            EdgeKind::Spurious => None,
+        };
+        let case = match (spurious(i), spurious(j)) {
+            (false, false) => Some(NONE),
+            (true, true) => None,
+            (true, false) => beside(j),
+            (false, true) => beside(i),
+        };
+        if let Some(case) = case {
+            report.hit(case);
+        }
         report.record((spurious(i) && spurious(j)).then(|| {
             let mut data = sample::replay(map, vp);
             data.insert("edges".into(), json!([i, j]));
@@ -76,6 +126,9 @@ mod tests {
         let r = check_polygon(&map, &vp);
         assert_eq!(r.examined, vp.len() as u64);
         assert!(r.violations.is_empty(), "{:?}", r.violations);
+        // The doorway's partial edge has a spurious edge on each side.
+        assert_eq!(r.cases.get(BESIDE_PARTIAL), Some(&2));
+        assert_eq!(r.cases.values().sum::<u64>(), r.examined);
         let r = CHECKER.check_map(&map);
         assert!(r.examined > 0);
         assert!(r.violations.is_empty(), "{:?}", r.violations);

@@ -6,37 +6,84 @@
 //!
 //! ## Trust
 //! Sampled viewpoints; each V_p is checked exactly. For each map the
-//! checker computes V_p with the production algorithm for
-//! [`wai_study::sample::viewpoints`] and examines **every** non-spurious edge e
-//! (not collinear with p, Def 3.4, decided exactly) of every such V_p:
+//! checker reads V_p of [`wai_study::sample::viewpoints`] (the study's,
+//! production algorithm) and examines **every** non-spurious edge e (not
+//! collinear with p, Def 3.4, decided exactly) of every such V_p:
 //! 1. e lies on the closed map edge e' that V_p names, in e''s direction;
 //! 2. no other non-spurious edge of V_p names e' or has its midpoint on e';
 //! 3. the part of e' that p sees is exactly e, up to e's two endpoints
 //!    (which are visible or not by the grazing convention of sec. 2.2). This
-//!    is decided exactly, not sampled: along e', visibility from p can only
-//!    change where e' meets a line through p and a map vertex (between two
-//!    consecutive such directions the nearest map edge is fixed, the premise
-//!    of the reference algorithm). So the checker cuts e' at those meeting
-//!    points and at e's endpoints, and tests with [`wai_exact::sees`] every
-//!    cut point and the midpoint of every piece: open e must be visible, the
-//!    rest of e' invisible.
+//!    is decided exactly, not sampled, in one pass over the map edges: each
+//!    other map edge f (closed, so grazing its ends blocks) hides from p one
+//!    interval of directions of e' — the directions f and e' share, if f
+//!    lies in front of e' there (disjoint segments keep their order over
+//!    the directions they share; a neighbour of e' blocks nothing at their
+//!    common vertex), or the one direction of f if p is on f's line and f
+//!    reaches nearer than e' — and the points of e' that p sees are those
+//!    no interval covers. Every decision is an exact orientation of map
+//!    vertices, V_p's vertices and p; the intervals are compared by the
+//!    order of their directions around p. A violation is located (a point
+//!    of e' seen or hidden wrongly) by the former method: cut e' where the
+//!    lines through p and the map vertices meet it, and test every cut and
+//!    piece midpoint with [`wai_exact::sees`]; a test compares the two
+//!    methods on degenerate and generic maps, true and wrong edges.
 //!
 //! What is not covered: viewpoints outside the sample.
+//!
+//! ## Cases
+//! Each non-spurious edge by its kind (Def 3.5, read off the geometry):
+//! **full** (e is all of e'), **half**, **partial** (e a proper part of
+//! e', the rest hidden); and, counted besides, **collinear edges**: e' has
+//! another map edge on its line (the case Remark 3.2 calls the source of
+//! the problem's complexity, where the lemma says which one p sees).
 
 use rug::{Integer, Rational};
 use serde_json::json;
-use wai_exact::{sees, side_of_line_rat, Point, RatPoint, Side};
-use wai_map::Map;
-use wai_visibility::VisibilityPolygon;
+use std::cmp::Ordering;
 
-use crate::framework::{Checker, Report, Violation};
+use wai_exact::{
+    orientation, orientation_rat, sees, side_of_line_rat, Orientation, Point, RatPoint, Side,
+};
+use wai_map::Map;
+use wai_visibility::{EdgeKind, VisibilityPolygon};
+
+use super::d3_5::kind_by_def;
+use crate::framework::{Case, Checker, Report, Violation};
 use wai_study::sample::{self, edge_collinear_with_viewpoint};
 use wai_study::Study;
 
 const ID: &str = "L3.1c";
 
 /// The checker of this claim.
-pub const CHECKER: Checker = Checker::new(ID, check_study);
+pub const CHECKER: Checker = Checker::new(ID, check_study).with_cases(&[
+    Case {
+        name: FULL,
+        what: "a full edge of V_p (Def 3.5): all of its map edge",
+    },
+    Case {
+        name: HALF,
+        what: "a half edge of V_p (Def 3.5): a proper part of its map edge, one end spurious",
+    },
+    Case {
+        name: PARTIAL,
+        what: "a partial edge of V_p (Def 3.5): a proper part of its map edge, both ends \
+               spurious",
+    },
+    Case {
+        name: COLLINEAR,
+        what: "a non-spurious edge whose map edge has another map edge on its line \
+               (Remark 3.2)",
+    },
+]);
+
+/// Case: a full edge.
+pub const FULL: &str = "full";
+/// Case: a half edge.
+pub const HALF: &str = "half";
+/// Case: a partial edge.
+pub const PARTIAL: &str = "partial";
+/// Case: the map edge has another map edge on its line.
+pub const COLLINEAR: &str = "collinear edges";
 
 /// Checks L3.1c on the sampled viewpoints of a map.
 fn check_study(study: &Study<'_>) -> Report {
@@ -49,6 +96,18 @@ pub fn check_polygon(map: &Map, vp: &VisibilityPolygon) -> Report {
     for i in 0..vp.len() {
         if edge_collinear_with_viewpoint(vp, i) {
             continue;
+        }
+        match kind_by_def(vp, i) {
+            EdgeKind::Full => report.hit(FULL),
+            EdgeKind::Half => report.hit(HALF),
+            EdgeKind::Partial => report.hit(PARTIAL),
+            EdgeKind::Spurious => {}
+        }
+        if vp.edges()[i]
+            .map_edge
+            .is_some_and(|k| k < map.n() && has_collinear_edge(map, k))
+        {
+            report.hit(COLLINEAR);
         }
         let problem = check_edge(map, vp, i);
         report.record(problem.map(|(what, extra)| {
@@ -69,6 +128,16 @@ pub fn check_polygon(map: &Map, vp: &VisibilityPolygon) -> Report {
         }));
     }
     report
+}
+
+/// Whether some other map edge lies on the line of map edge `k`.
+fn has_collinear_edge(map: &Map, k: usize) -> bool {
+    let (a, b) = (map.vertices()[k], map.vertices()[(k + 1) % map.n()]);
+    (0..map.n()).filter(|&j| j != k).any(|j| {
+        let (c, d) = (map.vertices()[j], map.vertices()[(j + 1) % map.n()]);
+        orientation(a, b, c) == Orientation::Collinear
+            && orientation(a, b, d) == Orientation::Collinear
+    })
 }
 
 /// `(x, y)` of a rational point as rationals.
@@ -181,7 +250,41 @@ fn check_edge(map: &Map, vp: &VisibilityPolygon, i: usize) -> Option<(String, se
             ));
         }
     }
-    // 3. p sees exactly open e of e': cut e' where visibility may change.
+    // 3. p sees exactly open e of e', decided by the blocked intervals;
+    //    a violation is located by probing with `sees`.
+    if visible_part_is(map, vp.viewpoint(), k, s, t) {
+        return None;
+    }
+    Some(
+        locate_by_cut_points(map, vp, k, &line, &ls, &lt).unwrap_or_else(|| {
+            (
+                format!(
+                    "the part of map edge {k} that p sees is not the edge (blocked intervals), \
+                 though no probe of the cut points shows where"
+                ),
+                json!({"probes_agree": false}),
+            )
+        }),
+    )
+}
+
+/// Where visibility from p along map edge `k` differs from "exactly open
+/// e", e = (`ls`, `lt`) in the parameters of `line`: cut e' at the lines
+/// through p and each map vertex (between two consecutive cuts the nearest
+/// map edge in every direction is fixed) and at e's endpoints, and test
+/// every cut and the midpoint of every piece with [`wai_exact::sees`].
+/// `None` if every probe agrees. O(n) probes of O(n) each: used only to
+/// locate a violation, and as the reference the interval method is tested
+/// against.
+fn locate_by_cut_points(
+    map: &Map,
+    vp: &VisibilityPolygon,
+    k: usize,
+    line: &EdgeLine,
+    ls: &Rational,
+    lt: &Rational,
+) -> Option<(String, serde_json::Value)> {
+    let (zero, one) = (Rational::new(), Rational::from(1));
     let p = coords(vp.viewpoint());
     let mut cuts: Vec<Rational> = vec![zero.clone(), one.clone(), ls.clone(), lt.clone()];
     cuts.extend(
@@ -199,10 +302,10 @@ fn check_edge(map: &Map, vp: &VisibilityPolygon, i: usize) -> Option<(String, se
     }
     probes.extend(cuts.last().cloned());
     for l in probes {
-        if l == ls || l == lt {
+        if l == *ls || l == *lt {
             continue; // e's endpoints: visible or not by the grazing rule
         }
-        let want = ls < l && l < lt;
+        let want = *ls < l && l < *lt;
         let x = line.point(&l);
         let sight = sees(map.vertices(), vp.viewpoint(), &x);
         if sight.is_visible() != want {
@@ -221,6 +324,202 @@ fn check_edge(map: &Map, vp: &VisibilityPolygon, i: usize) -> Option<(String, se
     None
 }
 
+/// Directions from a viewpoint p inside the closed cone of a map edge
+/// e' = (A, B) (p not on its line), ordered from A's to B's.
+struct Cone<'a> {
+    p: &'a RatPoint,
+    a: &'a RatPoint,
+    b: &'a RatPoint,
+    /// The turn from A to B around p.
+    sense: Orientation,
+}
+
+impl Cone<'_> {
+    /// The order of the directions of `x` and `y` (both in the cone).
+    fn cmp(&self, x: &RatPoint, y: &RatPoint) -> Ordering {
+        match orientation_rat(self.p, x, y) {
+            Orientation::Collinear => Ordering::Equal,
+            o if o == self.sense => Ordering::Less,
+            _ => Ordering::Greater,
+        }
+    }
+
+    /// Whether the direction of `x` lies in the closed cone from `lo` to
+    /// `hi` (turning in the cone's sense, less than half a turn).
+    fn within(&self, lo: &RatPoint, hi: &RatPoint, x: &RatPoint) -> bool {
+        let ok = |o: Orientation| o == self.sense || o == Orientation::Collinear;
+        ok(orientation_rat(self.p, lo, x)) && ok(orientation_rat(self.p, x, hi))
+    }
+
+    /// Whether the direction of `x` lies in the cone of e'.
+    fn holds(&self, x: &RatPoint) -> bool {
+        self.within(self.a, self.b, x)
+    }
+}
+
+/// An end of a blocked interval: a point whose direction from p bounds it,
+/// and whether the direction itself is blocked.
+#[derive(Clone, Copy)]
+struct End<'a> {
+    at: &'a RatPoint,
+    closed: bool,
+}
+
+/// The directions of e' in which a map edge hides e' from p (the points x
+/// of e' whose segment px meets the edge elsewhere than at x).
+#[derive(Clone, Copy)]
+struct Blocked<'a> {
+    lo: End<'a>,
+    hi: End<'a>,
+}
+
+/// Whether the closed directions covered by `blocked` include every
+/// direction of the cone from `from` to `to` (each end counted if its flag
+/// says so).
+fn covers(cone: &Cone<'_>, blocked: &[Blocked<'_>], from: End<'_>, to: End<'_>) -> bool {
+    // Everything before `reach.at` is covered; `reach.at` itself iff closed.
+    let mut reach = End {
+        at: from.at,
+        closed: !from.closed,
+    };
+    let done = |reach: End<'_>| match cone.cmp(reach.at, to.at) {
+        Ordering::Greater => true,
+        Ordering::Equal => reach.closed || !to.closed,
+        Ordering::Less => false,
+    };
+    for j in blocked {
+        if done(reach) {
+            return true;
+        }
+        let gap = match cone.cmp(j.lo.at, reach.at) {
+            Ordering::Greater => true,
+            Ordering::Equal => !reach.closed && !j.lo.closed,
+            Ordering::Less => false,
+        };
+        if gap {
+            return false;
+        }
+        let further = match cone.cmp(j.hi.at, reach.at) {
+            Ordering::Greater => true,
+            Ordering::Equal => j.hi.closed && !reach.closed,
+            Ordering::Less => false,
+        };
+        if further {
+            reach = j.hi;
+        }
+    }
+    done(reach)
+}
+
+/// Lemma 3.1(3) decided in one pass over the map edges: the points of map
+/// edge `k` that the viewpoint `p` sees are exactly those of the open
+/// segment (`s`, `t`), e's endpoints (on map edge k, in its direction)
+/// aside. p must not lie on the line of edge k.
+///
+/// Every other map edge f (a closed segment) hides from p the points x of
+/// e' whose segment px meets f elsewhere than at x (sec. 2.2: grazing a
+/// vertex blocks). Those x form one interval of directions from p: the
+/// directions common to f and e' if f lies in front of e' there (two
+/// disjoint segments keep their order across the directions they share;
+/// an edge sharing an endpoint of e' keeps it beyond that endpoint's
+/// direction, which it does not block), or the one direction of f if p is
+/// on f's line and f reaches nearer than e' in it. The part of e' that p
+/// sees is what no interval covers.
+fn visible_part_is(map: &Map, p: &RatPoint, k: usize, s: &RatPoint, t: &RatPoint) -> bool {
+    let v = map.vertices();
+    let n = map.n();
+    let pts: Vec<RatPoint> = v.iter().map(|&x| RatPoint::from(x)).collect();
+    let (ia, ib) = (k, (k + 1) % n);
+    let (a, b) = (&pts[ia], &pts[ib]);
+    let sense = orientation_rat(p, a, b);
+    let cone = Cone { p, a, b, sense };
+    // Which side of e''s line p lies on; a point strictly there is in front.
+    let p_side = orientation_rat(a, b, p);
+    let in_front = |x: usize| orientation(v[ia], v[ib], v[x]) == p_side;
+    let mut blocked: Vec<Blocked<'_>> = Vec::new();
+    for j in (0..n).filter(|&j| j != k) {
+        let (ic, id) = (j, (j + 1) % n);
+        let turn = orientation_rat(p, &pts[ic], &pts[id]);
+        if turn == Orientation::Collinear {
+            // p on f's line, off f: f is seen edge-on, in one direction.
+            if cone.holds(&pts[ic]) && (in_front(ic) || in_front(id)) {
+                let end = End {
+                    at: &pts[ic],
+                    closed: true,
+                };
+                blocked.push(Blocked { lo: end, hi: end });
+            }
+            continue;
+        }
+        let (first, second) = if turn == sense { (ic, id) } else { (id, ic) };
+        let (f0, f1) = (&pts[first], &pts[second]);
+        let lo = if cone.holds(f0) {
+            first
+        } else if cone.within(f0, f1, a) {
+            ia
+        } else {
+            continue;
+        };
+        let hi = if cone.holds(f1) {
+            second
+        } else if cone.within(f0, f1, b) {
+            ib
+        } else {
+            continue;
+        };
+        // f shares an endpoint with e' (a neighbour of edge k): it does
+        // not block that endpoint's direction, and is tested beyond it.
+        let shared = [ia, ib].into_iter().find(|&x| x == ic || x == id);
+        let probe = match shared {
+            Some(x) if x == lo => hi,
+            Some(_) => lo,
+            None => lo,
+        };
+        if shared.is_some() && cone.cmp(&pts[lo], &pts[hi]) == Ordering::Equal {
+            continue;
+        }
+        // In front at the probe direction: an endpoint of f nearer than
+        // e', or an endpoint of e' behind f's line.
+        let front = if probe == first || probe == second {
+            in_front(probe)
+        } else {
+            let f_side = orientation_rat(&pts[ic], &pts[id], p);
+            let e_side = orientation(v[ic], v[id], v[probe]);
+            e_side != f_side && e_side != Orientation::Collinear
+        };
+        if front {
+            blocked.push(Blocked {
+                lo: End {
+                    at: &pts[lo],
+                    closed: shared != Some(lo),
+                },
+                hi: End {
+                    at: &pts[hi],
+                    closed: shared != Some(hi),
+                },
+            });
+        }
+    }
+    // Nothing blocks a direction strictly between s and t.
+    let meets_e = |j: &Blocked<'_>| match cone.cmp(j.lo.at, j.hi.at) {
+        Ordering::Equal => {
+            cone.cmp(s, j.lo.at) == Ordering::Less && cone.cmp(j.lo.at, t) == Ordering::Less
+        }
+        _ => cone.cmp(j.lo.at, t) == Ordering::Less && cone.cmp(s, j.hi.at) == Ordering::Less,
+    };
+    if blocked.iter().any(meets_e) {
+        return false;
+    }
+    // Everything before s and after t is blocked.
+    blocked.sort_by(|x, y| {
+        cone.cmp(x.lo.at, y.lo.at)
+            .then_with(|| y.lo.closed.cmp(&x.lo.closed))
+    });
+    let end = |at, closed| End { at, closed };
+    covers(&cone, &blocked, end(a, true), end(s, false))
+        && covers(&cone, &blocked, end(t, false), end(b, true))
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -237,9 +536,71 @@ mod tests {
         let r = check_polygon(&map, &vp);
         assert_eq!(r.examined, 4);
         assert!(r.violations.is_empty(), "{:?}", r.violations);
+        assert_eq!(r.cases.get(FULL), Some(&3));
+        assert_eq!(r.cases.get(HALF), Some(&1));
         let r = CHECKER.check_map(&map);
         assert!(r.examined > 0);
         assert!(r.violations.is_empty(), "{:?}", r.violations);
+    }
+
+    /// The interval method against the cut points probed with `sees`, on
+    /// every non-spurious edge of V_p for degenerate and generic maps and
+    /// viewpoints, with e's true endpoints and with wrong ones (the whole
+    /// map edge, and e's ends swapped for the map edge's ends one at a
+    /// time), so both verdicts are compared.
+    #[test]
+    fn the_interval_method_agrees_with_the_cut_points() {
+        let mut maps: Vec<Map> = Vec::new();
+        for kind in [
+            "special-orthogonal",
+            "special-comb",
+            "special-chamfer",
+            "random-orthogonal",
+            "random-simple-star",
+        ] {
+            for seed in 0..6 {
+                maps.push(wai_gen::random(kind, 14, seed).unwrap());
+            }
+        }
+        maps.extend(wai_gen::exhaustive_polyomino_maps(
+            5,
+            wai_gen::Symmetry::Free,
+        ));
+        for id in ["corridor-niches", "comb-convex-chain", "overlap-fan"] {
+            maps.push(wai_gen::family(id, &[2]).unwrap());
+        }
+        maps.push(crate::fixtures::doorway().0);
+        let (mut compared, mut hidden) = (0, 0);
+        for map in &maps {
+            let index = VisibilityIndex::new(map);
+            for p in wai_study::sample::viewpoints(map, 12) {
+                let vp = index.visibility_polygon(&p).unwrap();
+                let n = vp.len();
+                for i in (0..n).filter(|&i| !edge_collinear_with_viewpoint(&vp, i)) {
+                    let k = vp.edges()[i].map_edge.unwrap();
+                    let line = EdgeLine::new(map.edge(k).a(), map.edge(k).b());
+                    let (a, b) = (
+                        RatPoint::from(map.edge(k).a()),
+                        RatPoint::from(map.edge(k).b()),
+                    );
+                    let (s, t) = (&vp.vertices()[i].point, &vp.vertices()[(i + 1) % n].point);
+                    for (s, t) in [(s, t), (&a, &b), (&a, t), (s, &b)] {
+                        let (ls, lt) = (line.param(s), line.param(t));
+                        let fast = visible_part_is(map, &p, k, s, t);
+                        let slow = locate_by_cut_points(map, &vp, k, &line, &ls, &lt).is_none();
+                        assert_eq!(
+                            fast,
+                            slow,
+                            "map {:?}, p = {p}, edge {k}, e = {s}..{t}",
+                            map.vertices()
+                        );
+                        compared += 1;
+                        hidden += u32::from(!fast);
+                    }
+                }
+            }
+        }
+        assert!(compared > 5000 && hidden > 500, "{compared} {hidden}");
     }
 
     #[test]

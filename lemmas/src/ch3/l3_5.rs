@@ -13,18 +13,38 @@
 //! `wai_exact::sees` in its own tests); each kernel is the exact half-plane
 //! intersection of the embedded skeleton polygon, and "lies in" is closed
 //! (a point of a ray may lie on a kernel's boundary).
+//!
+//! ## Cases
+//! **one embedding** (the skeleton embeds once: existence, Lemma 3.4, is
+//! what is tested) and **several embeddings** (the uniqueness of the
+//! proof: the point must lie in no other embedding's kernel, though
+//! kernels of one skeleton may overlap, Example 4.1).
 
 use serde_json::json;
 use wai_exact::{Containment, RatPoint};
 
-use crate::framework::{Checker, Report, Violation};
+use crate::framework::{Case, Checker, Report, Violation};
 use wai_study::Embedded;
 use wai_study::Study;
 
 const ID: &str = "L3.5";
 
 /// The checker of this claim.
-pub const CHECKER: Checker = Checker::new(ID, check_study);
+pub const CHECKER: Checker = Checker::new(ID, check_study).with_cases(&[
+    Case {
+        name: ONE,
+        what: "a point whose skeleton has one embedding (Lemma 3.4's existence)",
+    },
+    Case {
+        name: SEVERAL,
+        what: "a point whose skeleton has several embeddings (Lemma 3.5's uniqueness)",
+    },
+]);
+
+/// Case: the point's skeleton has one embedding.
+pub const ONE: &str = "one embedding";
+/// Case: the point's skeleton has several embeddings.
+pub const SEVERAL: &str = "several embeddings";
 
 /// A point of a cell: where it is, its skeleton's class and its v0.
 #[derive(Debug, Clone)]
@@ -76,6 +96,11 @@ pub fn check_points(points: &[CellPoint], by_class: &[Vec<Embedded>]) -> Report 
     let mut report = Report::new(ID);
     for p in points {
         report.examined += 1;
+        report.hit(if by_class[p.class].len() > 1 {
+            SEVERAL
+        } else {
+            ONE
+        });
         let hits: Vec<usize> = by_class[p.class]
             .iter()
             .filter(|h| h.kernel.locate(&p.point) != Containment::Outside)
@@ -122,6 +147,8 @@ mod tests {
             d.cells().len() + d.lower_cells().len()
         );
         assert!(report.violations.is_empty(), "{:?}", report.violations);
+        // The niche cells' skeleton embeds in all three niches.
+        assert!(report.cases.get(SEVERAL).is_some_and(|&k| k > 0));
     }
 
     #[test]

@@ -2,6 +2,7 @@
 //! one module per claim id, and what several of them share.
 
 pub mod a3_6;
+pub mod c3_8;
 pub mod d3_5;
 pub mod l3_1a;
 pub mod l3_1b;
@@ -9,12 +10,14 @@ pub mod l3_1c;
 pub mod l3_5;
 pub mod l3_7;
 pub mod l3_7t;
+pub mod r3_4;
 pub mod t3_10;
 pub mod t3_2;
 pub mod t3_3a;
 pub mod t3_3b;
 pub mod t3_9a;
 pub mod t3_9b;
+pub mod t3_9c;
 
 use wai_map::Map;
 use wai_study::Study;

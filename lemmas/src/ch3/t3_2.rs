@@ -20,8 +20,7 @@
 //!   V_q = V_p + (o − v0) (points, spurious flags and edge kinds) holds iff
 //!   V*_q = V*_p with origin o. When neither holds, q is a point of the
 //!   embedding's kernel that is no witness (Remark 3.4) and the instance
-//!   holds trivially; [`Stats::same_skeleton`] counts the pairs where the
-//!   premise held;
+//!   holds trivially;
 //! - **every translate onto another reflex map vertex**: the same test with
 //!   v0 moved onto each other reflex vertex of M (the only candidates for an
 //!   origin) that no sampled viewpoint of the group has as origin, whenever
@@ -34,6 +33,16 @@
 //! [`wai_study::sample::viewpoints`] starts with a family's own viewpoints. What
 //! is not covered: viewpoints outside the sample, and pairs of embeddings
 //! the sample does not hit.
+//!
+//! ## Cases
+//! The instances by kind: **rebuild** (V_p rebuilt from its skeleton), its
+//! artificial edges by the edge they replace (**half edge**, with one end
+//! on the label line, one spurious edge to rebuild; **partial edge**, two),
+//! **across embeddings** (a pair of sampled viewpoints in different
+//! embeddings of one skeleton) and **translate** (onto another reflex map
+//! vertex); and each translated instance by the direction of the theorem it
+//! tests: **if** (the skeletons are equal, so the polygons must be) or
+//! **only if** (they differ, so the polygons must too).
 
 use std::collections::BTreeMap;
 
@@ -42,62 +51,88 @@ use wai_exact::{locate_rat, Containment, Point, RatPoint};
 use wai_map::Map;
 use wai_visibility::{reconstruct, Skeleton, SkeletonKey, VisibilityIndex, VisibilityPolygon};
 
-use crate::framework::{Checker, Report, Violation};
+use crate::framework::{Case, Checker, Report, Violation};
 use wai_study::sample::{self, translate};
 use wai_study::Study;
 
 const ID: &str = "T3.2";
 
 /// The checker of this claim.
-pub const CHECKER: Checker = Checker::new(ID, check_study);
+pub const CHECKER: Checker = Checker::new(ID, check_study).with_cases(&[
+    Case {
+        name: REBUILD,
+        what: "V_p rebuilt from V*_p and p - v0 alone (the constructive proof of Thm 3.2)",
+    },
+    Case {
+        name: HALF_EDGE,
+        what: "an artificial edge of a rebuilt skeleton that replaces a half edge: one \
+               spurious edge to rebuild (Thm 3.2's proof, Def 3.7 (3))",
+    },
+    Case {
+        name: PARTIAL_EDGE,
+        what: "an artificial edge of a rebuilt skeleton that replaces a partial edge: two \
+               spurious edges to rebuild (Thm 3.2's proof, Def 3.7 (4))",
+    },
+    Case {
+        name: ACROSS,
+        what: "a viewpoint translated into another embedding of its skeleton met in the \
+               sample (Fig 3.12)",
+    },
+    Case {
+        name: TRANSLATE,
+        what: "a viewpoint translated to put v0 on another reflex map vertex, inside the map",
+    },
+    Case {
+        name: IF,
+        what: "a translate with the same skeleton: the polygons must be equal (Thm 3.2, if)",
+    },
+    Case {
+        name: ONLY_IF,
+        what: "a translate with another skeleton: the polygons must differ (Thm 3.2, only if)",
+    },
+]);
 
-/// What one map contributed, beyond the report.
-#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
-pub struct Stats {
-    /// Viewpoints whose V_p was rebuilt from its skeleton.
-    pub rebuilt: u64,
-    /// Viewpoints translated into another embedding of their skeleton met
-    /// in the sample.
-    pub pairs: u64,
-    /// Viewpoints translated to put their origin v0 on another reflex map
-    /// vertex (not an origin met in the sample), landing inside the map.
-    pub translates: u64,
-    /// Of all translates, those whose skeleton was the same, with the
-    /// target origin: the premise of the "if" direction held.
-    pub same_skeleton: u64,
-}
+/// Case: V_p rebuilt from its skeleton.
+pub const REBUILD: &str = "rebuild";
+/// Case: an artificial edge replacing a half edge, rebuilt.
+pub const HALF_EDGE: &str = "half edge";
+/// Case: an artificial edge replacing a partial edge, rebuilt.
+pub const PARTIAL_EDGE: &str = "partial edge";
+/// Case: a viewpoint translated into another embedding met in the sample.
+pub const ACROSS: &str = "across embeddings";
+/// Case: a viewpoint translated onto another reflex map vertex.
+pub const TRANSLATE: &str = "translate";
+/// Case: a translate with the same skeleton.
+pub const IF: &str = "if";
+/// Case: a translate with another skeleton.
+pub const ONLY_IF: &str = "only if";
 
 /// Checks T3.2 on the sampled viewpoints of a map.
 fn check_study(study: &Study<'_>) -> Report {
-    check_with_stats(study, sample::VIEWPOINTS).0
+    check_viewpoints(study, sample::VIEWPOINTS)
 }
 
-/// The check on `viewpoints` sampled viewpoints, with the counts of each
-/// kind of instance.
-pub fn check_with_stats(study: &Study<'_>, viewpoints: usize) -> (Report, Stats) {
+/// The check on the study's `viewpoints` sampled viewpoints (their V_p
+/// shared with the other chapter 3 checkers).
+pub fn check_viewpoints(study: &Study<'_>, viewpoints: usize) -> Report {
     let map = study.map();
     let index = study.index();
     let mut report = Report::new(ID);
-    let mut stats = Stats::default();
     let mut groups: BTreeMap<SkeletonKey, Vec<(usize, Point)>> = BTreeMap::new();
-    let vps: Vec<VisibilityPolygon> = sample::viewpoints(map, viewpoints)
-        .iter()
-        .map(|p| {
-            index.visibility_polygon(p).unwrap_or_else(|e| {
-                panic!(
-                    "V_p of interior viewpoint {p} of {}: {e}",
-                    sample::map_name(map)
-                )
-            })
-        })
-        .collect();
+    let vps = study.sampled_polygons(viewpoints);
     for (k, vp) in vps.iter().enumerate() {
         let (r, skeleton) = rebuild(map, vp);
-        report.examined += r.examined;
-        report.violations.extend(r.violations);
-        stats.rebuilt += 1;
+        report.absorb(r);
+        report.hit(REBUILD);
         if let Some(sk) = skeleton {
-            groups.entry(sk.key()).or_default().push((k, sk.origin()));
+            let key = sk.key();
+            for (s, label) in key.labels.iter().enumerate() {
+                let Some(l) = label else { continue };
+                let ends = [key.offsets[s], key.offsets[(s + 1) % key.offsets.len()]];
+                let on_line = ends.iter().any(|&(x, y)| l.contains(x, y));
+                report.hit(if on_line { HALF_EDGE } else { PARTIAL_EDGE });
+            }
+            groups.entry(key).or_default().push((k, sk.origin()));
         }
     }
     let reflex: Vec<Point> = map
@@ -105,6 +140,11 @@ pub fn check_with_stats(study: &Study<'_>, viewpoints: usize) -> (Report, Stats)
         .iter()
         .map(|&m| map.vertices()[m])
         .collect();
+    let direction = |same: Option<bool>| match same {
+        Some(true) => Some(IF),
+        Some(false) => Some(ONLY_IF),
+        None => None,
+    };
     for members in groups.values() {
         let mut origins: Vec<Point> = members.iter().map(|&(_, o)| o).collect();
         origins.sort_by_key(|o| (o.x, o.y));
@@ -113,10 +153,11 @@ pub fn check_with_stats(study: &Study<'_>, viewpoints: usize) -> (Report, Stats)
             // Other embeddings of the skeleton met in the sample.
             for &o in origins.iter().filter(|&&o| o != own) {
                 let (r, outcome) = check_translated(index, &vps[k], o, true);
-                report.examined += r.examined;
-                report.violations.extend(r.violations);
-                stats.pairs += 1;
-                stats.same_skeleton += u64::from(outcome == Some(true));
+                report.absorb(r);
+                report.hit(ACROSS);
+                if let Some(case) = direction(outcome) {
+                    report.hit(case);
+                }
             }
             // Every other reflex map vertex as a would-be origin: the
             // "only if" direction, and the "if" direction where the
@@ -126,14 +167,15 @@ pub fn check_with_stats(study: &Study<'_>, viewpoints: usize) -> (Report, Stats)
                 .filter(|&&o| o != own && !origins.contains(&o))
             {
                 let (r, outcome) = check_translated(index, &vps[k], o, false);
-                report.examined += r.examined;
-                report.violations.extend(r.violations);
-                stats.translates += u64::from(outcome.is_some());
-                stats.same_skeleton += u64::from(outcome == Some(true));
+                report.absorb(r);
+                if let Some(case) = direction(outcome) {
+                    report.hit(TRANSLATE);
+                    report.hit(case);
+                }
             }
         }
     }
-    (report, stats)
+    report
 }
 
 /// T3.2 on one V_p of `map`: rebuild it from (V*_p, p − v0) and compare.
@@ -335,13 +377,18 @@ mod tests {
             "{:?}",
             r.violations
         );
-        let (r, stats) = check_with_stats(&Study::new(&map), sample::VIEWPOINTS);
+        let r = CHECKER.run(&Study::new(&map));
         assert!(r.violations.is_empty(), "{:?}", r.violations);
+        let case = |c: &str| r.cases.get(c).copied().unwrap_or(0);
         // Every niche viewpoint is translated into the two other niches.
-        assert!(stats.pairs >= 6, "{stats:?}");
-        assert!(stats.same_skeleton >= 6, "{stats:?}");
-        assert_eq!(r.examined, stats.rebuilt + stats.pairs + stats.translates);
-        assert!(stats.translates > 0, "{stats:?}");
+        assert!(case(ACROSS) >= 6, "{:?}", r.cases);
+        assert!(case(IF) >= 6, "{:?}", r.cases);
+        assert_eq!(r.examined, case(REBUILD) + case(ACROSS) + case(TRANSLATE));
+        assert_eq!(case(IF) + case(ONLY_IF), case(ACROSS) + case(TRANSLATE));
+        assert!(case(TRANSLATE) > 0 && case(ONLY_IF) > 0, "{:?}", r.cases);
+        // The niche viewpoint's skeleton closes the niche by one artificial
+        // edge through both mouth corners' blocking rays: a partial edge.
+        assert!(case(PARTIAL_EDGE) > 0, "{:?}", r.cases);
     }
 
     /// V_p of the first niche viewpoint with its first spurious vertex

@@ -6,7 +6,7 @@
 //! clockwise (no reflex vertex), never reverses (no spike), and the edge
 //! directions turn once around (winding 1). Straight (180°) vertices are
 //! allowed — the thesis's proof only excludes reflex vertices — and
-//! counted ([`Stats::straight`]). They are rare: rays end only on ∂M, so no
+//! counted (case **straight vertex**). They are rare: rays end only on ∂M, so no
 //! ray ends on another ray inside the map; a cell gets one only where its
 //! boundary passes straight through a vertex of degree ≥ 3 whose other
 //! edges lie outside the cell.
@@ -23,42 +23,53 @@
 //! first, and a failure is a violation of this claim, since then no cell
 //! can be vouched for) and on the rays being all rays of Def 3.8 (tested in
 //! `wai-cells` against a brute-force enumeration).
+//!
+//! ## Cases
+//! The proof's two kinds of cell vertex, counted per vertex of every cell:
+//! **boundary vertex** (on ∂M: a map vertex or a ray's end; a reflex one
+//! would send rays into the cell) and **interior vertex** (two or more rays
+//! crossing inside M, which cannot be reflex because rays run from ∂M to
+//! ∂M); and, among them, **straight vertex** (a 180° turn).
 
 use rug::Rational;
 use serde_json::json;
 use wai_exact::{orientation_rat, Orientation, RatPoint};
 
-use crate::framework::{Checker, Report, Violation};
+use crate::framework::{Case, Checker, Report, Violation};
 use wai_study::sample;
 use wai_study::Study;
 
 const ID: &str = "T3.3a";
 
 /// The checker of this claim.
-pub const CHECKER: Checker = Checker::new(ID, check_study);
+pub const CHECKER: Checker = Checker::new(ID, check_study).with_cases(&[
+    Case {
+        name: BOUNDARY,
+        what: "a cell vertex on the map boundary (a map vertex or the end of a ray; Thm \
+               3.3's proof, part 1)",
+    },
+    Case {
+        name: INTERIOR,
+        what: "a cell vertex inside the map, where rays cross (Thm 3.3's proof, part 1)",
+    },
+    Case {
+        name: STRAIGHT,
+        what: "a cell vertex where the boundary runs straight on (180 degrees)",
+    },
+]);
 
-/// What one map contributed, beyond the report.
-#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
-pub struct Stats {
-    /// Cells examined.
-    pub cells: u64,
-    /// Cell vertices examined.
-    pub vertices: u64,
-    /// Of these, straight (180°) vertices.
-    pub straight: u64,
-}
+/// Case: a cell vertex on ∂M.
+pub const BOUNDARY: &str = "boundary vertex";
+/// Case: a cell vertex inside M.
+pub const INTERIOR: &str = "interior vertex";
+/// Case: a straight cell vertex.
+pub const STRAIGHT: &str = "straight vertex";
 
-/// Checks T3.3a on every cell of a map.
+/// Checks T3.3a on every cell of a map: one instance per cell.
 fn check_study(study: &Study<'_>) -> Report {
-    check_with_stats(study).0
-}
-
-/// [`Checker::check`] with the vertex counts.
-pub fn check_with_stats(study: &Study<'_>) -> (Report, Stats) {
     let map = study.map();
     let arr = study.arrangement();
     let mut report = Report::new(ID);
-    let mut stats = Stats::default();
     if let Err(e) = arr.sanity_check() {
         report.record(Some(Violation::with_data(
             format!(
@@ -67,18 +78,20 @@ pub fn check_with_stats(study: &Study<'_>) -> (Report, Stats) {
             ),
             json!({"map": sample::map_name(map), "sanity_check": e}),
         )));
-        return (report, stats);
+        return report;
     }
     for f in arr.cells() {
+        for v in arr.face_vertices(f) {
+            report.hit(if arr.is_on_map_boundary(v) {
+                BOUNDARY
+            } else {
+                INTERIOR
+            });
+        }
         let ring: Vec<RatPoint> = arr.face_points(f);
-        let (r, s) = check_cell(sample::map_name(map), f, &ring);
-        report.examined += r.examined;
-        report.violations.extend(r.violations);
-        stats.cells += 1;
-        stats.vertices += s.vertices;
-        stats.straight += s.straight;
+        report.absorb(check_cell(sample::map_name(map), f, &ring));
     }
-    (report, stats)
+    report
 }
 
 /// The upper or lower half of the directions, for the angular order from
@@ -118,15 +131,10 @@ fn coords(p: &RatPoint) -> (Rational, Rational) {
 /// clockwise turn), a spike (the boundary reverses), a repeated point, or
 /// the boundary winds other than once around. The violation names the map
 /// (`map_name`), the cell's index and every offending vertex as an exact
-/// point. Also returns the vertex counts.
-pub fn check_cell(map_name: &str, cell: usize, ring: &[RatPoint]) -> (Report, Stats) {
+/// point. Each straight vertex is counted (case [`STRAIGHT`]).
+pub fn check_cell(map_name: &str, cell: usize, ring: &[RatPoint]) -> Report {
     let mut report = Report::new(ID);
     let k = ring.len();
-    let mut stats = Stats {
-        cells: 1,
-        vertices: k as u64,
-        straight: 0,
-    };
     let dirs: Vec<(Rational, Rational)> = (0..k)
         .map(|i| {
             let (a, b) = (coords(&ring[i]), coords(&ring[(i + 1) % k]));
@@ -147,7 +155,7 @@ pub fn check_cell(map_name: &str, cell: usize, ring: &[RatPoint]) -> (Report, St
         match orientation_rat(prev, cur, next) {
             Orientation::Clockwise => reflex.push(cur.to_string()),
             Orientation::Collinear if dot(din, dout) < 0 => spikes.push(cur.to_string()),
-            Orientation::Collinear => stats.straight += 1,
+            Orientation::Collinear => report.hit(STRAIGHT),
             Orientation::CounterClockwise => {}
         }
         if angle_less(dout, din) {
@@ -179,7 +187,7 @@ pub fn check_cell(map_name: &str, cell: usize, ring: &[RatPoint]) -> (Report, St
             }),
         )
     }));
-    (report, stats)
+    report
 }
 
 #[cfg(test)]
@@ -199,44 +207,54 @@ mod tests {
         let map = wai_map::Map::from_ring(pts.iter().map(|&(x, y)| Point::new(x, y)).collect())
             .unwrap()
             .0;
-        let (r, stats) = check_with_stats(&Study::new(&map));
+        let r = CHECKER.run(&Study::new(&map));
         assert_eq!(
             (r.examined, r.violations.len()),
             (5, 0),
             "{:?}",
             r.violations
         );
-        assert_eq!(stats.cells, 5);
+        assert!(!r.cases.contains_key(INTERIOR), "no two rays cross");
     }
 
     #[test]
     fn generated_maps_pass() {
         let map = wai_gen::family("corridor-niches", &[2]).unwrap();
-        let (r, _) = check_with_stats(&Study::new(&map));
+        let r = CHECKER.run(&Study::new(&map));
         assert!(r.examined > 5);
         assert!(r.violations.is_empty(), "{:?}", r.violations);
+        assert!(
+            r.cases.get(INTERIOR).is_some_and(|&k| k > 0),
+            "{:?}",
+            r.cases
+        );
         let map = wai_gen::random("special-orthogonal", 16, 3).unwrap();
-        let (r, stats) = check_with_stats(&Study::new(&map));
+        let r = CHECKER.run(&Study::new(&map));
         assert!(r.violations.is_empty(), "{:?}", r.violations);
-        assert_eq!(r.examined, stats.cells);
-        assert!(stats.vertices >= 3 * stats.cells, "{stats:?}");
+        let case = |c: &str| r.cases.get(c).copied().unwrap_or(0);
+        assert!(
+            case(BOUNDARY) + case(INTERIOR) >= 3 * r.examined,
+            "{:?}",
+            r.cases
+        );
     }
 
     #[test]
     fn a_square_with_a_straight_vertex_is_convex() {
-        let (r, s) = check_cell(
+        let r = check_cell(
             "planted",
             1,
             &ring(&[(0, 0), (1, 0), (2, 0), (2, 2), (0, 2)]),
         );
-        assert_eq!((r.examined, r.violations.len(), s.straight), (1, 0, 1));
+        assert_eq!((r.examined, r.violations.len()), (1, 0));
+        assert_eq!(r.cases.get(STRAIGHT), Some(&1));
     }
 
     #[test]
     fn a_reflex_vertex_is_reported() {
         // An L-shaped "cell": (2, 2) is reflex.
         let l = ring(&[(0, 0), (4, 0), (4, 2), (2, 2), (2, 4), (0, 4)]);
-        let (r, _) = check_cell("planted", 7, &l);
+        let r = check_cell("planted", 7, &l);
         assert_eq!((r.examined, r.violations.len()), (1, 1));
         let v = &r.violations[0];
         assert_eq!(v.data["map"], "planted");
@@ -249,15 +267,15 @@ mod tests {
     fn a_clockwise_or_doubly_wound_ring_is_reported() {
         let mut cw = ring(&[(0, 0), (2, 0), (2, 2), (0, 2)]);
         cw.reverse();
-        assert_eq!(check_cell("planted", 1, &cw).0.violations.len(), 1);
+        assert_eq!(check_cell("planted", 1, &cw).violations.len(), 1);
         // A pentagram: every turn is left, but it winds twice.
         let star = ring(&[(0, 4), (-3, -4), (4, 1), (-4, 1), (3, -4)]);
-        let (r, _) = check_cell("planted", 1, &star);
+        let r = check_cell("planted", 1, &star);
         assert_eq!(r.violations.len(), 1);
         assert_eq!(r.violations[0].data["winding"], 2);
         // A spike: the boundary runs out and back.
         let spike = ring(&[(0, 0), (2, 0), (2, 2), (2, 3), (2, 2), (0, 2)]);
-        let (r, _) = check_cell("planted", 1, &spike);
+        let r = check_cell("planted", 1, &spike);
         assert_eq!(r.violations.len(), 1);
         assert_eq!(r.violations[0].data["spikes"], json!(["(2, 3)"]));
     }

@@ -35,6 +35,12 @@
 //! Thm 3.3 (a segment inside one convex cell that no ray crosses) makes every
 //! point of an open face or open edge equivalent to the sampled ones.
 //! **Not covered:** points of ∂M (the thesis assumes viewpoints off ∂M).
+//!
+//! ## Cases
+//! The cells by dimension: **2-cell** (an open face), **1-cell** (an open
+//! arrangement edge on a ray whose skeleton no adjacent 2-cell shares), and
+//! **0-cell** (an arrangement vertex inside M whose skeleton no incident
+//! 2-cell shares).
 
 use serde_json::{json, Value};
 use wai_cells::LowerSite;
@@ -42,14 +48,35 @@ use wai_exact::{orientation_rat, Orientation, Point, RatPoint};
 use wai_map::Map;
 use wai_visibility::{Skeleton, SkeletonKey, VisibilityIndex};
 
-use crate::framework::{Checker, Report, Violation};
+use crate::framework::{Case, Checker, Report, Violation};
 use wai_study::sample;
 use wai_study::Study;
 
 const ID: &str = "T3.3b";
 
 /// The checker of this claim.
-pub const CHECKER: Checker = Checker::new(ID, check_study);
+pub const CHECKER: Checker = Checker::new(ID, check_study).with_cases(&[
+    Case {
+        name: CELL_2,
+        what: "a 2-cell: an open face of the arrangement (Thm 3.3 (2))",
+    },
+    Case {
+        name: CELL_1,
+        what: "a 1-cell: an open arrangement edge on a ray with a skeleton of its own \
+               (counterexamples/T3.3b-doorway-1d-cell.json)",
+    },
+    Case {
+        name: CELL_0,
+        what: "a 0-cell: an arrangement vertex inside M with a skeleton of its own",
+    },
+]);
+
+/// Case: a 2-cell.
+pub const CELL_2: &str = "2-cell";
+/// Case: a 1-cell.
+pub const CELL_1: &str = "1-cell";
+/// Case: a 0-cell.
+pub const CELL_0: &str = "0-cell";
 
 /// The `data["kind"]` of a violation: a point with a skeleton other than
 /// its cell's.
@@ -57,20 +84,72 @@ pub const SKELETON_DIFFERS: &str = "skeleton-differs";
 /// The `data["kind"]` of a point whose V_p or V*_p cannot be built.
 pub const NO_SKELETON: &str = "no-skeleton";
 
-/// What one map contributed, by dimension.
-#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
-pub struct Stats {
-    /// 2-cells examined (open faces).
-    pub cells: u64,
-    /// 1-cells examined (open arrangement edges on rays).
-    pub edges: u64,
-    /// 0-cells examined (arrangement vertices off ∂M).
-    pub vertices: u64,
-}
-
 /// Checks T3.3b on every cell of every dimension of a map.
 fn check_study(study: &Study<'_>) -> Report {
-    check_with_stats(study).0
+    let map = study.map();
+    let arr = study.arrangement();
+    let name = sample::map_name(map);
+    let mut report = Report::new(ID);
+    if let Err(e) = arr.sanity_check() {
+        report.record(Some(Violation::with_data(
+            format!("map {name}: the arrangement fails its sanity check: {e}"),
+            json!({"map": name, "kind": NO_SKELETON, "sanity_check": e}),
+        )));
+        return report;
+    }
+    let index = study.index();
+    // The cells' skeletons as the decomposition computes them (by its
+    // walk, sec. 3.9.2): every sample is checked against them.
+    let d = study.decomposition();
+    let embedded = |origin: usize, class: usize| -> Result<Embedded, String> {
+        Ok((map.vertices()[origin], d.skeletons()[class].clone()))
+    };
+    let arr = d.arrangement();
+    for f in arr.cells() {
+        let ring: Vec<RatPoint> = arr.face_points(f);
+        report.hit(CELL_2);
+        let Some(points) = interior_points(&ring) else {
+            report.record(Some(Violation::with_data(
+                format!("map {name}, cell {f}: no strict corner, no interior point"),
+                json!({"map": name, "kind": NO_SKELETON, "cell": f,
+                       "cell_vertices": ring.iter().map(ToString::to_string).collect::<Vec<_>>()}),
+            )));
+            continue;
+        };
+        let claimed = embedded(d.origin_of(f), d.skeleton_of(f));
+        report.absorb(check_cell_points(
+            map,
+            index,
+            Cell::Face(f),
+            &claimed,
+            &points,
+        ));
+    }
+    for c in d.lower_cells() {
+        let claimed = embedded(c.origin, c.class);
+        let (cell, points) = match c.site {
+            LowerSite::Edge(e) => {
+                report.hit(CELL_1);
+                let (a, b) = (
+                    arr.point(arr.half_edge(2 * e).origin),
+                    arr.point(arr.dest(2 * e)),
+                );
+                let mid = RatPoint::midpoint(a, b);
+                let points = vec![
+                    RatPoint::midpoint(a, &mid),
+                    mid.clone(),
+                    RatPoint::midpoint(&mid, b),
+                ];
+                (Cell::Edge(e), points)
+            }
+            LowerSite::Vertex(v) => {
+                report.hit(CELL_0);
+                (Cell::Vertex(v), vec![arr.point(v).clone()])
+            }
+        };
+        report.absorb(check_cell_points(map, index, cell, &claimed, &points));
+    }
+    report
 }
 
 /// A skeleton in its embedding: the origin v0 (a map point) and the key.
@@ -153,75 +232,6 @@ pub fn interior_points(ring: &[RatPoint]) -> Option<[RatPoint; 2]> {
     Some([c, q])
 }
 
-/// [`Checker::check`] with the counts of each kind of cell.
-pub fn check_with_stats(study: &Study<'_>) -> (Report, Stats) {
-    let map = study.map();
-    let arr = study.arrangement();
-    let name = sample::map_name(map);
-    let mut report = Report::new(ID);
-    let mut stats = Stats::default();
-    if let Err(e) = arr.sanity_check() {
-        report.record(Some(Violation::with_data(
-            format!("map {name}: the arrangement fails its sanity check: {e}"),
-            json!({"map": name, "kind": NO_SKELETON, "sanity_check": e}),
-        )));
-        return (report, stats);
-    }
-    let index = study.index();
-    // The cells' skeletons as the decomposition computes them (by its
-    // walk, sec. 3.9.2): every sample is checked against them.
-    let d = study.decomposition();
-    let embedded = |origin: usize, class: usize| -> Result<Embedded, String> {
-        Ok((map.vertices()[origin], d.skeletons()[class].clone()))
-    };
-    let arr = d.arrangement();
-    for f in arr.cells() {
-        let ring: Vec<RatPoint> = arr.face_points(f);
-        stats.cells += 1;
-        let Some(points) = interior_points(&ring) else {
-            report.record(Some(Violation::with_data(
-                format!("map {name}, cell {f}: no strict corner, no interior point"),
-                json!({"map": name, "kind": NO_SKELETON, "cell": f,
-                       "cell_vertices": ring.iter().map(ToString::to_string).collect::<Vec<_>>()}),
-            )));
-            continue;
-        };
-        let claimed = embedded(d.origin_of(f), d.skeleton_of(f));
-        report.absorb(check_cell_points(
-            map,
-            index,
-            Cell::Face(f),
-            &claimed,
-            &points,
-        ));
-    }
-    for c in d.lower_cells() {
-        let claimed = embedded(c.origin, c.class);
-        let (cell, points) = match c.site {
-            LowerSite::Edge(e) => {
-                stats.edges += 1;
-                let (a, b) = (
-                    arr.point(arr.half_edge(2 * e).origin),
-                    arr.point(arr.dest(2 * e)),
-                );
-                let mid = RatPoint::midpoint(a, b);
-                let points = vec![
-                    RatPoint::midpoint(a, &mid),
-                    mid.clone(),
-                    RatPoint::midpoint(&mid, b),
-                ];
-                (Cell::Edge(e), points)
-            }
-            LowerSite::Vertex(v) => {
-                stats.vertices += 1;
-                (Cell::Vertex(v), vec![arr.point(v).clone()])
-            }
-        };
-        report.absorb(check_cell_points(map, index, cell, &claimed, &points));
-    }
-    (report, stats)
-}
-
 /// T3.3b on one cell: the cell is one instance, violated if the skeleton
 /// of some point of `points` (computed afresh through `index`) differs from
 /// `claimed`, the cell's skeleton, or if a skeleton cannot be built. A violation names the map, the cell, the point (exact,
@@ -283,21 +293,27 @@ mod tests {
     #[test]
     fn a_family_map_passes() {
         let map = wai_gen::family("corridor-niches", &[2]).unwrap();
-        let (r, stats) = check_with_stats(&Study::new(&map));
+        let r = CHECKER.run(&Study::new(&map));
         assert!(r.violations.is_empty(), "{:?}", r.violations);
+        let case = |c: &str| r.cases.get(c).copied().unwrap_or(0);
         assert!(
-            stats.cells > 5 && stats.edges > 0 && stats.vertices > 0,
-            "{stats:?}"
+            case(CELL_2) > 5 && case(CELL_1) > 0 && case(CELL_0) > 0,
+            "{:?}",
+            r.cases
         );
-        assert_eq!(r.examined, stats.cells + stats.edges + stats.vertices);
+        assert_eq!(r.examined, case(CELL_2) + case(CELL_1) + case(CELL_0));
     }
 
     #[test]
     fn the_l_room_passes() {
-        let (r, stats) = check_with_stats(&Study::new(&fixtures::l_room().0));
+        let r = CHECKER.run(&Study::new(&fixtures::l_room().0));
         assert!(r.violations.is_empty(), "{:?}", r.violations);
-        assert_eq!(stats.cells, 5);
-        assert!(stats.edges >= 4, "{stats:?}");
+        assert_eq!(r.cases.get(CELL_2), Some(&5));
+        assert!(
+            r.cases.get(CELL_1).is_some_and(|&k| k >= 4),
+            "{:?}",
+            r.cases
+        );
     }
 
     /// The doorway's segment breaks the sec. 3.6 reading (A3.6) but is a
@@ -305,15 +321,14 @@ mod tests {
     #[test]
     fn the_doorway_passes_with_its_1_cell() {
         let s_tetromino = fixtures::s_tetromino();
-        assert!(
-            crate::ch3::a3_6::check_with_tally(&Study::new(&s_tetromino))
-                .1
-                .fails_on_1_cell
-                > 0
-        );
-        let (r, stats) = check_with_stats(&Study::new(&s_tetromino));
+        let a = crate::ch3::a3_6::CHECKER.run(&Study::new(&s_tetromino));
+        assert!(a
+            .cases
+            .get(crate::ch3::a3_6::FAILS_1)
+            .is_some_and(|&k| k > 0));
+        let r = CHECKER.run(&Study::new(&s_tetromino));
         assert!(r.violations.is_empty(), "{:?}", r.violations);
-        assert!(stats.edges > 0, "{stats:?}");
+        assert!(r.cases.get(CELL_1).is_some_and(|&k| k > 0), "{:?}", r.cases);
     }
 
     /// The L room's cells and two interior points of each.

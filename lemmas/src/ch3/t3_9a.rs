@@ -24,58 +24,97 @@
 //! (its `sanity_check` — run first; a failure is a violation — and the
 //! `wai-cells` tests against brute force) and on the rays being all rays of
 //! Def 3.8.
+//!
+//! ## Cases
+//! The proof's counting step: at a decomposition vertex on ray r, every
+//! other ray x through it (emanating from map vertex u, anchored at v_r)
+//! is a change in the visibility of u for a walk along r — u **comes into
+//! sight** (the walk leaves the side of x where v_r hides u) or
+//! **disappears** (it enters that side). Rays collinear with r are not
+//! crossed. The ratio measured is the most vertices on one ray over 2n.
 
 use std::collections::BTreeSet;
 
-use rug::Rational;
+use rug::{Integer, Rational};
 use serde_json::json;
-use wai_exact::{orientation_rat, Orientation, RatPoint};
+use wai_cells::{Arrangement, RaySide, VisibilityRay};
+use wai_exact::{orientation_rat, Orientation, Point, RatPoint};
 
-use crate::framework::{Checker, Report, Violation};
+use crate::framework::{over, Case, Checker, Report, Violation};
 use wai_study::sample;
 use wai_study::Study;
 
 const ID: &str = "T3.9a";
 
 /// The checker of this claim.
-pub const CHECKER: Checker = Checker::new(ID, check_study);
+pub const CHECKER: Checker = Checker::new(ID, check_study).with_cases(&[
+    Case {
+        name: APPEARS,
+        what: "a ray crossed at a decomposition vertex where the vertex it emanates from \
+               comes into sight (Thm 3.9's counting step)",
+    },
+    Case {
+        name: DISAPPEARS,
+        what: "a ray crossed at a decomposition vertex where the vertex it emanates from \
+               disappears from view (Thm 3.9's counting step)",
+    },
+]);
 
-/// What one map contributed, beyond the report.
-#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
-pub struct Stats {
-    /// Rays examined.
-    pub rays: u64,
-    /// The most interior decomposition vertices on one ray.
-    pub max_on_ray: u64,
-    /// The map's n (the bound is 2n).
-    pub n: u64,
-}
+/// Case: a map vertex comes into sight along a ray.
+pub const APPEARS: &str = "comes into sight";
+/// Case: a map vertex disappears from view along a ray.
+pub const DISAPPEARS: &str = "disappears";
 
 /// Checks T3.9a on every ray of a map.
 fn check_study(study: &Study<'_>) -> Report {
-    check_with_stats(study, None).0
+    check_with_n(study, None)
 }
 
-/// The check with the largest count met. `n` is the n of the bound 2n:
-/// `None` (the claim) for the map's number of vertices; planted-violation
-/// tests set it artificially small.
-pub fn check_with_stats(study: &Study<'_>, n: Option<usize>) -> (Report, Stats) {
+/// The sign of `(b − a) × (d − c)`, exactly.
+fn cross_sign(a: Point, b: Point, c: Point, d: Point) -> std::cmp::Ordering {
+    let (ux, uy) = (Integer::from(b.x) - a.x, Integer::from(b.y) - a.y);
+    let (vx, vy) = (Integer::from(d.x) - c.x, Integer::from(d.y) - c.y);
+    (ux * &vy - uy * &vx).cmp0()
+}
+
+/// Walking along `r` across `x` (not collinear with it): whether the
+/// vertex `x` emanates from comes into sight (`true`) or disappears.
+fn comes_into_sight(r: &VisibilityRay, x: &VisibilityRay) -> bool {
+    // r's direction points to the left of x: the walk goes from x's right
+    // side to its left side.
+    let to_left =
+        cross_sign(x.source(), x.start(), r.source(), r.start()) == std::cmp::Ordering::Greater;
+    let into_shadow = match x.side {
+        RaySide::Left => to_left,
+        RaySide::Right => !to_left,
+    };
+    !into_shadow
+}
+
+/// The rays through arrangement vertex `v` (on an edge incident to it).
+fn rays_through(arr: &Arrangement, v: usize) -> BTreeSet<usize> {
+    arr.outgoing(v)
+        .into_iter()
+        .flat_map(|h| arr.edge_rays(h / 2).iter().copied())
+        .collect()
+}
+
+/// The check. `n` is the n of the bound 2n: `None` (the claim) for the
+/// map's number of vertices; planted-violation tests set it artificially
+/// small. The largest ratio (vertices on one ray) / 2n is measured.
+pub fn check_with_n(study: &Study<'_>, n: Option<usize>) -> Report {
     let map = study.map();
     let rays = study.rays();
     let arr = study.arrangement();
     let name = sample::map_name(map);
     let mut report = Report::new(ID);
     let n = n.unwrap_or(map.n());
-    let mut stats = Stats {
-        n: n as u64,
-        ..Stats::default()
-    };
     if let Err(e) = arr.sanity_check() {
         report.record(Some(Violation::with_data(
             format!("map {name}: the arrangement fails its sanity check: {e}"),
             json!({"map": name, "sanity_check": e}),
         )));
-        return (report, stats);
+        return report;
     }
     // The interior vertices on each ray: endpoints of the edges it covers.
     let mut on_ray: Vec<BTreeSet<usize>> = vec![BTreeSet::new(); rays.len()];
@@ -97,8 +136,27 @@ pub fn check_with_stats(study: &Study<'_>, n: Option<usize>) -> (Report, Stats) 
             .filter(|p| !on_closed_segment(&start, &ray.end.point, p))
             .map(ToString::to_string)
             .collect();
-        stats.rays += 1;
-        stats.max_on_ray = stats.max_on_ray.max(points.len() as u64);
+        for &v in &on_ray[r] {
+            for x in rays_through(arr, v) {
+                let other = &rays[x];
+                if wai_exact::orientation(ray.source(), ray.start(), other.source())
+                    == Orientation::Collinear
+                    && wai_exact::orientation(ray.source(), ray.start(), other.start())
+                        == Orientation::Collinear
+                {
+                    continue;
+                }
+                report.hit(if comes_into_sight(ray, other) {
+                    APPEARS
+                } else {
+                    DISAPPEARS
+                });
+            }
+        }
+        report.measure(
+            over(points.len(), 2 * n as u128),
+            json!({"ray": r, "count": points.len(), "n": n}),
+        );
         let mut v = check_ray(name, n, r, &points);
         if !off.is_empty() && v.is_none() {
             v = Some(Violation::with_data(
@@ -118,7 +176,7 @@ pub fn check_with_stats(study: &Study<'_>, n: Option<usize>) -> (Report, Stats) 
         }
         report.record(v);
     }
-    (report, stats)
+    report
 }
 
 /// T3.9a on one ray: `points` are the decomposition vertices in the
@@ -169,10 +227,103 @@ mod tests {
     #[test]
     fn the_comb_family_passes() {
         let map = wai_gen::family("comb-convex-chain", &[3]).unwrap();
-        let (r, stats) = check_with_stats(&Study::new(&map), None);
+        let study = Study::new(&map);
+        let r = CHECKER.run(&study);
         assert!(r.violations.is_empty(), "{:?}", r.violations);
-        assert_eq!(r.examined, stats.rays);
-        assert!(stats.rays > 10 && stats.max_on_ray > 0, "{stats:?}");
+        assert_eq!(r.examined as usize, study.rays().len());
+        assert!(r.examined > 10, "{}", r.examined);
+        let most = r.largest.expect("a ratio").ratio;
+        assert!(most > 0 && most <= 1, "{most}");
+        // Both kinds of change occur along the rays.
+        assert!(
+            r.cases.get(APPEARS).is_some_and(|&k| k > 0),
+            "{:?}",
+            r.cases
+        );
+        assert!(
+            r.cases.get(DISAPPEARS).is_some_and(|&k| k > 0),
+            "{:?}",
+            r.cases
+        );
+    }
+
+    /// The case of each crossing agrees with `sees`: the vertex a crossing
+    /// ray emanates from is visible from the midpoint of r's arrangement
+    /// edge after the crossing and not before it ("comes into sight"), or
+    /// the other way round.
+    #[test]
+    fn the_cases_follow_the_visibility_of_the_crossing_rays_vertex() {
+        let (mut appears, mut disappears) = (0, 0);
+        for map in [
+            wai_gen::family("comb-convex-chain", &[3]).unwrap(),
+            wai_gen::family("corridor-niches", &[2]).unwrap(),
+            wai_gen::random("random-simple-star", 12, 4).unwrap(),
+        ] {
+            let study = Study::new(&map);
+            let (arr, rays) = (study.arrangement(), study.rays());
+            for (r, ray) in rays.iter().enumerate() {
+                let start = RatPoint::from(ray.start());
+                // r's edges, ordered from the anchor, as (near end, far end).
+                let mut edges: Vec<(usize, usize)> = (0..arr.edge_count())
+                    .filter(|&e| arr.edge_rays(e).contains(&r))
+                    .map(|e| {
+                        let (a, b) = (arr.half_edge(2 * e).origin, arr.dest(2 * e));
+                        let a_first = on_closed_segment(&start, arr.point(b), arr.point(a));
+                        if a_first {
+                            (a, b)
+                        } else {
+                            (b, a)
+                        }
+                    })
+                    .collect();
+                edges.sort_by(|x, y| {
+                    let near = on_closed_segment(&start, arr.point(y.0), arr.point(x.0));
+                    if x.0 == y.0 {
+                        std::cmp::Ordering::Equal
+                    } else if near {
+                        std::cmp::Ordering::Less
+                    } else {
+                        std::cmp::Ordering::Greater
+                    }
+                });
+                for w in edges.windows(2) {
+                    let v = w[0].1;
+                    assert_eq!(v, w[1].0, "r's edges are consecutive");
+                    let mid =
+                        |(a, b): (usize, usize)| RatPoint::midpoint(arr.point(a), arr.point(b));
+                    let (before, after) = (mid(w[0]), mid(w[1]));
+                    for x in rays_through(arr, v) {
+                        let other = &rays[x];
+                        let collinear = |q| {
+                            wai_exact::orientation(ray.source(), ray.start(), q)
+                                == Orientation::Collinear
+                        };
+                        if collinear(other.source()) && collinear(other.start()) {
+                            continue;
+                        }
+                        let u = RatPoint::from(map.vertices()[other.from]);
+                        let sees =
+                            |q: &RatPoint| wai_exact::sees(map.vertices(), q, &u).is_visible();
+                        if comes_into_sight(ray, other) {
+                            assert!(
+                                !sees(&before) && sees(&after),
+                                "ray {r} at {}",
+                                arr.point(v)
+                            );
+                            appears += 1;
+                        } else {
+                            assert!(
+                                sees(&before) && !sees(&after),
+                                "ray {r} at {}",
+                                arr.point(v)
+                            );
+                            disappears += 1;
+                        }
+                    }
+                }
+            }
+        }
+        assert!(appears > 0 && disappears > 0, "{appears} {disappears}");
     }
 
     #[test]
@@ -190,8 +341,8 @@ mod tests {
         // The full pipeline against 2n with n = 1: every ray with more
         // than 2 interior vertices is reported, with its vertices.
         let map = wai_gen::family("comb-convex-chain", &[3]).unwrap();
-        let (r, stats) = check_with_stats(&Study::new(&map), Some(1));
-        assert!(stats.max_on_ray > 2, "{stats:?}");
+        let r = check_with_n(&Study::new(&map), Some(1));
+        assert!(r.largest.expect("a ratio").ratio > 1);
         assert!(!r.violations.is_empty());
         let v = &r.violations[0];
         assert_eq!(v.data["n"], 1);

@@ -7,11 +7,11 @@ use wai_lemmas::{claim, claims_without_checker, Kind, CLAIMS};
 /// Claims whose checker module has landed. Add an id here when its row in
 /// `CLAIMS` gets its checker.
 const WITH_CHECKER: &[&str] = &[
-    "L3.1a", "L3.1b", "L3.1c", "D3.5", "T3.2", "T3.3a", "T3.3b", "A3.6", "L3.5", "L3.7", "L3.7t",
-    "T3.9a", "T3.9b", "T3.10", "E4.1", "L4.1", "T4.2", "T4.3", "L4.5", "L4.6", "L4.7", "L4.8",
-    "L4.9", "C4.10", "E4.10", "C4.15", "C4.16", "E4.28", "L4.17", "L4.18", "T4.19", "C4.20",
-    "O5.3", "L5.1", "L5.2", "L5.3", "L5.4", "L5.5", "L5.6", "L5.7", "L5.8", "L5.9", "T5.12",
-    "L5.13", "L5.14", "T5.15", "T5.16", "T5.17", "T5.17t", "C5.18",
+    "L3.1a", "L3.1b", "L3.1c", "D3.5", "T3.2", "T3.3a", "T3.3b", "A3.6", "L3.5", "L3.7", "C3.8",
+    "L3.7t", "T3.9a", "T3.9b", "T3.9c", "T3.10", "R3.4", "E4.1", "L4.1", "T4.2", "T4.3", "L4.5",
+    "L4.6", "L4.7", "L4.8", "L4.9", "C4.10", "E4.10", "C4.15", "C4.16", "E4.28", "L4.17", "L4.18",
+    "T4.19", "C4.20", "O5.3", "L5.1", "L5.2", "L5.3", "L5.4", "L5.5", "L5.6", "L5.7", "L5.8",
+    "L5.9", "T5.12", "L5.13", "L5.14", "T5.15", "T5.16", "T5.17", "T5.17t", "C5.18",
 ];
 
 /// The (id, kind) of every row of every table of `CLAIMS.md` whose header's
