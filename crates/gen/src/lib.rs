@@ -53,7 +53,7 @@ pub use interweave::{
 pub use polyomino::{
     exhaustive_polyomino_maps, has_simple_boundary, polyominoes, Cell, Polyomino, Symmetry,
 };
-pub use repeated::{repeated_niches, RepeatedLayout};
+pub use repeated::{kernel_funnels, repeated_niches, RepeatedLayout};
 pub use ring::{reflex_count, ring_problem};
 pub use strategies::{
     arb_map, arb_orthogonal_map, arb_polyomino, arb_simple_map, shrink_map, ArbMap,
@@ -352,6 +352,13 @@ pub const LAYOUTS: &[LayoutInfo] = &[
         shows: "funnels under a corridor with flared niches: overlapping valid embeddings, \
                 often overlapping kernels (Figs 4.1, 4.2; T4.2, T4.3)",
         generate: repeated_niches,
+    },
+    LayoutInfo {
+        id: "kernel-funnels",
+        shows: "funnels flared under a corridor tall enough that neighbouring funnels' \
+                kernels meet: overlapping valid embeddings with overlapping kernels \
+                (Example 4.1, Fig 4.1; T4.3)",
+        generate: kernel_funnels,
     },
     LayoutInfo {
         id: "bottled-niches",

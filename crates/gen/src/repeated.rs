@@ -89,6 +89,44 @@ impl RepeatedLayout {
         }
     }
 
+    /// The jittered layout of `seed` whose neighbouring funnels' kernels
+    /// meet below the ceiling: funnels at every niche pitch, flared (the
+    /// mouth wider than the bottom), under a corridor taller than the
+    /// height where the upward wedges of two neighbours cross. The
+    /// embeddings of the funnels' skeleton then overlap in their kernels
+    /// (Theorem 4.3's premise), which the seeds of
+    /// [`RepeatedLayout::of_seed`] reach only now and then.
+    pub fn kernels_of_seed(seed: u64) -> RepeatedLayout {
+        let mut rng = ChaCha8Rng::seed_from_u64(seed ^ 0x6b65_726e_656c_73);
+        let q = 2 * rng.random_range(3..=8i128);
+        let funnels = rng.random_range(2..=4i128);
+        // Half widths of the bottom and the mouth: hb < ht < q/2, so the
+        // funnels flare and their mouths stay apart (q ≥ 6).
+        let hb = rng.random_range(1..=(q / 2 - 2).min(2));
+        let ht = rng.random_range(hb + 1..=q / 2 - 1);
+        let depth = rng.random_range(2..=(q / 2).max(2));
+        // A wedge's half width at height h over the mouth is ht + h(ht −
+        // hb)/depth; two wedges q apart cross where that reaches q/2.
+        let meet = ((q / 2 - ht) * depth).div_euclid(ht - hb) + 1;
+        let niche_back = 2 * rng.random_range(2..=(q / 2 - 1).max(2));
+        let niche_mouth = 2 * rng.random_range(1..=niche_back / 2 - 1);
+        let extra = rng.random_range(1..=3i128);
+        RepeatedLayout {
+            north_pitch: q,
+            k: 1,
+            funnels,
+            funnel_bottom: 2 * hb,
+            funnel_top: 2 * ht,
+            funnel_depth: depth,
+            niches: funnels + 2 * extra,
+            niche_mouth,
+            niche_back,
+            niche_depth: rng.random_range(1..=q),
+            height: meet + rng.random_range(2..=2 * q),
+            margin: q * (extra + 1),
+        }
+    }
+
     /// The centre of funnel `i`.
     pub fn funnel_x(&self, i: i128) -> i128 {
         self.margin + (self.extra() + i * self.k) * self.north_pitch
@@ -129,6 +167,20 @@ pub fn repeated_niches(seed: u64) -> Map {
     into_map(
         RepeatedLayout::of_seed(seed).ring(),
         format!("repeated-niches seed={seed}"),
+    )
+}
+
+/// The map of [`RepeatedLayout::kernels_of_seed`]: repeated funnels whose
+/// embeddings overlap in their kernels.
+///
+/// ```
+/// let m = wai_gen::kernel_funnels(3);
+/// assert!(m.n() >= 20 && m.r() >= 4);
+/// ```
+pub fn kernel_funnels(seed: u64) -> Map {
+    into_map(
+        RepeatedLayout::kernels_of_seed(seed).ring(),
+        format!("kernel-funnels seed={seed}"),
     )
 }
 

@@ -189,6 +189,36 @@ fn repeated_niches_are_valid_and_their_viewpoints_repeat() {
     }
 }
 
+/// `kernel_funnels`: valid for many seeds, deterministic, flared funnels
+/// at every niche pitch, and the corridor taller than the height where the
+/// upward wedges of two neighbouring funnels cross (their kernels meet
+/// below the ceiling).
+#[test]
+fn kernel_funnels_are_valid_and_their_wedges_meet_below_the_ceiling() {
+    for seed in 0..500 {
+        let m = wai_gen::kernel_funnels(seed);
+        assert_eq!(m, wai_gen::kernel_funnels(seed));
+        let l = wai_gen::RepeatedLayout::kernels_of_seed(seed);
+        assert_eq!(l.k, 1);
+        let (hb, ht) = (l.funnel_bottom / 2, l.funnel_top / 2);
+        assert!(hb < ht && 2 * ht < l.north_pitch, "seed {seed}: {l:?}");
+        // At the ceiling a wedge's half width, ht + height·(ht − hb)/depth,
+        // exceeds half the pitch: (ht − q/2)·depth + height·(ht − hb) > 0.
+        let q2 = l.north_pitch / 2;
+        assert!(
+            (ht - q2) * l.funnel_depth + l.height * (ht - hb) > 0,
+            "seed {seed}: {l:?}"
+        );
+        for v in l.viewpoints() {
+            assert_eq!(
+                wai_exact::locate(m.vertices(), v),
+                wai_exact::Containment::Inside,
+                "seed {seed}"
+            );
+        }
+    }
+}
+
 /// `bottled_niches`: valid for many seeds, deterministic; two viewpoints
 /// per room, the same two in every room, inside the map; the spikes lie
 /// inside the chamber and the chambers do not touch.
