@@ -3,7 +3,7 @@
 
 use crate::sight::EdgeSight;
 use std::collections::HashMap;
-use std::sync::OnceLock;
+use std::sync::{Mutex, OnceLock};
 use wai_exact::Point;
 use wai_map::Map;
 use wai_visibility::{kernel_of_ring, ConvexRegion, LineLabel, SkeletonKey, VisibilityIndex};
@@ -55,6 +55,11 @@ pub struct Embedder<'a> {
     on_line: HashMap<LineLabel, Vec<usize>>,
     /// By map vertex: `VisibilityIndex::vertex_view`.
     views: Vec<OnceLock<Vec<(usize, usize)>>>,
+    /// Condition 3's test, by (map vertex a, map vertex b, map edge e):
+    /// whether a and b both see a point of e. Neighbouring cells' skeletons
+    /// share most artificial edges, so most classes ask again what another
+    /// asked.
+    seen_by_both: Mutex<HashMap<(usize, usize, usize), bool>>,
 }
 
 /// The embeddings of skeleton `key` in `map` (Def 3.11), by ascending
@@ -81,6 +86,7 @@ impl<'a> Embedder<'a> {
             at: v.iter().enumerate().map(|(i, &p)| (p, i)).collect(),
             on_line,
             views: (0..n).map(|_| OnceLock::new()).collect(),
+            seen_by_both: Mutex::new(HashMap::new()),
         }
     }
 
@@ -107,15 +113,14 @@ impl<'a> Embedder<'a> {
         let n = v.len();
         let o = v[origin];
         let k = key.offsets.len();
-        // 1. Each vertex lands on a map vertex (a translation is injective).
-        let vertices: Vec<usize> = key
-            .offsets
-            .iter()
-            .map(|&(dx, dy)| {
-                let p = Point::new(o.x.checked_add(dx)?, o.y.checked_add(dy)?);
-                self.at.get(&p).copied()
-            })
-            .collect::<Option<_>>()?;
+        let lands = |&(dx, dy): &(i128, i128)| {
+            let p = Point::new(o.x.checked_add(dx)?, o.y.checked_add(dy)?);
+            self.at.get(&p).copied()
+        };
+        // 1. Each vertex lands on a map vertex (a translation is injective);
+        // the last vertex first, as most origins fail there at once.
+        lands(key.offsets.last()?)?;
+        let vertices: Vec<usize> = key.offsets.iter().map(lands).collect::<Option<_>>()?;
         // 2. Full edges are exactly the map edges among the images.
         let image: HashMap<usize, usize> =
             vertices.iter().enumerate().map(|(i, &m)| (m, i)).collect();
@@ -171,11 +176,29 @@ impl<'a> Embedder<'a> {
         edges
             .iter()
             .copied()
-            .filter(|&e| {
-                let sight = |y: usize| EdgeSight::of(self.map, self.view(y), y, e);
-                sight(a).meets(&sight(b))
-            })
+            .filter(|&e| self.both_see(a, b, e))
             .collect()
+    }
+
+    /// Whether map vertices `a` and `b` both see a point of map edge `e`
+    /// (decided once per triple).
+    fn both_see(&self, a: usize, b: usize, e: usize) -> bool {
+        let key = (a, b, e);
+        if let Some(&known) = self
+            .seen_by_both
+            .lock()
+            .expect("no panic holding it")
+            .get(&key)
+        {
+            return known;
+        }
+        let sight = |y: usize| EdgeSight::of(self.map, self.view(y), y, e);
+        let both = sight(a).meets(&sight(b));
+        self.seen_by_both
+            .lock()
+            .expect("no panic holding it")
+            .insert(key, both);
+        both
     }
 
     /// The view from map vertex `y`.

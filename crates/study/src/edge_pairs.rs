@@ -29,10 +29,14 @@ pub struct Shared {
     pub f_multiple: bool,
 }
 
+/// By ordered pair (e, f) of map edges, e ≠ f: the embeddings that share
+/// it ([`shared_embeddings`]).
+pub type SharedPairs = BTreeMap<(usize, usize), Vec<Shared>>;
+
 /// By ordered pair (e, f) of map edges, e ≠ f: every valid embedding in
 /// which e and f are candidate edges of different artificial edges, in
-/// increasing j.
-pub fn shared_embeddings(c: &CandidateSets) -> BTreeMap<(usize, usize), Vec<Shared>> {
+/// increasing j. [`crate::Study::edge_pairs`] keeps them per class.
+pub fn shared_embeddings(c: &CandidateSets) -> SharedPairs {
     let mut out: BTreeMap<(usize, usize), Vec<Shared>> = BTreeMap::new();
     for (j, by_edge) in c.sets.iter().enumerate() {
         // Map edge -> the first artificial edge holding it (Lemma 4.17).
