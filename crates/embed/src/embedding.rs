@@ -2,7 +2,7 @@
 //! edges of their artificial edges.
 
 use crate::sight::EdgeSight;
-use std::collections::HashMap;
+use rustc_hash::FxHashMap as HashMap;
 use std::sync::{Mutex, OnceLock};
 use wai_exact::Point;
 use wai_map::Map;
@@ -74,7 +74,7 @@ impl<'a> Embedder<'a> {
         let map = index.map();
         let v = map.vertices();
         let n = v.len();
-        let mut on_line: HashMap<LineLabel, Vec<usize>> = HashMap::new();
+        let mut on_line: HashMap<LineLabel, Vec<usize>> = HashMap::default();
         let zero = Point::new(0, 0);
         for e in 0..n {
             let label = LineLabel::through(v[e], v[(e + 1) % n], zero);
@@ -86,7 +86,7 @@ impl<'a> Embedder<'a> {
             at: v.iter().enumerate().map(|(i, &p)| (p, i)).collect(),
             on_line,
             views: (0..n).map(|_| OnceLock::new()).collect(),
-            seen_by_both: Mutex::new(HashMap::new()),
+            seen_by_both: Mutex::new(HashMap::default()),
         }
     }
 

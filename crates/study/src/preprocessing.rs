@@ -38,8 +38,8 @@
 //! ([`crate::Study::preprocessing_size`]). The tests compare the count with
 //! `Localizer::trapezoids` on maps of every kind.
 
+use rustc_hash::FxHashMap as HashMap;
 use std::cmp::Ordering;
-use std::collections::HashMap;
 
 use wai_cells::{Arrangement, Decomposition, LowerSite, Support};
 use wai_exact::{Point, RatPoint};

@@ -65,6 +65,8 @@ pub struct Study<'m> {
     gaps: OnceCell<Vec<GapStructure>>,
     /// By class: the pairs of map edges shared by its embeddings (sec. 5.5).
     edge_pairs: OnceCell<Vec<crate::edge_pairs::SharedPairs>>,
+    /// By class: its kernel and wedge edges counted (Def 5.2).
+    edge_counts: OnceCell<Vec<crate::wedge_counts::EdgeCounts>>,
     /// The localizer's preprocessing (Alg 3.14): one overlay per class.
     localizer: OnceCell<Localizer>,
     /// The trapezoids of those overlays, counted without building them.
@@ -287,6 +289,7 @@ impl<'m> Study<'m> {
             cell_edges: OnceCell::new(),
             gaps: OnceCell::new(),
             edge_pairs: OnceCell::new(),
+            edge_counts: OnceCell::new(),
             fans: OnceCell::new(),
             localizer: OnceCell::new(),
             preprocessing_size: OnceCell::new(),
@@ -857,6 +860,17 @@ impl<'m> Study<'m> {
                     })
                     .collect()
             })
+        })
+    }
+
+    /// By class: its kernel edges K and wedge edges W, and W by embedding
+    /// ([`crate::wedge_counts::counts`] of [`Study::cell_edges`]), which
+    /// the bounds L5.1, L5.2 and T5.16 read.
+    pub fn edge_counts(&self) -> &[crate::wedge_counts::EdgeCounts] {
+        self.edge_counts.get_or_init(|| {
+            let cells = self.cell_edges();
+            self.timer
+                .stage("edge counts", || crate::wedge_counts::counts(cells))
         })
     }
 

@@ -102,12 +102,14 @@ fn check_study(study: &Study<'_>) -> Report {
                 e1.iter().any(|x| f2.contains(x)) || f1.iter().any(|x| e2.contains(x))
             };
             let mut one = check_pair(&js, g, meet);
-            one.tag("class", json!(class));
-            one.tag("edges", json!([e, f]));
-            one.tag(
-                "embeddings",
-                json!(js.iter().map(|&j| c.embeddings[j]).collect::<Vec<_>>()),
-            );
+            if !one.violations.is_empty() {
+                one.tag("class", json!(class));
+                one.tag("edges", json!([e, f]));
+                one.tag(
+                    "embeddings",
+                    json!(js.iter().map(|&j| c.embeddings[j]).collect::<Vec<_>>()),
+                );
+            }
             report.absorb(one);
         }
     }

@@ -13,7 +13,6 @@ use rug::Rational;
 use serde_json::json;
 
 use crate::framework::{over, Ceiling, Checker, Report};
-use wai_study::wedge_counts::counts;
 use wai_study::Study;
 
 const ID: &str = "L5.2";
@@ -35,7 +34,7 @@ fn check_study(study: &Study<'_>) -> Report {
     let map = study.map();
     let sets = study.candidate_sets();
     let mut largest: Option<(Rational, serde_json::Value)> = None;
-    for (class, c) in counts(study.cell_edges()).iter().enumerate() {
+    for (class, c) in study.edge_counts().iter().enumerate() {
         for (&j, &w) in &c.wedge_by_embedding {
             let Some(pos) = sets[class].embeddings.iter().position(|&e| e == j) else {
                 continue; // cells lie in valid embeddings only

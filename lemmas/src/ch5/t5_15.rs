@@ -140,12 +140,14 @@ pub fn check_pairs(c: &CandidateSets, pairs: &SharedPairs, bound: usize) -> (Rep
         if k >= 2 {
             report.count("pairs_k_ge_2", 1);
         }
-        let embeddings: Vec<usize> = js.iter().map(|&j| c.embeddings[j]).collect();
-        report.measure(
+        let embeddings = || js.iter().map(|&j| c.embeddings[j]).collect::<Vec<usize>>();
+        super::measure_lazily(
+            &mut report,
             rug::Rational::from((k, BOUND)),
-            json!({"e": e, "f": f, "k": k, "embeddings": embeddings}),
+            || json!({"e": e, "f": f, "k": k, "embeddings": embeddings()}),
         );
         report.record((k > bound).then(|| {
+            let embeddings = embeddings();
             Violation::with_data(
                 format!(
                     "map edges {e} and {f}: a candidate edge and a multiple candidate edge of different artificial edges in {k} embeddings, above {bound}"
