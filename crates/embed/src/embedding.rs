@@ -60,6 +60,8 @@ pub struct Embedder<'a> {
     /// share most artificial edges, so most classes ask again what another
     /// asked.
     seen_by_both: Mutex<HashMap<(usize, usize, usize), bool>>,
+    /// What map vertex y sees of map edge e, by (y, e), computed once.
+    sights: Mutex<HashMap<(usize, usize), EdgeSight>>,
 }
 
 /// The embeddings of skeleton `key` in `map` (Def 3.11), by ascending
@@ -87,6 +89,7 @@ impl<'a> Embedder<'a> {
             on_line,
             views: (0..n).map(|_| OnceLock::new()).collect(),
             seen_by_both: Mutex::new(HashMap::default()),
+            sights: Mutex::new(HashMap::default()),
         }
     }
 
@@ -192,8 +195,15 @@ impl<'a> Embedder<'a> {
         {
             return known;
         }
-        let sight = |y: usize| EdgeSight::of(self.map, self.view(y), y, e);
-        let both = sight(a).meets(&sight(b));
+        let both = {
+            let mut sights = self.sights.lock().expect("no panic holding it");
+            for y in [a, b] {
+                sights
+                    .entry((y, e))
+                    .or_insert_with(|| EdgeSight::of(self.map, self.view(y), y, e));
+            }
+            sights[&(a, e)].meets(&sights[&(b, e)])
+        };
         self.seen_by_both
             .lock()
             .expect("no panic holding it")

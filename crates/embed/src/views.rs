@@ -77,10 +77,7 @@ fn seen_between<'v>(
 ) -> usize {
     let v = map.vertices();
     let n = v.len();
-    let left_of = |e: usize| {
-        orientation_rat(&RatPoint::from(v[e]), &RatPoint::from(v[(e + 1) % n]), q)
-            == Orientation::CounterClockwise
-    };
+    let left_of = |e: usize| strictly_left(v[e], v[(e + 1) % n], q);
     let before_y = (y + n - 1) % n;
     if left_of(x) {
         x
@@ -89,6 +86,22 @@ fn seen_between<'v>(
     } else {
         beyond(v, view(x), x, q)
     }
+}
+
+/// Whether q lies strictly left of the directed line from a to b: the sign
+/// of (b − a) × (W·q − W·a) for q = (X, Y)/W, W > 0, in checked `i128`
+/// arithmetic, or by `orientation_rat` where a product does not fit.
+fn strictly_left(a: Point, b: Point, q: &RatPoint) -> bool {
+    let small = || -> Option<bool> {
+        let (x, y, w) = (q.hx().to_i128()?, q.hy().to_i128()?, q.hw().to_i128()?);
+        let (dx, dy) = (b.x.checked_sub(a.x)?, b.y.checked_sub(a.y)?);
+        let px = x.checked_sub(a.x.checked_mul(w)?)?;
+        let py = y.checked_sub(a.y.checked_mul(w)?)?;
+        Some(dx.checked_mul(py)?.checked_sub(dy.checked_mul(px)?)? > 0)
+    };
+    small().unwrap_or_else(|| {
+        orientation_rat(&RatPoint::from(a), &RatPoint::from(b), q) == Orientation::CounterClockwise
+    })
 }
 
 /// The map edge the ray from q through map vertex x meets beyond x, taken
@@ -114,4 +127,32 @@ fn beyond(v: &[Point], view: &[(usize, usize)], x: usize, q: &RatPoint) -> usize
         "the ray from {q} through map vertex {x} does not enter the map beyond it"
     );
     view[at - 1].1
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use rug::Integer;
+
+    #[test]
+    fn strictly_left_is_orientation_in_and_past_the_i128_range() {
+        let p = |x: i128, y: i128| Point::new(x, y);
+        let q = |x: i128, y: i128, w: i128| {
+            RatPoint::new(Integer::from(x), Integer::from(y), Integer::from(w)).unwrap()
+        };
+        let big = 1i128 << 99;
+        let cases = [
+            (p(0, 0), p(4, 0), q(1, 1, 3)),
+            (p(0, 0), p(4, 0), q(1, -1, 3)),
+            (p(0, 0), p(4, 0), q(7, 0, 2)),
+            (p(-big, 3), p(big, 5), q(1, 4, 1)),
+            (p(-big, 3), p(big, 5), q(big, 2 * big, big - 1)),
+            (p(big, -big), p(-big, big), q(-big, -big, 7)),
+        ];
+        for (a, b, c) in cases {
+            let want = orientation_rat(&RatPoint::from(a), &RatPoint::from(b), &c)
+                == Orientation::CounterClockwise;
+            assert_eq!(strictly_left(a, b, &c), want, "{a:?} {b:?} {c}");
+        }
+    }
 }

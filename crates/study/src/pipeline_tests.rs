@@ -71,22 +71,34 @@ fn cell_edges_by_lines_are_cell_edges_by_points() {
 
 #[test]
 fn coordinates_past_the_bound_fall_back_to_the_localizer() {
-    // corridor-niches 1 scaled by 2^60: a line's c and every slab
-    // boundary's products pass 2^127.
-    let map = wai_gen::family("corridor-niches", &[1]).unwrap();
-    let big: Vec<Point> = map
-        .vertices()
-        .iter()
-        .map(|p| Point::new(p.x << 60, p.y << 60))
-        .collect();
-    let big = Map::from_ring(big).unwrap().0;
-    let d = Decomposition::new(&big);
-    assert_eq!(trapezoids(&d), None);
-    let study = crate::Study::new(&big);
-    let small = crate::Study::new(&map);
-    // Scaling changes no count.
-    assert_eq!(study.preprocessing_size(), small.preprocessing_size());
-    assert_eq!(study.preprocessing_size(), study.localizer().trapezoids());
+    // The L room (0,0), (4,0), (4,2), (2,2), (2,4), (0,4) under the linear
+    // map with rows (A, B) and (C, D), positive determinant: with entries
+    // near 2^5 the i128 paths count; near 2^48 a line's coefficients are
+    // near 2^50 and the slab boundaries' products pass 2^127, so the count
+    // is the localizer's.
+    let ring = [(0, 0), (4, 0), (4, 2), (2, 2), (2, 4), (0, 4)];
+    let room = |m: [i128; 4]| {
+        let pts = ring
+            .iter()
+            .map(|&(x, y)| Point::new(m[0] * x + m[1] * y, m[2] * x + m[3] * y))
+            .collect();
+        Map::from_ring(pts).unwrap().0
+    };
+    let big = 1i128 << 48;
+    for (m, fits) in [
+        ([33, 7, 5, 31], true),
+        (
+            [big + 3, (big >> 1) - 7, (big >> 2) + 11, 2 * big + 5],
+            false,
+        ),
+    ] {
+        let map = room(m);
+        let d = Decomposition::new(&map);
+        assert_eq!(trapezoids(&d).is_some(), fits, "{m:?}");
+        let study = crate::Study::new(&map);
+        let want = study.localizer().trapezoids();
+        assert_eq!(study.preprocessing_size(), want, "{m:?}");
+    }
 }
 
 /// `Study::views` (by rule for 2-cells) against V_w of a visibility query

@@ -19,30 +19,33 @@
 //! through two map vertices, which the arrangement records
 //! ([`wai_cells::Support`]); translated by an integer origin it is still a
 //! line through two integer points, a·x + b·y = c with integer
-//! coefficients, and every slab boundary is a rational x = num / den read
+//! coefficients (kept with (a, b) primitive, which makes equal lines equal
+//! triples), and every slab boundary is a rational x = num / den read
 //! off an arrangement point or the crossing of two such lines. Nothing is
 //! built in GMP: the count works in `i128`.
 //!
 //! # Implementation note: the `i128` bounds
-//! With map coordinates below 2^B: a translated input point is below
-//! 2^(B+1); a line's a, b below 2^(B+2) and c below 2^(2B+4); an arrangement
-//! point (the meeting point of two lines through map vertices, homogeneous)
-//! has w below 2^(2B+3) and x below 2^(3B+5), translated below 2^(3B+6); a
-//! crossing's x is num / det with det below 2^(2B+5) and num below
-//! 2^(3B+7). Comparing two slab boundaries multiplies a numerator by a
-//! denominator: below 2^(5B+12), within an `i128` for B ≤ 22. Every product
-//! and difference here is checked all the same (`checked_mul`,
-//! `checked_sub`): on any overflow, and for arrangement points whose
-//! homogeneous coordinates do not fit an `i128`, [`trapezoids`] returns
-//! `None` and the caller counts the localizer's own overlays
-//! ([`crate::Study::preprocessing_size`]). The tests compare the count with
-//! `Localizer::trapezoids` on maps of every kind.
+//! With map coordinates below 2^B: a line through two map points, kept
+//! with (a, b) primitive, has a and b below 2^(B+1) and c = a·x + b·y
+//! below 2^(2B+2), and translated by a map point's −o, c below 2^(2B+3);
+//! an arrangement point (the meeting point of two such lines,
+//! homogeneous, `RatPoint` in lowest terms) has W below 2^(2B+3) and X
+//! below 2^(3B+4), and X − o.x·W below 2^(3B+5); a crossing's x is
+//! num / det with det below 2^(2B+3) and num below 2^(3B+5). Comparing two
+//! slab boundaries multiplies a numerator by a denominator: below
+//! 2^(5B+8), within an `i128` for B ≤ 23. Every operation here is checked
+//! all the same (`checked_mul`, `checked_sub`): on any overflow, and for
+//! arrangement points whose homogeneous coordinates do not fit an `i128`,
+//! [`trapezoids`] returns `None` and the caller counts the localizer's own
+//! overlays ([`crate::Study::preprocessing_size`]). The tests compare the
+//! count with `Localizer::trapezoids` on maps of every kind and check the
+//! fallback on a map scaled past the bound.
 
 use rustc_hash::FxHashMap as HashMap;
 use std::cmp::Ordering;
 
 use wai_cells::{Arrangement, Decomposition, LowerSite, Support};
-use wai_exact::{Point, RatPoint};
+use wai_exact::Point;
 
 /// A slab boundary num / den, den > 0.
 #[derive(Clone, Copy, Debug)]
@@ -69,29 +72,31 @@ struct Line {
 }
 
 impl Line {
-    /// The line through integer points p and q (p ≠ q), translated by −o.
-    fn through(p: Point, q: Point, o: Point) -> Option<Line> {
-        let (px, py) = (p.x.checked_sub(o.x)?, p.y.checked_sub(o.y)?);
-        let (qx, qy) = (q.x.checked_sub(o.x)?, q.y.checked_sub(o.y)?);
-        let a = qy.checked_sub(py)?;
-        let b = px.checked_sub(qx)?;
-        let c = a.checked_mul(px)?.checked_add(b.checked_mul(py)?)?;
+    /// The line through integer points p and q (p ≠ q) as a key: a·x + b·y
+    /// = c with (a, b) primitive and its first non-zero entry positive,
+    /// which makes equal lines equal keys (c then follows).
+    fn through(p: Point, q: Point) -> Option<Line> {
+        let a = q.y.checked_sub(p.y)?;
+        let b = p.x.checked_sub(q.x)?;
+        let g = i128::try_from(gcd(a.unsigned_abs(), b.unsigned_abs())).ok()?;
+        let (a, b) = if a < 0 || (a == 0 && b < 0) {
+            (a.checked_neg()? / g, b.checked_neg()? / g)
+        } else {
+            (a / g, b / g)
+        };
+        let c = a.checked_mul(p.x)?.checked_add(b.checked_mul(p.y)?)?;
         Some(Line { a, b, c })
     }
 
-    /// The key of the line as a set of points: (a, b, c) over their gcd,
-    /// the first non-zero of a, b positive.
-    fn key(self) -> Option<(i128, i128, i128)> {
-        let g = gcd(
-            gcd(self.a.unsigned_abs(), self.b.unsigned_abs()),
-            self.c.unsigned_abs(),
-        );
-        let g = i128::try_from(g).ok()?;
-        let (a, b, c) = (self.a / g, self.b / g, self.c / g);
-        Some(if a < 0 || (a == 0 && b < 0) {
-            (a.checked_neg()?, b.checked_neg()?, c.checked_neg()?)
-        } else {
-            (a, b, c)
+    /// The same line translated by −o (a key still).
+    fn translated(self, o: Point) -> Option<Line> {
+        let shift = self
+            .a
+            .checked_mul(o.x)?
+            .checked_add(self.b.checked_mul(o.y)?)?;
+        Some(Line {
+            c: self.c.checked_sub(shift)?,
+            ..self
         })
     }
 
@@ -136,9 +141,10 @@ struct Span {
     x1: X,
 }
 
-/// The x of arrangement point `p` translated by −o, if it fits.
-fn x_of(p: &RatPoint, o: Point) -> Option<X> {
-    let (hx, hw) = (p.hx().to_i128()?, p.hw().to_i128()?);
+/// The x of an arrangement point, (X, W) of its homogeneous coordinates,
+/// translated by −o: (X − o.x·W) / W.
+fn x_of(p: Option<(i128, i128)>, o: Point) -> Option<X> {
+    let (hx, hw) = p?;
     Some(X {
         num: hx.checked_sub(o.x.checked_mul(hw)?)?,
         den: hw,
@@ -170,25 +176,16 @@ struct Class {
 }
 
 impl Class {
-    /// Adds the edge from `p` to `q` (arrangement points) on arrangement
-    /// edge `e`'s line, translated by −o.
-    fn edge(
-        &mut self,
-        arr: &Arrangement,
-        e: usize,
-        p: &RatPoint,
-        q: &RatPoint,
-        o: Point,
-    ) -> Option<()> {
-        let (x0, x1) = (x_of(p, o)?, x_of(q, o)?);
+    /// Adds an edge from `x0` to `x1` (the x of its ends, translated) on
+    /// `line` (untranslated), translated by −o.
+    fn edge(&mut self, x0: X, x1: X, line: Option<Line>, o: Point) -> Option<()> {
         let order = x0.cmp(x1)?;
         if order == Ordering::Equal {
             return Some(()); // vertical: on a slab boundary
         }
-        let (s, t) = support_points(arr, e);
-        let line = Line::through(s, t, o)?;
+        let line = line?.translated(o)?;
         let next = self.lines.len();
-        let id = *self.ids.entry(line.key()?).or_insert(next);
+        let id = *self.ids.entry((line.a, line.b, line.c)).or_insert(next);
         if id == next {
             self.lines.push(line);
         }
@@ -203,6 +200,11 @@ impl Class {
 
     /// The trapezoids of the class's overlay.
     fn trapezoids(mut self) -> Option<usize> {
+        // Two cells of one embedding that share an edge give it twice, with
+        // the same numbers: once is enough for crossings and cover.
+        let key = |s: &Span| (s.line, s.x0.num, s.x0.den, s.x1.num, s.x1.den);
+        self.spans.sort_unstable_by_key(key);
+        self.spans.dedup_by_key(|s| key(s));
         // Crossings strictly inside both spans' x-ranges.
         let mut order: Vec<usize> = (0..self.spans.len()).collect();
         let mut failed = false;
@@ -292,15 +294,28 @@ impl Class {
 pub fn trapezoids(d: &Decomposition<'_>) -> Option<usize> {
     let arr = d.arrangement();
     let v = d.map().vertices();
+    // By arrangement vertex, (X, W); by arrangement edge, its line.
+    let xs: Vec<Option<(i128, i128)>> = arr
+        .points()
+        .iter()
+        .map(|p| Some((p.hx().to_i128()?, p.hw().to_i128()?)))
+        .collect();
+    let lines: Vec<Option<Line>> = (0..arr.edge_count())
+        .map(|e| {
+            let (p, q) = support_points(arr, e);
+            Line::through(p, q)
+        })
+        .collect();
     let mut classes: Vec<Class> = (0..d.classes().len()).map(|_| Class::default()).collect();
     for (k, cells) in d.classes().iter().enumerate() {
         for &f in cells {
             let o = v[d.origin_of(f)];
             let class = &mut classes[k];
             for h in arr.face_cycle(f) {
-                let p = arr.point(arr.half_edge(h).origin);
-                class.xs.push(x_of(p, o)?);
-                class.edge(arr, h / 2, p, arr.point(arr.dest(h)), o)?;
+                let x0 = x_of(xs[arr.half_edge(h).origin], o)?;
+                let x1 = x_of(xs[arr.dest(h)], o)?;
+                class.xs.push(x0);
+                class.edge(x0, x1, lines[h / 2], o)?;
             }
         }
     }
@@ -309,15 +324,13 @@ pub fn trapezoids(d: &Decomposition<'_>) -> Option<usize> {
         let class = &mut classes[c.class];
         match c.site {
             LowerSite::Edge(e) => {
-                let (p, q) = (
-                    arr.point(arr.half_edge(2 * e).origin),
-                    arr.point(arr.dest(2 * e)),
-                );
-                class.xs.push(x_of(p, o)?);
-                class.xs.push(x_of(q, o)?);
-                class.edge(arr, e, p, q, o)?;
+                let x0 = x_of(xs[arr.half_edge(2 * e).origin], o)?;
+                let x1 = x_of(xs[arr.dest(2 * e)], o)?;
+                class.xs.push(x0);
+                class.xs.push(x1);
+                class.edge(x0, x1, lines[e], o)?;
             }
-            LowerSite::Vertex(x) => class.xs.push(x_of(arr.point(x), o)?),
+            LowerSite::Vertex(x) => class.xs.push(x_of(xs[x], o)?),
         }
     }
     classes.into_iter().map(Class::trapezoids).sum()

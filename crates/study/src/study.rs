@@ -20,6 +20,7 @@ use wai_embed::{
     GapChain, GapRelation, Intersection, Interweavement, Mutual, SightFan, Sightlines,
     SkeletonRing, Witnesses,
 };
+use wai_exact::QPoint;
 use wai_localize::Localizer;
 use wai_map::Map;
 use wai_visibility::{ConvexRegion, VisibilityIndex, VisibilityPolygon};
@@ -583,25 +584,32 @@ impl<'m> Study<'m> {
     /// one skeleton from here).
     pub fn skeleton_pairs(&self) -> &[Vec<SkeletonPair>] {
         self.skeleton_pairs.get_or_init(|| {
+            let witnesses = self.witnesses();
+            let embeddings = self.embeddings();
             self.timer.stage("skeleton pairs", || {
-                let rings = self.skeleton_rings();
-                self.witnesses()
+                witnesses
                     .iter()
-                    .enumerate()
-                    .map(|(c, ws)| {
+                    .zip(embeddings)
+                    .map(|(ws, hs)| {
                         let valid: Vec<usize> =
                             (0..ws.len()).filter(|&i| ws[i].is_valid()).collect();
-                        let bounds: Vec<Bounds> = valid
+                        if valid.len() < 2 {
+                            return Vec::new();
+                        }
+                        let rings: Vec<Vec<QPoint>> = valid
                             .iter()
-                            .map(|&i| Bounds::of(&rings[c][i].ring))
+                            .map(|&i| {
+                                let ring = hs[i].embedding.polygon(self.map);
+                                ring.into_iter().map(QPoint::from).collect()
+                            })
                             .collect();
+                        let bounds: Vec<Bounds> = rings.iter().map(|r| Bounds::of(r)).collect();
                         let mut out = Vec::new();
                         for a in 0..valid.len() {
                             for b in a + 1..valid.len() {
                                 if bounds[a].meets_box(&bounds[b]) {
-                                    let (p, q) =
-                                        (&rings[c][valid[a]].ring, &rings[c][valid[b]].ring);
-                                    out.push((valid[a], valid[b], interiors_overlap(p, q)));
+                                    let overlap = interiors_overlap(&rings[a], &rings[b]);
+                                    out.push((valid[a], valid[b], overlap));
                                 }
                             }
                         }
