@@ -122,7 +122,7 @@ fn check_study(study: &Study<'_>) -> Report {
         .map(|&v| Pt::from(v))
         .collect();
     for (class, c) in study.candidate_sets().iter().enumerate() {
-        for (&(e, f), shared) in &study.edge_pairs()[class] {
+        for ((e, f), shared) in study.edge_pairs()[class].iter() {
             if e > f || shared.len() < 2 {
                 continue;
             }

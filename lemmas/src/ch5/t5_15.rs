@@ -109,7 +109,7 @@ pub fn k_of_pairs(c: &CandidateSets) -> Vec<((usize, usize), Vec<usize>)> {
 pub fn k_of_shared(pairs: &SharedPairs) -> Vec<((usize, usize), Vec<usize>)> {
     pairs
         .iter()
-        .map(|(&pair, shared)| {
+        .map(|(pair, shared)| {
             let js: Vec<usize> = shared
                 .iter()
                 .filter(|s| s.f_multiple)
