@@ -62,7 +62,8 @@ impl Ch5 {
         let sets = study.candidate_sets();
         let single = sets.iter().map(|c| c.single().len()).max().unwrap_or(0);
         let multiple = sets.iter().map(|c| c.multiple.len()).max().unwrap_or(0);
-        let wedge = wai_study::wedge_counts::counts(study.cell_edges())
+        let wedge = study
+            .edge_counts()
             .iter()
             .map(|c| c.wedge)
             .max()

@@ -2,8 +2,8 @@
 //! edges of their artificial edges.
 
 use crate::sight::EdgeSight;
-use std::collections::HashMap;
-use std::sync::OnceLock;
+use rustc_hash::FxHashMap as HashMap;
+use std::sync::{Mutex, OnceLock};
 use wai_exact::Point;
 use wai_map::Map;
 use wai_visibility::{kernel_of_ring, ConvexRegion, LineLabel, SkeletonKey, VisibilityIndex};
@@ -55,6 +55,13 @@ pub struct Embedder<'a> {
     on_line: HashMap<LineLabel, Vec<usize>>,
     /// By map vertex: `VisibilityIndex::vertex_view`.
     views: Vec<OnceLock<Vec<(usize, usize)>>>,
+    /// Condition 3's test, by (map vertex a, map vertex b, map edge e):
+    /// whether a and b both see a point of e. Neighbouring cells' skeletons
+    /// share most artificial edges, so most classes ask again what another
+    /// asked.
+    seen_by_both: Mutex<HashMap<(usize, usize, usize), bool>>,
+    /// What map vertex y sees of map edge e, by (y, e), computed once.
+    sights: Mutex<HashMap<(usize, usize), EdgeSight>>,
 }
 
 /// The embeddings of skeleton `key` in `map` (Def 3.11), by ascending
@@ -69,7 +76,7 @@ impl<'a> Embedder<'a> {
         let map = index.map();
         let v = map.vertices();
         let n = v.len();
-        let mut on_line: HashMap<LineLabel, Vec<usize>> = HashMap::new();
+        let mut on_line: HashMap<LineLabel, Vec<usize>> = HashMap::default();
         let zero = Point::new(0, 0);
         for e in 0..n {
             let label = LineLabel::through(v[e], v[(e + 1) % n], zero);
@@ -81,6 +88,8 @@ impl<'a> Embedder<'a> {
             at: v.iter().enumerate().map(|(i, &p)| (p, i)).collect(),
             on_line,
             views: (0..n).map(|_| OnceLock::new()).collect(),
+            seen_by_both: Mutex::new(HashMap::default()),
+            sights: Mutex::new(HashMap::default()),
         }
     }
 
@@ -107,15 +116,14 @@ impl<'a> Embedder<'a> {
         let n = v.len();
         let o = v[origin];
         let k = key.offsets.len();
-        // 1. Each vertex lands on a map vertex (a translation is injective).
-        let vertices: Vec<usize> = key
-            .offsets
-            .iter()
-            .map(|&(dx, dy)| {
-                let p = Point::new(o.x.checked_add(dx)?, o.y.checked_add(dy)?);
-                self.at.get(&p).copied()
-            })
-            .collect::<Option<_>>()?;
+        let lands = |&(dx, dy): &(i128, i128)| {
+            let p = Point::new(o.x.checked_add(dx)?, o.y.checked_add(dy)?);
+            self.at.get(&p).copied()
+        };
+        // 1. Each vertex lands on a map vertex (a translation is injective);
+        // the last vertex first, as most origins fail there at once.
+        lands(key.offsets.last()?)?;
+        let vertices: Vec<usize> = key.offsets.iter().map(lands).collect::<Option<_>>()?;
         // 2. Full edges are exactly the map edges among the images.
         let image: HashMap<usize, usize> =
             vertices.iter().enumerate().map(|(i, &m)| (m, i)).collect();
@@ -171,11 +179,36 @@ impl<'a> Embedder<'a> {
         edges
             .iter()
             .copied()
-            .filter(|&e| {
-                let sight = |y: usize| EdgeSight::of(self.map, self.view(y), y, e);
-                sight(a).meets(&sight(b))
-            })
+            .filter(|&e| self.both_see(a, b, e))
             .collect()
+    }
+
+    /// Whether map vertices `a` and `b` both see a point of map edge `e`
+    /// (decided once per triple).
+    fn both_see(&self, a: usize, b: usize, e: usize) -> bool {
+        let key = (a, b, e);
+        if let Some(&known) = self
+            .seen_by_both
+            .lock()
+            .expect("no panic holding it")
+            .get(&key)
+        {
+            return known;
+        }
+        let both = {
+            let mut sights = self.sights.lock().expect("no panic holding it");
+            for y in [a, b] {
+                sights
+                    .entry((y, e))
+                    .or_insert_with(|| EdgeSight::of(self.map, self.view(y), y, e));
+            }
+            sights[&(a, e)].meets(&sights[&(b, e)])
+        };
+        self.seen_by_both
+            .lock()
+            .expect("no panic holding it")
+            .insert(key, both);
+        both
     }
 
     /// The view from map vertex `y`.

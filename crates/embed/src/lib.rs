@@ -28,6 +28,7 @@ mod overlay;
 pub mod piece;
 mod sight;
 mod transversal;
+mod views;
 pub mod wedge;
 mod witness;
 
@@ -42,6 +43,7 @@ pub use overlay::common_interior_point;
 pub use piece::{Bounds, Piece};
 pub use sight::EdgeSight;
 pub use transversal::transversal;
+pub use views::witness_views_by_rule;
 /// The exact rational point of the pieces, [`wai_exact::QPoint`], under the
 /// name the crates above this one use for it.
 pub use wai_exact::QPoint as Pt;

@@ -19,7 +19,7 @@
 //! an edge of it on a bounding line is on the wedge's boundary).
 
 use std::collections::BTreeSet;
-use wai_exact::{orientation_rat, Orientation, Point, RatPoint};
+use wai_exact::{orientation, orientation_rat, Orientation, Point, RatPoint};
 use wai_map::Map;
 use wai_visibility::ConvexRegion;
 
@@ -50,9 +50,7 @@ pub fn wedge_lines(ab: (Point, Point), cd: (Point, Point)) -> Vec<(Point, Point)
             if p == q {
                 continue;
             }
-            let side = |x: Point| {
-                orientation_rat(&RatPoint::from(p), &RatPoint::from(q), &RatPoint::from(x))
-            };
+            let side = |x: Point| orientation(p, q, x);
             let (s1, s2) = (side(p_other), side(q_other));
             let one_side = s1 == Orientation::Collinear || s2 == Orientation::Collinear || s1 == s2;
             if one_side {
@@ -111,6 +109,49 @@ pub fn classify_cell_edges(
             let on_wedge = lines
                 .iter()
                 .any(|&(p, q)| on_line(p, q, x) && on_line(p, q, y));
+            match (on_kernel, on_wedge) {
+                (true, false) => CellEdgeKind::Kernel,
+                (false, true) => CellEdgeKind::Wedge,
+                (true, true) => CellEdgeKind::Both,
+                (false, false) => CellEdgeKind::Neither,
+            }
+        })
+        .collect()
+}
+
+/// Whether the line through `p` and `q` is the line through `r` and `s`
+/// (integer points, p ≠ q and r ≠ s).
+pub fn same_line((p, q): (Point, Point), (r, s): (Point, Point)) -> bool {
+    orientation(r, s, p) == Orientation::Collinear && orientation(r, s, q) == Orientation::Collinear
+}
+
+/// Def 5.2 for every edge of a cell in embedding h, each edge given by its
+/// supporting line (through two map points, the map edge or the
+/// visibility ray the arrangement put it on): a kernel edge if that line
+/// is the line of an edge of h(V◇) (`ring`), a wedge edge if it is one of
+/// the wedge lines `lines` ([`embedding_wedge_lines`]).
+///
+/// This is [`classify_cell_edges`] for a cell that lies in h(ker V*)
+/// (Observation 3.13), in integers: the kernel is the intersection of the
+/// closed half-planes left of h(V◇)'s edges, so each kernel edge lies on
+/// the line of an edge of h(V◇); and a segment of the cell on such a line
+/// lies on the kernel's boundary (the kernel is on one side of the line),
+/// hence on a kernel edge. An edge of the cell lies on a line exactly when
+/// its supporting line is that line.
+pub fn classify_by_lines(
+    ring: &[Point],
+    lines: &[(Point, Point)],
+    supports: impl IntoIterator<Item = (Point, Point)>,
+) -> Vec<CellEdgeKind> {
+    let k = ring.len();
+    supports
+        .into_iter()
+        .map(|edge| {
+            let on_kernel = (0..k).any(|u| {
+                let (a, b) = (ring[u], ring[(u + 1) % k]);
+                a != b && same_line(edge, (a, b))
+            });
+            let on_wedge = lines.iter().any(|&l| same_line(edge, l));
             match (on_kernel, on_wedge) {
                 (true, false) => CellEdgeKind::Kernel,
                 (false, true) => CellEdgeKind::Wedge,

@@ -18,7 +18,7 @@ use crate::piece::{Bounds, Piece};
 use std::cmp::Ordering;
 use std::collections::BTreeSet;
 use wai_cells::{Decomposition, FaceId, LowerSite};
-use wai_exact::{turn, QPoint, RatPoint};
+use wai_exact::{orientation_rat, turn, Orientation, QPoint, RatPoint};
 use wai_visibility::{Skeleton, SkeletonEdge, VisibilityIndex};
 
 /// A cell of the decomposition, of any dimension.
@@ -63,13 +63,17 @@ pub fn piece_of(d: &Decomposition<'_>, cell: CellRef) -> Piece {
     let at = |v| QPoint::from(arr.point(v));
     match cell {
         CellRef::Face(f) => {
-            let mut v: Vec<QPoint> = arr.face_points(f).iter().map(QPoint::from).collect();
+            let points = arr.face_points(f);
+            let mut v: Vec<QPoint> = points.iter().map(QPoint::from).collect();
             // Counter-clockwise, as Piece wants (the arrangement's cells are,
-            // but the piece's span test depends on it, so make sure).
-            let area = (0..v.len()).fold(rug::Rational::new(), |s, i| {
-                s + v[i].cross(&v[(i + 1) % v.len()])
-            });
-            if area < 0 {
+            // but the piece's span test depends on it, so make sure): a cell
+            // is convex (Theorem 3.3 (1), the arrangement's sanity check), so
+            // its first turn that is not straight gives its orientation.
+            let m = points.len();
+            let turn = (0..m)
+                .map(|i| orientation_rat(&points[i], &points[(i + 1) % m], &points[(i + 2) % m]))
+                .find(|o| *o != Orientation::Collinear);
+            if turn == Some(Orientation::Clockwise) {
                 v.reverse();
             }
             Piece::Polygon(v)

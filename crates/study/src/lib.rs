@@ -17,6 +17,8 @@
 //! - [`edge_pairs`]: pairs of map edges that are candidate edges of
 //!   different artificial edges (the premise of sec. 5.5).
 //! - [`family`]: whether a map is a member of a thesis family.
+//! - [`preprocessing`]: the size of Alg 3.14's overlays, counted from the
+//!   decomposition.
 //! - [`profile`]: the time each stage took ([`StageTimes`]).
 //!
 //! **Invariant:** a study never changes a structure once built; readers get
@@ -25,6 +27,9 @@
 
 pub mod edge_pairs;
 pub mod family;
+#[cfg(test)]
+mod pipeline_tests;
+pub mod preprocessing;
 pub mod profile;
 pub mod sample;
 pub mod study;
@@ -32,6 +37,6 @@ pub mod wedge_counts;
 
 pub use profile::{Stage, StageTimes};
 pub use study::{
-    CellEdges, Embedded, EmbeddingPair, GapStructure, OverlappingPair, Study, TouchingPair, Views,
-    CROSS_SKELETON_MAX_N,
+    CellEdges, Embedded, EmbeddingPair, GapStructure, Kernel, OverlappingPair, SkeletonPair, Study,
+    TouchingPair, Views, CROSS_SKELETON_MAX_N,
 };

@@ -13,13 +13,14 @@ use std::collections::{BTreeMap, HashMap};
 use std::rc::Rc;
 
 use wai_cells::{Arrangement, Decomposition, VisibilityRay};
-use wai_embed::wedge::{classify_cell_edges, embedding_wedge_lines, CellEdgeKind};
+use wai_embed::wedge::{classify_by_lines, embedding_wedge_lines, CellEdgeKind};
 use wai_embed::{
     crossing, gap_chains, interiors_overlap, kernels_overlap, sight_fans, witness_regions,
-    witness_views, Bounds, CandidateSets, Crossing, EmbeddedEdge, Embedder, Embedding, GapChain,
-    GapRelation, Intersection, Interweavement, Mutual, SightFan, Sightlines, SkeletonRing,
-    Witnesses,
+    witness_views_by_rule, Bounds, CandidateSets, Crossing, EmbeddedEdge, Embedder, Embedding,
+    GapChain, GapRelation, Intersection, Interweavement, Mutual, SightFan, Sightlines,
+    SkeletonRing, Witnesses,
 };
+use wai_exact::QPoint;
 use wai_localize::Localizer;
 use wai_map::Map;
 use wai_visibility::{ConvexRegion, VisibilityIndex, VisibilityPolygon};
@@ -49,6 +50,9 @@ pub struct Study<'m> {
     rings: OnceCell<Vec<Vec<SkeletonRing>>>,
     /// The pairs of valid embeddings the sec. 4.4 checkers examine.
     pairs: OnceCell<Vec<EmbeddingPair>>,
+    /// By class: its pairs of valid embeddings whose polygons' boxes meet,
+    /// with whether their interiors overlap.
+    skeleton_pairs: OnceCell<Vec<Vec<SkeletonPair>>>,
     /// By class, embedding and witness cell, by skeleton edge: the map
     /// edge seen through it (`wai_embed::witness_views`).
     views: OnceCell<Vec<Vec<Views>>>,
@@ -60,8 +64,14 @@ pub struct Study<'m> {
     cell_edges: OnceCell<Vec<Vec<CellEdges>>>,
     /// By class: its gaps as boundary chains and the interweavement graph.
     gaps: OnceCell<Vec<GapStructure>>,
+    /// By class: the pairs of map edges shared by its embeddings (sec. 5.5).
+    edge_pairs: OnceCell<Vec<crate::edge_pairs::SharedPairs>>,
+    /// By class: its kernel and wedge edges counted (Def 5.2).
+    edge_counts: OnceCell<Vec<crate::wedge_counts::EdgeCounts>>,
     /// The localizer's preprocessing (Alg 3.14): one overlay per class.
     localizer: OnceCell<Localizer>,
+    /// The trapezoids of those overlays, counted without building them.
+    preprocessing_size: OnceCell<usize>,
     /// By class and embedding: the sight fans of its witness cells, each
     /// embedding's built when first asked for.
     fans: OnceCell<Vec<Vec<OnceCell<Vec<SightFan>>>>>,
@@ -107,6 +117,11 @@ impl EmbeddingPair {
         self.overlap
     }
 }
+
+/// Two valid embeddings of one class, by index in [`Study::embeddings`],
+/// `a < b`, whose skeleton polygons' bounding boxes meet, and whether the
+/// polygons' interiors overlap (`wai_embed::interiors_overlap`).
+pub type SkeletonPair = (usize, usize, bool);
 
 /// Two different valid embeddings of one skeleton whose embedded skeleton
 /// polygons overlap (the premise of Theorem 4.2), by class and position in
@@ -218,7 +233,39 @@ impl GapStructure {
 #[derive(Debug, Clone)]
 pub struct Embedded {
     pub embedding: Embedding,
-    pub kernel: ConvexRegion,
+    pub kernel: Kernel,
+}
+
+/// The embedded kernel h(ker V*): the kernel of h(V◇)
+/// (`wai_visibility::kernel_of_ring`), computed when first read and then
+/// kept. It reads as the [`ConvexRegion`] it is (`Deref`), so
+/// `h.kernel.locate(p)` and `&h.kernel` work as on the region; a run that
+/// never reads a kernel (chapter 5's checkers classify cell edges by
+/// their supporting lines) never computes one.
+#[derive(Debug, Clone)]
+pub struct Kernel {
+    /// h(V◇)'s vertices.
+    ring: Vec<wai_exact::Point>,
+    region: OnceCell<ConvexRegion>,
+}
+
+impl Kernel {
+    /// The kernel of the polygon `ring`, to be computed when first read.
+    pub fn of_ring(ring: Vec<wai_exact::Point>) -> Kernel {
+        Kernel {
+            ring,
+            region: OnceCell::new(),
+        }
+    }
+}
+
+impl std::ops::Deref for Kernel {
+    type Target = ConvexRegion;
+
+    fn deref(&self) -> &ConvexRegion {
+        self.region
+            .get_or_init(|| wai_visibility::kernel_of_ring(&self.ring))
+    }
 }
 
 impl<'m> Study<'m> {
@@ -236,13 +283,17 @@ impl<'m> Study<'m> {
             touching: OnceCell::new(),
             rings: OnceCell::new(),
             pairs: OnceCell::new(),
+            skeleton_pairs: OnceCell::new(),
             views: OnceCell::new(),
             valid: OnceCell::new(),
             candidate_sets: OnceCell::new(),
             cell_edges: OnceCell::new(),
             gaps: OnceCell::new(),
+            edge_pairs: OnceCell::new(),
+            edge_counts: OnceCell::new(),
             fans: OnceCell::new(),
             localizer: OnceCell::new(),
+            preprocessing_size: OnceCell::new(),
             crossings: RefCell::new(HashMap::new()),
             timer: Timer::default(),
         }
@@ -311,7 +362,7 @@ impl<'m> Study<'m> {
                             .embeddings(key)
                             .into_iter()
                             .map(|embedding| Embedded {
-                                kernel: embedding.kernel(self.map),
+                                kernel: Kernel::of_ring(embedding.polygon(self.map)),
                                 embedding,
                             })
                             .collect()
@@ -483,6 +534,7 @@ impl<'m> Study<'m> {
                     })
                     .collect();
                 let cross = self.map.n() <= CROSS_SKELETON_MAX_N;
+                let same = self.skeleton_pairs();
                 let bounds: Vec<Bounds> = valid
                     .iter()
                     .map(|&(c, i)| Bounds::of(&rings[c][i].ring))
@@ -490,20 +542,33 @@ impl<'m> Study<'m> {
                 let mut out = Vec::new();
                 for a in 0..valid.len() {
                     for b in a + 1..valid.len() {
-                        if valid[a].0 != valid[b].0 && !cross {
+                        let one_class = valid[a].0 == valid[b].0;
+                        if !one_class && !cross {
                             continue;
                         }
                         if !bounds[a].meets_box(&bounds[b]) {
                             continue;
                         }
-                        let (p, q) = (
-                            &rings[valid[a].0][valid[a].1],
-                            &rings[valid[b].0][valid[b].1],
-                        );
+                        // A pair of one class: its verdict is the class's.
+                        let overlap = if one_class {
+                            let of_class = &same[valid[a].0];
+                            let at = of_class
+                                .binary_search_by_key(&(valid[a].1, valid[b].1), |&(x, y, _)| {
+                                    (x, y)
+                                })
+                                .expect("a pair of one class whose boxes meet");
+                            of_class[at].2
+                        } else {
+                            let (p, q) = (
+                                &rings[valid[a].0][valid[a].1],
+                                &rings[valid[b].0][valid[b].1],
+                            );
+                            interiors_overlap(&p.ring, &q.ring)
+                        };
                         out.push(EmbeddingPair {
                             first: valid[a],
                             second: valid[b],
-                            overlap: interiors_overlap(&p.ring, &q.ring),
+                            overlap,
                             intersection: OnceCell::new(),
                         });
                     }
@@ -513,20 +578,74 @@ impl<'m> Study<'m> {
         })
     }
 
+    /// By class: the pairs a < b of its valid embeddings whose skeleton
+    /// polygons' bounding boxes meet, with whether their interiors overlap
+    /// (Def 5.7's relation; [`Study::embedding_pairs`] takes its pairs of
+    /// one skeleton from here).
+    pub fn skeleton_pairs(&self) -> &[Vec<SkeletonPair>] {
+        self.skeleton_pairs.get_or_init(|| {
+            let witnesses = self.witnesses();
+            let embeddings = self.embeddings();
+            self.timer.stage("skeleton pairs", || {
+                witnesses
+                    .iter()
+                    .zip(embeddings)
+                    .map(|(ws, hs)| {
+                        let valid: Vec<usize> =
+                            (0..ws.len()).filter(|&i| ws[i].is_valid()).collect();
+                        if valid.len() < 2 {
+                            return Vec::new();
+                        }
+                        let rings: Vec<Vec<QPoint>> = valid
+                            .iter()
+                            .map(|&i| {
+                                let ring = hs[i].embedding.polygon(self.map);
+                                ring.into_iter().map(QPoint::from).collect()
+                            })
+                            .collect();
+                        let bounds: Vec<Bounds> = rings.iter().map(|r| Bounds::of(r)).collect();
+                        let mut out = Vec::new();
+                        for a in 0..valid.len() {
+                            for b in a + 1..valid.len() {
+                                if bounds[a].meets_box(&bounds[b]) {
+                                    let overlap = interiors_overlap(&rings[a], &rings[b]);
+                                    out.push((valid[a], valid[b], overlap));
+                                }
+                            }
+                        }
+                        out
+                    })
+                    .collect()
+            })
+        })
+    }
+
     /// By class, embedding and witness cell: the map edge seen through
-    /// each skeleton edge (`None` for full edges), from V_w of the cell's
-    /// representative point.
+    /// each skeleton edge (`None` for full edges) from the cell's
+    /// representative point: for a 2-cell by the rule the decomposition's
+    /// walk computes skeletons by (`wai_embed::witness_views_by_rule`: two
+    /// orientations, else a look-up in the view from the artificial edge's
+    /// first vertex), for a 1- or 0-cell from V_w of a visibility query.
+    /// That the point's skeleton is the embedding's is the decomposition's
+    /// (claims T3.3b and L3.5 check it on every cell).
     pub fn views(&self) -> &[Vec<Views>] {
         self.views.get_or_init(|| {
+            let witnesses = self.witnesses();
+            let index = self.index();
             self.timer.stage("views", || {
-                let witnesses = self.witnesses();
+                // The view from each map vertex, computed when first needed.
+                let vertex_views: Vec<OnceCell<Vec<(usize, usize)>>> =
+                    (0..self.map.n()).map(|_| OnceCell::new()).collect();
+                let view = |x: usize| -> &[(usize, usize)] {
+                    vertex_views[x].get_or_init(|| index.vertex_view(x))
+                };
                 self.embeddings()
                     .iter()
                     .zip(witnesses)
                     .map(|(hs, ws)| {
                         hs.iter()
                             .zip(ws)
-                            .map(|(h, w)| witness_views(self.index(), &h.embedding, w))
+                            .map(|(h, w)| witness_views_by_rule(index, view, &h.embedding, w))
                             .collect()
                     })
                     .collect()
@@ -661,12 +780,13 @@ impl<'m> Study<'m> {
             self.timer.stage("gap structures", || {
                 let sets = self.candidate_sets();
                 let mut overlapping: Vec<Vec<(usize, usize)>> = vec![Vec::new(); sets.len()];
-                for p in self.embedding_pairs() {
-                    if p.same_skeleton() && p.overlap() {
-                        let class = p.first.0;
-                        let j = |i: usize| sets[class].embeddings.binary_search(&i).expect("valid");
-                        let (a, b) = (j(p.first.1), j(p.second.1));
-                        overlapping[class].push((a.min(b), a.max(b)));
+                for (class, pairs) in self.skeleton_pairs().iter().enumerate() {
+                    for &(a, b, overlap) in pairs {
+                        if overlap {
+                            let j =
+                                |i: usize| sets[class].embeddings.binary_search(&i).expect("valid");
+                            overlapping[class].push((j(a), j(b)));
+                        }
                     }
                 }
                 sets.iter()
@@ -679,15 +799,38 @@ impl<'m> Study<'m> {
         })
     }
 
+    /// By class: every ordered pair (e, f) of map edges that are valid
+    /// candidate edges of different artificial edges in some valid
+    /// embedding, with those embeddings (the premise of Lemmas 5.13, 5.14
+    /// and Theorem 5.15; [`crate::edge_pairs::shared_embeddings`]).
+    pub fn edge_pairs(&self) -> &[crate::edge_pairs::SharedPairs] {
+        self.edge_pairs.get_or_init(|| {
+            let sets = self.candidate_sets();
+            self.timer.stage("edge pairs", || {
+                sets.iter()
+                    .map(crate::edge_pairs::shared_embeddings)
+                    .collect()
+            })
+        })
+    }
+
     /// By class, by 2-cell: the cell's edges as kernel or wedge edges
     /// (Def 5.2) of the embedding it lies in (the one whose origin is the
     /// cell's skeleton origin), the wedges those of its valid candidate
-    /// edges.
+    /// edges. Each edge is classified by its supporting line, in integers
+    /// (`wai_embed::wedge::classify_by_lines`, which relies on the cell
+    /// lying in its embedding's kernel, Observation 3.13); the tests
+    /// compare it with `classify_cell_edges`, which reads the kernel's
+    /// edges and the cell's exact points.
     pub fn cell_edges(&self) -> &[Vec<CellEdges>] {
         self.cell_edges.get_or_init(|| {
             self.timer.stage("cell edges", || {
                 let d = self.decomposition();
                 let arr = self.arrangement();
+                // By arrangement edge: two map points on its line.
+                let supports: Vec<(wai_exact::Point, wai_exact::Point)> = (0..arr.edge_count())
+                    .map(|e| crate::preprocessing::support_points(arr, e))
+                    .collect();
                 d.classes()
                     .iter()
                     .enumerate()
@@ -710,8 +853,11 @@ impl<'m> Study<'m> {
                                         self.valid_candidates(class, j),
                                     )
                                 });
-                                let kinds =
-                                    classify_cell_edges(&hs[j].kernel, lines, &arr.face_points(f));
+                                let kinds = classify_by_lines(
+                                    &hs[j].embedding.polygon(self.map),
+                                    lines,
+                                    arr.face_cycle(f).map(|h| supports[h / 2]),
+                                );
                                 CellEdges {
                                     cell: f,
                                     embedding: j,
@@ -725,6 +871,17 @@ impl<'m> Study<'m> {
         })
     }
 
+    /// By class: its kernel edges K and wedge edges W, and W by embedding
+    /// ([`crate::wedge_counts::counts`] of [`Study::cell_edges`]), which
+    /// the bounds L5.1, L5.2 and T5.16 read.
+    pub fn edge_counts(&self) -> &[crate::wedge_counts::EdgeCounts] {
+        self.edge_counts.get_or_init(|| {
+            let cells = self.cell_edges();
+            self.timer
+                .stage("edge counts", || crate::wedge_counts::counts(cells))
+        })
+    }
+
     /// The map preprocessed for localization by Alg 3.14 from the study's
     /// decomposition (steps 17–26: per class, its cells of every dimension
     /// translated to their embedding's origin and overlaid, with slab point
@@ -734,6 +891,20 @@ impl<'m> Study<'m> {
             let d = self.decomposition();
             self.timer
                 .stage("localizer", || Localizer::from_decomposition(d))
+        })
+    }
+
+    /// The size of Alg 3.14's preprocessing: the trapezoids of the
+    /// overlays of every class, as [`Study::localizer`] would build them
+    /// (`Localizer::trapezoids`), counted from the decomposition in `i128`
+    /// without building the overlays ([`crate::preprocessing`]); from the
+    /// localizer itself when a number does not fit.
+    pub fn preprocessing_size(&self) -> usize {
+        *self.preprocessing_size.get_or_init(|| {
+            let d = self.decomposition();
+            self.timer
+                .stage("preprocessing size", || crate::preprocessing::trapezoids(d))
+                .unwrap_or_else(|| self.localizer().trapezoids())
         })
     }
 

@@ -31,7 +31,6 @@ use serde_json::json;
 use wai_embed::{Chord, Pt, SightFan};
 
 use crate::framework::{Case, Checker, Report, Violation};
-use wai_study::edge_pairs::shared_embeddings;
 use wai_study::Study;
 
 const ID: &str = "L5.13";
@@ -123,7 +122,7 @@ fn check_study(study: &Study<'_>) -> Report {
         .map(|&v| Pt::from(v))
         .collect();
     for (class, c) in study.candidate_sets().iter().enumerate() {
-        for ((e, f), shared) in shared_embeddings(c) {
+        for ((e, f), shared) in study.edge_pairs()[class].iter() {
             if e > f || shared.len() < 2 {
                 continue;
             }
@@ -133,7 +132,7 @@ fn check_study(study: &Study<'_>) -> Report {
                 let mut windows = Vec::new();
                 let mut owners = Vec::new();
                 let mut fans: Vec<&SightFan> = Vec::new();
-                for s in &shared {
+                for s in shared {
                     let h = c.embeddings[s.j];
                     let a = c.artificial[i_of(s.j)];
                     let seen: Vec<&SightFan> = study.fans_seeing(class, h, (a, edge)).collect();

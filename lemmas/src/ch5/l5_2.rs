@@ -9,11 +9,9 @@
 //! [`wai_study::Study::candidate_sets`]. A bound is never decided by one map
 //! ([`Report::hold_to`]).
 
-use rug::Rational;
 use serde_json::json;
 
 use crate::framework::{over, Ceiling, Checker, Report};
-use wai_study::wedge_counts::counts;
 use wai_study::Study;
 
 const ID: &str = "L5.2";
@@ -34,24 +32,30 @@ pub fn bound(r: usize, cs: &[usize]) -> u128 {
 fn check_study(study: &Study<'_>) -> Report {
     let map = study.map();
     let sets = study.candidate_sets();
-    let mut largest: Option<(Rational, serde_json::Value)> = None;
-    for (class, c) in counts(study.cell_edges()).iter().enumerate() {
+    // The largest W_j / bound so far, as (W_j, bound ≥ 1), compared by
+    // cross multiplication (u128: W_j is a count of edges, the bound below
+    // 2^64 for any map that fits in memory), with where it was reached.
+    let mut largest: Option<((u128, u128), serde_json::Value)> = None;
+    for (class, c) in study.edge_counts().iter().enumerate() {
         for (&j, &w) in &c.wedge_by_embedding {
             let Some(pos) = sets[class].embeddings.iter().position(|&e| e == j) else {
                 continue; // cells lie in valid embeddings only
             };
-            let cij: Vec<usize> = sets[class].sets[pos].iter().map(Vec::len).collect();
-            let b = bound(map.r(), &cij);
-            let value = over(w, b);
-            if largest.as_ref().is_none_or(|l| value > l.0) {
-                largest = Some((
-                    value,
-                    json!({ "class": class, "embedding": j, "wedge": w, "c": cij, "bound": b.to_string() }),
-                ));
+            let cij = || {
+                sets[class].sets[pos]
+                    .iter()
+                    .map(Vec::len)
+                    .collect::<Vec<usize>>()
+            };
+            let b = bound(map.r(), &cij());
+            let (w, d) = (w as u128, b.max(1));
+            if largest.as_ref().is_none_or(|((lw, ld), _)| w * ld > lw * d) {
+                let at = json!({ "class": class, "embedding": j, "wedge": w, "c": cij(), "bound": b.to_string() });
+                largest = Some(((w, d), at));
             }
         }
     }
-    CHECKER.bound_report(largest)
+    CHECKER.bound_report(largest.map(|((w, d), at)| (over(w as usize, d), at)))
 }
 
 #[cfg(test)]

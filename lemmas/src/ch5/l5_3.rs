@@ -72,7 +72,7 @@ fn check_study(study: &Study<'_>) -> Report {
 
 /// The bound on one class: |C_sing| ≤ s·t and ≤ n.
 pub fn check_class(n: usize, c: &CandidateSets) -> Option<Violation> {
-    let single = c.single().len();
+    let single = c.all.len() - c.multiple.len();
     let bound = (c.s() * c.t()).min(n);
     (single > bound).then(|| {
         Violation::with_data(
@@ -101,16 +101,15 @@ pub fn check_classes(n: usize, classes: &[CandidateSets], tight: Option<usize>) 
         if c.t() == 0 {
             continue;
         }
-        let mut one = Report::new(ID);
-        one.record(check_class(n, c));
-        let single = c.single().len();
+        report.record(super::tagged(check_class(n, c), "class", || json!(class)));
+        // C_mult ⊆ C_all (Def 5.4).
+        let single = c.all.len() - c.multiple.len();
         let bound = (c.s() * c.t()).min(n);
-        one.measure(
+        super::measure_lazily(
+            &mut report,
             crate::framework::over(single, bound as u128),
-            json!({"single": single, "s": c.s(), "t": c.t()}),
+            || json!({"single": single, "s": c.s(), "t": c.t(), "class": class}),
         );
-        one.tag("class", json!(class));
-        report.absorb(one);
         report.hit(if c.s() * c.t() <= n {
             ST_BOUND
         } else {

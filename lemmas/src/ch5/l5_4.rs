@@ -84,10 +84,7 @@ pub fn check_classes(classes: &[CandidateSets]) -> Report {
         if c.t() == 0 {
             continue;
         }
-        let mut one = Report::new(ID);
-        one.record(check_class(c));
-        one.tag("class", json!(class));
-        report.absorb(one);
+        report.record(super::tagged(check_class(c), "class", || json!(class)));
         report.count("gaps", c.gaps.len() as u64);
         report.count("multiple", c.multiple.len() as u64);
         let (gaps, mult) = (c.gaps.len(), c.multiple.len());

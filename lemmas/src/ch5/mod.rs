@@ -37,11 +37,37 @@ pub fn over_gap_classes(
     let classes = study.gap_structures().iter().zip(study.candidate_sets());
     for (class, (g, c)) in classes.enumerate() {
         let mut one = check(g, c);
-        one.tag("class", serde_json::json!(class));
-        one.tag("embeddings", serde_json::json!(c.embeddings));
+        if !one.violations.is_empty() {
+            one.tag("class", serde_json::json!(class));
+            one.tag("embeddings", serde_json::json!(c.embeddings));
+        }
         report.absorb(one);
     }
     report
+}
+
+/// Keeps `ratio` as the report's largest if it is ([`Report::measure`]),
+/// building the data of where it was reached, `at()`, only then.
+pub fn measure_lazily(
+    report: &mut Report,
+    ratio: rug::Rational,
+    at: impl FnOnce() -> serde_json::Value,
+) {
+    if report.largest.as_ref().is_none_or(|l| ratio > l.ratio) {
+        report.measure(ratio, at());
+    }
+}
+
+/// `violation` with `key: value` in its data ([`Report::tag`] for one).
+pub fn tagged(
+    violation: Option<crate::framework::Violation>,
+    key: &str,
+    value: impl FnOnce() -> serde_json::Value,
+) -> Option<crate::framework::Violation> {
+    violation.map(|mut v| {
+        v.data[key] = value();
+        v
+    })
 }
 
 #[cfg(test)]

@@ -29,7 +29,7 @@ use serde_json::json;
 use wai_embed::CandidateSets;
 
 use crate::framework::{Case, Checker, Report, Violation};
-use wai_study::edge_pairs::shared_embeddings;
+use wai_study::edge_pairs::{shared_embeddings, SharedPairs};
 use wai_study::Study;
 
 const ID: &str = "T5.15";
@@ -74,8 +74,9 @@ pub const CHECKER: Checker = Checker::new(ID, check_study).with_cases(&[
 fn check_study(study: &Study<'_>) -> Report {
     let mut report = Report::new(ID);
     let mut largest = 0;
-    for (class, c) in study.candidate_sets().iter().enumerate() {
-        let (mut one, k) = check_class(c, BOUND);
+    let classes = study.candidate_sets().iter().zip(study.edge_pairs());
+    for (class, (c, pairs)) in classes.enumerate() {
+        let (mut one, k) = check_pairs(c, pairs, BOUND);
         one.tag("class", json!(class));
         report.absorb(one);
         largest = largest.max(k);
@@ -100,8 +101,14 @@ pub fn premise_embeddings(c: &CandidateSets) -> usize {
 /// [`CandidateSets::embeddings`]) where e is a candidate edge of one
 /// artificial edge and f a multiple candidate edge of another.
 pub fn k_of_pairs(c: &CandidateSets) -> Vec<((usize, usize), Vec<usize>)> {
-    shared_embeddings(c)
-        .into_iter()
+    k_of_shared(&shared_embeddings(c))
+}
+
+/// [`k_of_pairs`] from the class's shared pairs
+/// ([`wai_study::Study::edge_pairs`]).
+pub fn k_of_shared(pairs: &SharedPairs) -> Vec<((usize, usize), Vec<usize>)> {
+    pairs
+        .iter()
         .map(|(pair, shared)| {
             let js: Vec<usize> = shared
                 .iter()
@@ -116,9 +123,15 @@ pub fn k_of_pairs(c: &CandidateSets) -> Vec<((usize, usize), Vec<usize>)> {
 
 /// One class against a bound on k: the report and the largest k.
 pub fn check_class(c: &CandidateSets, bound: usize) -> (Report, usize) {
+    check_pairs(c, &shared_embeddings(c), bound)
+}
+
+/// [`check_class`] on the class's shared pairs `pairs`
+/// ([`wai_study::Study::edge_pairs`]).
+pub fn check_pairs(c: &CandidateSets, pairs: &SharedPairs, bound: usize) -> (Report, usize) {
     let mut report = Report::new(ID);
     let mut largest = 0;
-    for ((e, f), js) in k_of_pairs(c) {
+    for ((e, f), js) in k_of_shared(pairs) {
         let k = js.len();
         largest = largest.max(k);
         if let Some(case) = k.checked_sub(1).and_then(|x| K_CASES.get(x)) {
@@ -127,12 +140,14 @@ pub fn check_class(c: &CandidateSets, bound: usize) -> (Report, usize) {
         if k >= 2 {
             report.count("pairs_k_ge_2", 1);
         }
-        let embeddings: Vec<usize> = js.iter().map(|&j| c.embeddings[j]).collect();
-        report.measure(
+        let embeddings = || js.iter().map(|&j| c.embeddings[j]).collect::<Vec<usize>>();
+        super::measure_lazily(
+            &mut report,
             rug::Rational::from((k, BOUND)),
-            json!({"e": e, "f": f, "k": k, "embeddings": embeddings}),
+            || json!({"e": e, "f": f, "k": k, "embeddings": embeddings()}),
         );
         report.record((k > bound).then(|| {
+            let embeddings = embeddings();
             Violation::with_data(
                 format!(
                     "map edges {e} and {f}: a candidate edge and a multiple candidate edge of different artificial edges in {k} embeddings, above {bound}"
@@ -162,9 +177,9 @@ fn k_below(report: &Report, want: usize) -> usize {
 /// pair qualifies): the quantity `wai search-extremes --ratio k` climbs.
 pub fn largest_k(study: &Study<'_>) -> usize {
     study
-        .candidate_sets()
+        .edge_pairs()
         .iter()
-        .flat_map(k_of_pairs)
+        .flat_map(k_of_shared)
         .map(|(_, js)| js.len())
         .max()
         .unwrap_or(0)

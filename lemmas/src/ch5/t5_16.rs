@@ -10,7 +10,6 @@
 use serde_json::json;
 
 use crate::framework::{over, Ceiling, Checker, Report};
-use wai_study::wedge_counts::counts;
 use wai_study::Study;
 
 const ID: &str = "T5.16";
@@ -23,7 +22,8 @@ pub const CHECKER: Checker = Checker::new(ID, check_study).with_ceiling(Ceiling(
 fn check_study(study: &Study<'_>) -> Report {
     let map = study.map();
     let r2 = (map.r() as u128).pow(2);
-    let largest = counts(study.cell_edges())
+    let largest = study
+        .edge_counts()
         .iter()
         .enumerate()
         .filter(|(_, c)| c.kernel + c.wedge > 0)
