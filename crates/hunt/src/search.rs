@@ -107,8 +107,8 @@ impl Lanes {
     }
 }
 
-/// Runs `checkers` over `stream` until `limit` on rayon's threads (set the
-/// pool's size before calling), calling `progress(maps done, elapsed)` as
+/// Runs `checkers` over `stream` until `limit` on as many worker threads
+/// as rayon's pool has (set the pool's size before calling), calling `progress(maps done, elapsed)` as
 /// maps finish. With `stop_early`, stops taking maps once a counterexample
 /// is found.
 pub fn search(
@@ -152,12 +152,15 @@ pub fn search(
     let mut per_kind: Vec<(String, u64, u64)> = Vec::new();
     let workers = rayon::current_num_threads().max(1);
     let (tx, rx) = mpsc::channel::<(u64, String, Summary, Profile)>();
-    rayon::scope(|scope| {
+    // Plain threads, not rayon tasks: the loop below blocks on the
+    // channel, and inside a rayon scope it would hold one of the pool's
+    // threads (all of them with --threads 1: a deadlock).
+    std::thread::scope(|scope| {
         for _ in 0..workers {
             let tx = tx.clone();
             let take = &take;
             let state = &state;
-            scope.spawn(move |_| {
+            scope.spawn(move || {
                 while let Some((lane, index)) = take() {
                     let (kind, map): (String, Map) =
                         stream.map(index).expect("lanes hold indices of the stream");
@@ -241,7 +244,12 @@ mod tests {
             wai_lemmas::ch3::t3_3a::CHECKER,
             wai_lemmas::ch5::t5_17::CHECKER,
         ];
-        let a = search(&checkers, &stream, Limit::Count(12), false, &|_, _| {});
+        // One thread: the collecting loop must not take the only worker.
+        let a = rayon::ThreadPoolBuilder::new()
+            .num_threads(1)
+            .build()
+            .unwrap()
+            .install(|| search(&checkers, &stream, Limit::Count(12), false, &|_, _| {}));
         let b = rayon::ThreadPoolBuilder::new()
             .num_threads(3)
             .build()

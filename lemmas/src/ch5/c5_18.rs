@@ -24,7 +24,7 @@
 //! trapezoids (which cells cover each), which the thesis stores without
 //! blowup by the interval trees of Guibas et al., are not counted (the
 //! sweep's `overlay_size` has them); the cells placed are (`cells_placed`).
-
+//!
 //! Time is not measured here: a checker is deterministic. The scaling sweep
 //! (`benches/src/bin/sweep.rs`) fits the log–log slope of the preprocessing
 //! time and of S against N(n + r²) on the scaling families.
