@@ -9,7 +9,6 @@
 //! the scaling sweep (max |EC| against n + r²).
 
 use rug::Rational;
-use serde_json::json;
 use wai_cells::Counts;
 use wai_study::Study;
 
@@ -29,34 +28,25 @@ pub fn measure(c: &Counts) -> Rational {
 
 /// The ratio on the decomposition's counts.
 fn check_study(study: &Study<'_>) -> Report {
-    let c = study.decomposition().counts();
-    CHECKER.bound_report(Some((
-        measure(&c),
-        json!({"n": c.n, "r": c.r, "max_class_complexity": c.max_class_complexity}),
-    )))
+    CHECKER.counts_report(study, measure)
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::framework::checker::counts_tests::{planted_excess_reported, ratio_on};
 
     #[test]
     fn measures_and_passes_on_a_family() {
-        let map = wai_gen::family("corridor-niches", &[2]).unwrap();
-        let report = CHECKER.check_map(&map);
-        assert_eq!((report.examined, report.violations.len()), (1, 0));
         // max |EC| = 20, n = 12 (the snapshot counts).
-        let largest = report.largest.expect("a ratio");
-        assert_eq!(largest.ratio, Rational::from((20, 12 * 12)));
+        let ratio = ratio_on(&CHECKER, "corridor-niches", 2);
+        assert_eq!(ratio, Rational::from((20, 12 * 12)));
     }
 
     #[test]
     fn planted_excess_is_reported() {
-        let map = wai_gen::family("corridor-niches", &[1]).unwrap();
-        let mut counts = wai_cells::Decomposition::new(&map).counts();
-        counts.max_class_complexity = 5 * counts.n * counts.n;
-        let report = CHECKER.judge(CHECKER.bound_report(Some((measure(&counts), json!({})))));
-        assert_eq!(report.violations.len(), 1);
-        assert!(report.violations[0].what.contains("above the ceiling"));
+        planted_excess_reported(&CHECKER, measure, |counts| {
+            counts.max_class_complexity = 5 * counts.n * counts.n;
+        });
     }
 }

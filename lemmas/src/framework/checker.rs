@@ -11,6 +11,7 @@
 //! **Invariant:** `check` never mutates what it checks and is deterministic.
 
 use rug::Rational;
+use wai_cells::Counts;
 use wai_map::Map;
 use wai_study::Study;
 
@@ -113,6 +114,14 @@ impl Checker {
         report
     }
 
+    /// A bound on the decomposition's counts (Thm 3.9, Thm 3.10, Thm 5.17):
+    /// the ratio `measure` gives the study's [`Counts`], at the counts that
+    /// make it.
+    pub fn counts_report(&self, study: &Study<'_>, measure: fn(&Counts) -> Rational) -> Report {
+        let c = study.decomposition().counts();
+        self.bound_report(Some((measure(&c), counts_json(&c))))
+    }
+
     /// Holds `report` to the checker's declarations: a bound's largest
     /// ratio to its ceiling ([`Report::hold_to`]).
     ///
@@ -178,5 +187,47 @@ impl Checker {
                 "checker {id} counted case {case:?}, which it does not declare"
             );
         }
+    }
+}
+
+/// The counts a ratio of [`Checker::counts_report`] is made of.
+fn counts_json(c: &Counts) -> serde_json::Value {
+    serde_json::json!({
+        "n": c.n,
+        "r": c.r,
+        "cells": c.cells,
+        "total_complexity": c.total_complexity,
+        "max_class_complexity": c.max_class_complexity,
+    })
+}
+
+/// The tests every bound on the decomposition's counts shares.
+#[cfg(test)]
+pub(crate) mod counts_tests {
+    use super::*;
+
+    /// The checker's largest ratio on `family` at `k`: one instance, no
+    /// violation.
+    pub fn ratio_on(checker: &Checker, family: &str, k: u32) -> Rational {
+        let map = wai_gen::family(family, &[k]).unwrap();
+        let report = checker.check_map(&map);
+        assert_eq!((report.examined, report.violations.len()), (1, 0));
+        report.largest.expect("a ratio").ratio
+    }
+
+    /// Counts of corridor-niches k = 1 changed by `plant` must be
+    /// reported above the ceiling.
+    pub fn planted_excess_reported(
+        checker: &Checker,
+        measure: fn(&Counts) -> Rational,
+        plant: fn(&mut Counts),
+    ) {
+        let map = wai_gen::family("corridor-niches", &[1]).unwrap();
+        let mut counts = wai_cells::Decomposition::new(&map).counts();
+        plant(&mut counts);
+        let report =
+            checker.judge(checker.bound_report(Some((measure(&counts), counts_json(&counts)))));
+        assert_eq!(report.violations.len(), 1);
+        assert!(report.violations[0].what.contains("above the ceiling"));
     }
 }
