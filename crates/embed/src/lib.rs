@@ -46,7 +46,7 @@ pub use transversal::transversal;
 /// name the crates above this one use for it.
 pub use wai_exact::QPoint as Pt;
 pub use witness::{
-    interiors_overlap, kernels_overlap, overlapping_valid_pairs, piece_of, segment_meets_polygon,
-    sight_fans, valid_candidate_edges, valid_from_views, witness_regions, witness_views, CellRef,
-    WitnessCell, Witnesses,
+    interiors_overlap, interiors_overlap_rational, kernels_overlap, overlapping_valid_pairs,
+    piece_of, segment_meets_polygon, sight_fans, valid_candidate_edges, valid_from_views,
+    witness_regions, witness_views, CellRef, WitnessCell, Witnesses,
 };
