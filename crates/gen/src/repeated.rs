@@ -97,7 +97,7 @@ impl RepeatedLayout {
     /// (Theorem 4.3's premise), which the seeds of
     /// [`RepeatedLayout::of_seed`] reach only now and then.
     pub fn kernels_of_seed(seed: u64) -> RepeatedLayout {
-        let mut rng = ChaCha8Rng::seed_from_u64(seed ^ 0x6b65_726e_656c_73);
+        let mut rng = ChaCha8Rng::seed_from_u64(seed ^ 0x006b_6572_6e65_6c73);
         let q = 2 * rng.random_range(3..=8i128);
         let funnels = rng.random_range(2..=4i128);
         // Half widths of the bottom and the mouth: hb < ht < q/2, so the
