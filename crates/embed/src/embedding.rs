@@ -2,7 +2,7 @@
 //! edges of their artificial edges.
 
 use crate::sight::EdgeSight;
-use std::collections::HashMap;
+use rustc_hash::FxHashMap as HashMap;
 use std::sync::OnceLock;
 use wai_exact::Point;
 use wai_map::Map;
@@ -69,7 +69,7 @@ impl<'a> Embedder<'a> {
         let map = index.map();
         let v = map.vertices();
         let n = v.len();
-        let mut on_line: HashMap<LineLabel, Vec<usize>> = HashMap::new();
+        let mut on_line: HashMap<LineLabel, Vec<usize>> = HashMap::default();
         let zero = Point::new(0, 0);
         for e in 0..n {
             let label = LineLabel::through(v[e], v[(e + 1) % n], zero);
@@ -116,9 +116,9 @@ impl<'a> Embedder<'a> {
                 self.at.get(&p).copied()
             })
             .collect::<Option<_>>()?;
-        // 2. Full edges are exactly the map edges among the images.
-        let image: HashMap<usize, usize> =
-            vertices.iter().enumerate().map(|(i, &m)| (m, i)).collect();
+        // 2. Full edges are exactly the map edges among the images (a
+        // skeleton has few vertices: a linear search finds an image).
+        let image = |m: usize| vertices.iter().position(|&v| v == m);
         let full = |i: usize| key.labels[i].is_none();
         for i in 0..k {
             let j = (i + 1) % k;
@@ -128,7 +128,7 @@ impl<'a> Embedder<'a> {
                 return None;
             }
             for m in [(vertices[i] + 1) % n, (vertices[i] + n - 1) % n] {
-                if let Some(&j) = image.get(&m) {
+                if let Some(j) = image(m) {
                     let joined = (j == (i + 1) % k && full(i)) || (i == (j + 1) % k && full(j));
                     if !joined {
                         return None;

@@ -54,6 +54,19 @@ impl SkeletonRing {
 
 /// Whether two closed segments meet other than in an end common to both.
 pub fn edges_meet(a: (&QPoint, &QPoint), b: (&QPoint, &QPoint)) -> bool {
+    if let (Some(a0), Some(a1), Some(b0), Some(b1)) = (
+        fast::small(a.0),
+        fast::small(a.1),
+        fast::small(b.0),
+        fast::small(b.1),
+    ) {
+        return fast::edges_meet([a0, a1], [b0, b1]);
+    }
+    edges_meet_rational(a, b)
+}
+
+/// [`edges_meet`] in GMP rationals.
+pub fn edges_meet_rational(a: (&QPoint, &QPoint), b: (&QPoint, &QPoint)) -> bool {
     if !segments_meet(a.0, a.1, b.0, b.1) {
         return false;
     }

@@ -103,6 +103,31 @@ pub(crate) fn segments_meet(a: I, b: I, c: I, d: I) -> bool {
         || (o4 == Equal && within(c, d, b))
 }
 
+/// [`super::edges_meet`] on small points: the closed segments meet other
+/// than in an end common to both.
+pub(crate) fn edges_meet(a: [I; 2], b: [I; 2]) -> bool {
+    if !segments_meet(a[0], a[1], b[0], b[1]) {
+        return false;
+    }
+    let Some(&x) = a.iter().find(|p| b.contains(p)) else {
+        return true;
+    };
+    // A common end: they meet elsewhere only if collinear and pointing the
+    // same way from it.
+    let (da, db) = (sub(a[1], a[0]), sub(b[1], b[0]));
+    if cross(da, db) != 0 {
+        return false;
+    }
+    let away = |s: [I; 2]| {
+        if s[0] == x {
+            sub(s[1], x)
+        } else {
+            sub(s[0], x)
+        }
+    };
+    dot(away(a), away(b)) > 0
+}
+
 /// A parameter `n/d` on a segment, `d > 0`.
 #[derive(Clone, Copy, Debug)]
 pub(crate) struct Frac {

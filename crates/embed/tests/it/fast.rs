@@ -8,7 +8,9 @@
 use crate::common::maps;
 use rug::Rational;
 use wai_cells::Decomposition;
-use wai_embed::intersection::{pieces_inside, pieces_inside_rational, FAST_BITS};
+use wai_embed::intersection::{
+    edges_meet, edges_meet_rational, pieces_inside, pieces_inside_rational, FAST_BITS,
+};
 use wai_embed::{interiors_overlap, interiors_overlap_rational, Embedder, Intersection};
 use wai_exact::QPoint;
 use wai_visibility::VisibilityIndex;
@@ -20,6 +22,13 @@ fn agree(p: &[QPoint], q: &[QPoint]) {
     assert_eq!(x.cycles, y.cycles, "{p:?} ∩ {q:?}");
     assert_eq!(x.components(), y.components());
     assert_eq!(interiors_overlap(p, q), interiors_overlap_rational(p, q));
+    for i in 0..p.len() {
+        for j in 0..q.len() {
+            let e = (&p[i], &p[(i + 1) % p.len()]);
+            let f = (&q[j], &q[(j + 1) % q.len()]);
+            assert_eq!(edges_meet(e, f), edges_meet_rational(e, f), "{e:?} {f:?}");
+        }
+    }
     for (r, s) in [(p, q), (q, p)] {
         for i in 0..r.len() {
             let (a, b) = (&r[i], &r[(i + 1) % r.len()]);
@@ -96,4 +105,39 @@ fn rings_past_the_bound_take_the_rational_path() {
         pt(2, 2),
     ];
     agree(&half, &q);
+}
+
+#[test]
+fn open_hulls_meet_agrees_with_the_pieces() {
+    use wai_embed::piece::{open_hulls_meet, Piece};
+    use wai_exact::Point;
+    // Small coordinates on a 5 × 5 grid: many shared points, collinear
+    // sets and touching hulls.
+    let mut state = 0x2545_f491_4f6c_dd1du64;
+    let mut next = |m: u64| {
+        state ^= state << 13;
+        state ^= state >> 7;
+        state ^= state << 17;
+        (state % m) as i128
+    };
+    let piece = |s: &[Point]| -> Option<Piece> {
+        let h = wai_exact::convex_hull(s.iter().map(|&p| QPoint::from(p)).collect());
+        match h.len() {
+            0 | 1 => None,
+            2 => Some(Piece::Segment(h[0].clone(), h[1].clone())),
+            _ => Some(Piece::Polygon(h)),
+        }
+    };
+    let mut checked = 0;
+    for _ in 0..4000 {
+        let mut set =
+            |k: usize| -> Vec<Point> { (0..k).map(|_| Point::new(next(5), next(5))).collect() };
+        let (p, q) = (set(2 + (checked % 3)), set(2 + (checked / 3 % 3)));
+        let (Some(a), Some(b)) = (piece(&p), piece(&q)) else {
+            continue;
+        };
+        assert_eq!(open_hulls_meet(&p, &q), Some(a.meets(&b)), "{p:?} {q:?}");
+        checked += 1;
+    }
+    assert!(checked > 2000, "{checked}");
 }
