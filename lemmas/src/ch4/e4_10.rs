@@ -84,7 +84,7 @@ fn check_study(study: &Study<'_>) -> Report {
     let mut shown = Vec::new();
     for (pair, x, types) in classified_pairs(study) {
         report.record(None);
-        let (fives, map_vertex) = shape(x, &types, &vertices);
+        let (fives, map_vertex) = shape(x, types, &vertices);
         report.progress_toward("four type 5", Rational::from(fives));
         if fives == 4 {
             report.hit("four type 5");

@@ -72,7 +72,8 @@ fn check_study(study: &Study<'_>) -> Report {
             &rings[pair.first.0][pair.first.1],
             &rings[pair.second.0][pair.second.1],
         );
-        let lines = meeting_lines(p, q);
+        let meeting = meeting_pairs(p, q);
+        let lines = lines_of(p, q, &meeting);
         let ws = part_points(
             &study.witnesses()[pair.first.0][pair.first.1].pieces(),
             &lines,
@@ -83,7 +84,7 @@ fn check_study(study: &Study<'_>) -> Report {
         );
         for w in &ws {
             for w2 in &ws2 {
-                let mut r = check(p, q, w, w2);
+                let mut r = check_meeting(p, q, &meeting, w, w2);
                 r.tag("pair", json!([pair.first, pair.second]));
                 report.absorb(r);
             }
@@ -92,17 +93,27 @@ fn check_study(study: &Study<'_>) -> Report {
     report
 }
 
+/// The pairs (i, j) of an artificial edge of `p` and one of `q` that
+/// meet ([`edges_meet`]).
+pub fn meeting_pairs(p: &SkeletonRing, q: &SkeletonRing) -> Vec<(usize, usize)> {
+    p.artificial_edges()
+        .flat_map(|i| q.artificial_edges().map(move |j| (i, j)))
+        .filter(|&(i, j)| edges_meet(p.edge(i), q.edge(j)))
+        .collect()
+}
+
 /// The lines of the artificial edges of `p` and `q` that meet one of the
 /// other: the only lines across which a witness's tallies change.
 pub fn meeting_lines(p: &SkeletonRing, q: &SkeletonRing) -> Vec<(Pt, Pt)> {
+    lines_of(p, q, &meeting_pairs(p, q))
+}
+
+/// The lines of the edges of the `meeting` pairs.
+fn lines_of(p: &SkeletonRing, q: &SkeletonRing, meeting: &[(usize, usize)]) -> Vec<(Pt, Pt)> {
     let mut lines = Vec::new();
-    for i in p.artificial_edges() {
-        for j in q.artificial_edges() {
-            if edges_meet(p.edge(i), q.edge(j)) {
-                for (x, y) in [p.edge(i), q.edge(j)] {
-                    lines.push((x.clone(), y.clone()));
-                }
-            }
+    for &(i, j) in meeting {
+        for (x, y) in [p.edge(i), q.edge(j)] {
+            lines.push((x.clone(), y.clone()));
         }
     }
     lines.sort();
@@ -113,23 +124,29 @@ pub fn meeting_lines(p: &SkeletonRing, q: &SkeletonRing) -> Vec<(Pt, Pt)> {
 /// The tallies (LR/LR, RL/RL, LR/RL, RL/LR) of one pair and witnesses,
 /// and how many meeting pairs were undecided.
 pub fn tallies(p: &SkeletonRing, q: &SkeletonRing, w: &Pt, w2: &Pt) -> ([usize; 4], u64) {
+    tallies_of(p, q, &meeting_pairs(p, q), w, w2)
+}
+
+/// [`tallies`] over the `meeting` pairs of [`meeting_pairs`].
+fn tallies_of(
+    p: &SkeletonRing,
+    q: &SkeletonRing,
+    meeting: &[(usize, usize)],
+    w: &Pt,
+    w2: &Pt,
+) -> ([usize; 4], u64) {
     let mut t = [0; 4];
     let mut undecided = 0;
-    for i in p.artificial_edges() {
-        for j in q.artificial_edges() {
-            if !edges_meet(p.edge(i), q.edge(j)) {
-                continue;
-            }
-            match (
-                left_right(w, p.edge(i), q.edge(j)),
-                left_right(w2, q.edge(j), p.edge(i)),
-            ) {
-                (Some(true), Some(true)) => t[0] += 1,
-                (Some(false), Some(false)) => t[1] += 1,
-                (Some(true), Some(false)) => t[2] += 1,
-                (Some(false), Some(true)) => t[3] += 1,
-                _ => undecided += 1,
-            }
+    for &(i, j) in meeting {
+        match (
+            left_right(w, p.edge(i), q.edge(j)),
+            left_right(w2, q.edge(j), p.edge(i)),
+        ) {
+            (Some(true), Some(true)) => t[0] += 1,
+            (Some(false), Some(false)) => t[1] += 1,
+            (Some(true), Some(false)) => t[2] += 1,
+            (Some(false), Some(true)) => t[3] += 1,
+            _ => undecided += 1,
         }
     }
     (t, undecided)
@@ -137,8 +154,19 @@ pub fn tallies(p: &SkeletonRing, q: &SkeletonRing, w: &Pt, w2: &Pt) -> ([usize; 
 
 /// One pair of embeddings from one pair of witnesses.
 pub fn check(p: &SkeletonRing, q: &SkeletonRing, w: &Pt, w2: &Pt) -> Report {
+    check_meeting(p, q, &meeting_pairs(p, q), w, w2)
+}
+
+/// [`check`] with the pairs of [`meeting_pairs`].
+fn check_meeting(
+    p: &SkeletonRing,
+    q: &SkeletonRing,
+    meeting: &[(usize, usize)],
+    w: &Pt,
+    w2: &Pt,
+) -> Report {
     let mut report = Report::new(ID);
-    let (t, undecided) = tallies(p, q, w, w2);
+    let (t, undecided) = tallies_of(p, q, meeting, w, w2);
     report.count("undecided", undecided);
     for (k, name) in TYPES.iter().enumerate() {
         if t[k] > 0 {

@@ -57,7 +57,7 @@ fn check_study(study: &Study<'_>) -> Report {
         let ring = |k: &wai_visibility::ConvexRegion| -> Vec<Pt> {
             k.vertices().iter().map(Pt::from).collect()
         };
-        let within = common_range(&ring(&h.kernel), &ring(&h2.kernel), &t.perp());
+        let within = common_range(&ring(h.kernel()), &ring(h2.kernel()), &t.perp());
         let cases = match within {
             Some(range) => proof_lines(study, pair, Some(range)),
             None => Vec::new(),

@@ -95,7 +95,7 @@ fn skeleton_ring(map: &Map, h: &wai_study::Embedded) -> Vec<Pt> {
 
 /// The embedded kernel h(ker V*) of `h`.
 fn kernel_ring(h: &wai_study::Embedded) -> Vec<Pt> {
-    h.kernel.vertices().iter().map(Pt::from).collect()
+    h.kernel().vertices().iter().map(Pt::from).collect()
 }
 
 #[test]
