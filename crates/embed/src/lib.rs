@@ -42,9 +42,6 @@ pub use overlay::common_interior_point;
 pub use piece::{Bounds, Piece};
 pub use sight::EdgeSight;
 pub use transversal::transversal;
-/// The exact rational point of the pieces, [`wai_exact::QPoint`], under the
-/// name the crates above this one use for it.
-pub use wai_exact::QPoint as Pt;
 pub use witness::{
     interiors_overlap, interiors_overlap_rational, kernels_overlap, overlapping_valid_pairs,
     piece_of, segment_meets_polygon, sight_fans, valid_candidate_edges, valid_from_views,

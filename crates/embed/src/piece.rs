@@ -65,15 +65,6 @@ pub fn segment_cuts(a: &QPoint, b: &QPoint, c: &QPoint, e: &QPoint) -> Vec<Ratio
     vec![c.sub(a).cross(&f) / den]
 }
 
-/// The convex hull of `pts` ([`wai_exact::convex_hull`]), re-exported for
-/// the crates that name it here.
-pub use wai_exact::convex_hull;
-
-/// `u · w` ([`QPoint::dot`]), for the crates that name it here.
-pub fn dot(u: &QPoint, w: &QPoint) -> Rational {
-    u.dot(w)
-}
-
 /// The parameters `t` with `α + t·β > 0` for every `(α, β)` given, an open
 /// interval (the constraints of a bounded open convex polygon), if any.
 fn open_span(constraints: impl Iterator<Item = (Rational, Rational)>) -> Option<Span> {

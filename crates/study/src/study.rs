@@ -818,7 +818,7 @@ impl<'m> Study<'m> {
 }
 
 /// Whether the boundaries of two closed polygons share a point.
-fn boundaries_meet(p: &[wai_embed::Pt], q: &[wai_embed::Pt]) -> bool {
+fn boundaries_meet(p: &[QPoint], q: &[QPoint]) -> bool {
     let (np, nq) = (p.len(), q.len());
     (0..np).any(|i| {
         (0..nq).any(|j| {

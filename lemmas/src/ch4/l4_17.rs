@@ -44,10 +44,9 @@
 
 use serde_json::json;
 use std::cell::OnceCell;
-use wai_embed::piece::convex_hull;
 use wai_embed::piece::open_hulls_meet;
-use wai_embed::{crossing, Piece, Pt, SightFan};
-use wai_exact::Point;
+use wai_embed::{crossing, Piece, SightFan};
+use wai_exact::{convex_hull, Point, QPoint};
 
 use crate::framework::{Case, Checker, Report, Violation};
 use wai_study::Study;
@@ -163,7 +162,7 @@ impl Region {
 
     fn pieces(&self) -> &[Piece] {
         self.pieces.get_or_init(|| {
-            let [w0, w1, e0, e1] = self.corners.map(Pt::from);
+            let [w0, w1, e0, e1] = self.corners.map(QPoint::from);
             behind(&(w0, w1), &(e0, e1))
         })
     }
@@ -204,7 +203,7 @@ impl Region {
 /// `window` to the map edge `edge` behind it, beyond the window: the open
 /// hull of the two (B° and the region of a fan lie inside it) and the
 /// open edge (where the seen intervals lie).
-fn behind(window: &(Pt, Pt), edge: &(Pt, Pt)) -> Vec<Piece> {
+fn behind(window: &(QPoint, QPoint), edge: &(QPoint, QPoint)) -> Vec<Piece> {
     let hull = convex_hull(vec![
         window.0.clone(),
         window.1.clone(),

@@ -19,7 +19,8 @@
 use serde_json::json;
 use std::collections::HashSet;
 use wai_embed::intersection::{edge_type, EdgeType};
-use wai_embed::{Intersection, Pt, SkeletonRing};
+use wai_embed::{Intersection, SkeletonRing};
+use wai_exact::QPoint;
 
 use crate::framework::{Case, Checker, Report, Violation};
 use wai_study::EmbeddingPair;
@@ -85,7 +86,7 @@ pub fn types(
     x: &Intersection,
     p: &SkeletonRing,
     q: &SkeletonRing,
-    vertices: &HashSet<Pt>,
+    vertices: &HashSet<QPoint>,
 ) -> Vec<Option<EdgeType>> {
     x.cycles
         .iter()
@@ -99,7 +100,7 @@ pub fn check(
     x: &Intersection,
     p: &SkeletonRing,
     q: &SkeletonRing,
-    vertices: &HashSet<Pt>,
+    vertices: &HashSet<QPoint>,
 ) -> Report {
     check_types(x, &types(x, p, q, vertices))
 }

@@ -25,7 +25,8 @@
 use serde_json::json;
 use wai_embed::intersection::{edges_meet, left_right};
 use wai_embed::piece::part_points;
-use wai_embed::{Pt, SkeletonRing};
+use wai_embed::SkeletonRing;
+use wai_exact::QPoint;
 
 use crate::framework::{Case, Checker, Report, Violation};
 use rug::Rational;
@@ -104,12 +105,16 @@ pub fn meeting_pairs(p: &SkeletonRing, q: &SkeletonRing) -> Vec<(usize, usize)> 
 
 /// The lines of the artificial edges of `p` and `q` that meet one of the
 /// other: the only lines across which a witness's tallies change.
-pub fn meeting_lines(p: &SkeletonRing, q: &SkeletonRing) -> Vec<(Pt, Pt)> {
+pub fn meeting_lines(p: &SkeletonRing, q: &SkeletonRing) -> Vec<(QPoint, QPoint)> {
     lines_of(p, q, &meeting_pairs(p, q))
 }
 
 /// The lines of the edges of the `meeting` pairs.
-fn lines_of(p: &SkeletonRing, q: &SkeletonRing, meeting: &[(usize, usize)]) -> Vec<(Pt, Pt)> {
+fn lines_of(
+    p: &SkeletonRing,
+    q: &SkeletonRing,
+    meeting: &[(usize, usize)],
+) -> Vec<(QPoint, QPoint)> {
     let mut lines = Vec::new();
     for &(i, j) in meeting {
         for (x, y) in [p.edge(i), q.edge(j)] {
@@ -123,7 +128,7 @@ fn lines_of(p: &SkeletonRing, q: &SkeletonRing, meeting: &[(usize, usize)]) -> V
 
 /// The tallies (LR/LR, RL/RL, LR/RL, RL/LR) of one pair and witnesses,
 /// and how many meeting pairs were undecided.
-pub fn tallies(p: &SkeletonRing, q: &SkeletonRing, w: &Pt, w2: &Pt) -> ([usize; 4], u64) {
+pub fn tallies(p: &SkeletonRing, q: &SkeletonRing, w: &QPoint, w2: &QPoint) -> ([usize; 4], u64) {
     tallies_of(p, q, &meeting_pairs(p, q), w, w2)
 }
 
@@ -132,8 +137,8 @@ fn tallies_of(
     p: &SkeletonRing,
     q: &SkeletonRing,
     meeting: &[(usize, usize)],
-    w: &Pt,
-    w2: &Pt,
+    w: &QPoint,
+    w2: &QPoint,
 ) -> ([usize; 4], u64) {
     let mut t = [0; 4];
     let mut undecided = 0;
@@ -153,7 +158,7 @@ fn tallies_of(
 }
 
 /// One pair of embeddings from one pair of witnesses.
-pub fn check(p: &SkeletonRing, q: &SkeletonRing, w: &Pt, w2: &Pt) -> Report {
+pub fn check(p: &SkeletonRing, q: &SkeletonRing, w: &QPoint, w2: &QPoint) -> Report {
     check_meeting(p, q, &meeting_pairs(p, q), w, w2)
 }
 
@@ -162,8 +167,8 @@ fn check_meeting(
     p: &SkeletonRing,
     q: &SkeletonRing,
     meeting: &[(usize, usize)],
-    w: &Pt,
-    w2: &Pt,
+    w: &QPoint,
+    w2: &QPoint,
 ) -> Report {
     let mut report = Report::new(ID);
     let (t, undecided) = tallies_of(p, q, meeting, w, w2);
@@ -213,7 +218,7 @@ mod tests {
         let pts = |v: &[(i128, i128)]| v.iter().map(|&(x, y)| Point::new(x, y)).collect::<Vec<_>>();
         let p = SkeletonRing::new(&pts(&[(0, 0), (4, 0), (4, 4), (0, 4)]), vec![true; 4]);
         let q = SkeletonRing::new(&pts(&[(3, -1), (5, 1), (1, 5), (-1, 3)]), vec![true; 4]);
-        let pt = |x: i64, y: i64| Pt::new(rug::Rational::from(x), rug::Rational::from(y));
+        let pt = |x: i64, y: i64| QPoint::new(rug::Rational::from(x), rug::Rational::from(y));
         let (t, _) = tallies(&p, &q, &pt(1, 1), &pt(2, 2));
         let report = check(&p, &q, &pt(1, 1), &pt(2, 2));
         assert_eq!(report.examined, 1);
