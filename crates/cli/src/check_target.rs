@@ -44,7 +44,7 @@ pub fn run(
         }
     }
     let config = Config {
-        seed: seed,
+        seed,
         evals,
         budget,
         limits,

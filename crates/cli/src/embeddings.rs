@@ -86,7 +86,7 @@ fn json_class(map: &Map, d: &Decomposition<'_>, r: &ClassReport) -> serde_json::
         .zip(r.witnesses)
         .zip(&r.valid_candidates)
         .map(|((e, w), vc)| {
-            let (h, kernel) = (&e.embedding, &e.kernel);
+            let (h, kernel) = (&e.embedding, e.kernel());
             serde_json::json!({
                 "origin": h.origin,
                 "origin_point": show(map, &v[h.origin].into()),
@@ -207,7 +207,7 @@ fn svg(map: &Map, r: &ClassReport, out: &Path) -> Result<(), Failure> {
         .iter()
         .zip(r.witnesses)
         .zip(&r.valid_candidates)
-        .map(|((e, w), vc)| (&e.embedding, &e.kernel, w, vc))
+        .map(|((e, w), vc)| (&e.embedding, e.kernel(), w, vc))
         .map(|(h, kernel, w, vc)| EmbeddingDrawn {
             origin: h.origin,
             polygon: h.polygon(map),

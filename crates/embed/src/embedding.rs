@@ -124,9 +124,9 @@ impl<'a> Embedder<'a> {
         // the last vertex first, as most origins fail there at once.
         lands(key.offsets.last()?)?;
         let vertices: Vec<usize> = key.offsets.iter().map(lands).collect::<Option<_>>()?;
-        // 2. Full edges are exactly the map edges among the images.
-        let image: HashMap<usize, usize> =
-            vertices.iter().enumerate().map(|(i, &m)| (m, i)).collect();
+        // 2. Full edges are exactly the map edges among the images (a
+        // skeleton has few vertices: a linear search finds an image).
+        let image = |m: usize| vertices.iter().position(|&v| v == m);
         let full = |i: usize| key.labels[i].is_none();
         for i in 0..k {
             let j = (i + 1) % k;
@@ -136,7 +136,7 @@ impl<'a> Embedder<'a> {
                 return None;
             }
             for m in [(vertices[i] + 1) % n, (vertices[i] + n - 1) % n] {
-                if let Some(&j) = image.get(&m) {
+                if let Some(j) = image(m) {
                     let joined = (j == (i + 1) % k && full(i)) || (i == (j + 1) % k && full(j));
                     if !joined {
                         return None;

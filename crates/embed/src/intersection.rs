@@ -3,6 +3,21 @@
 //! two polygons, its type (Lemma 4.7), and the crossings of artificial
 //! edges behind Lemmas 4.5, 4.8 and 4.9 — exactly, with rationals.
 
+mod fast;
+
+pub use fast::FAST_BITS;
+
+/// A ring as small integer points ([`FAST_BITS`]), if it is one.
+pub(crate) fn fast_ring(r: &[QPoint]) -> Option<Vec<[i64; 2]>> {
+    fast::small_ring(r)
+}
+
+/// Whether the interiors of two small integer rings overlap
+/// ([`crate::interiors_overlap`]'s test after its box test).
+pub(crate) fn fast_overlaps(p: &[[i64; 2]], q: &[[i64; 2]]) -> bool {
+    fast::one_side_overlaps(p, q) || fast::one_side_overlaps(q, p)
+}
+
 use crate::piece::{segment_cuts, segments_meet};
 use crate::witness::{locate, Locus};
 use rug::Rational;
@@ -39,6 +54,19 @@ impl SkeletonRing {
 
 /// Whether two closed segments meet other than in an end common to both.
 pub fn edges_meet(a: (&QPoint, &QPoint), b: (&QPoint, &QPoint)) -> bool {
+    if let (Some(a0), Some(a1), Some(b0), Some(b1)) = (
+        fast::small(a.0),
+        fast::small(a.1),
+        fast::small(b.0),
+        fast::small(b.1),
+    ) {
+        return fast::edges_meet([a0, a1], [b0, b1]);
+    }
+    edges_meet_rational(a, b)
+}
+
+/// [`edges_meet`] in GMP rationals.
+pub fn edges_meet_rational(a: (&QPoint, &QPoint), b: (&QPoint, &QPoint)) -> bool {
     if !segments_meet(a.0, a.1, b.0, b.1) {
         return false;
     }
@@ -75,6 +103,15 @@ pub fn artificial_crossings(ring: &SkeletonRing, i: usize, other: &SkeletonRing)
 /// How many connected pieces (intervals, possibly single points) the
 /// closed segment `ab` has inside the closed polygon `q`.
 pub fn pieces_inside(a: &QPoint, b: &QPoint, q: &[QPoint]) -> usize {
+    if let (Some(a), Some(b), Some(q)) = (fast::small(a), fast::small(b), fast::small_ring(q)) {
+        return fast::pieces_inside(a, b, &q);
+    }
+    pieces_inside_rational(a, b, q)
+}
+
+/// [`pieces_inside`] in GMP rationals: the path for points beyond
+/// [`FAST_BITS`], and the reference of the integer one.
+pub fn pieces_inside_rational(a: &QPoint, b: &QPoint, q: &[QPoint]) -> usize {
     let mut cuts = vec![Rational::new(), Rational::from(1)];
     for j in 0..q.len() {
         cuts.extend(segment_cuts(a, b, &q[j], &q[(j + 1) % q.len()]));
@@ -152,6 +189,8 @@ pub struct Intersection {
     /// cycle bounds a component of the intersection from outside, a
     /// clockwise one a hole.
     pub cycles: Vec<Vec<BoundaryEdge>>,
+    /// The counter-clockwise cycles, counted once.
+    components: usize,
 }
 
 /// A directed boundary piece before merging.
@@ -222,8 +261,18 @@ fn clockwise_from(r: &QPoint, u: &QPoint, v: &QPoint) -> Ordering {
 
 impl Intersection {
     /// The boundary of P ∩ Q (closed polygons, counter-clockwise, simple).
-    /// Empty if the interiors do not meet.
+    /// Empty if the interiors do not meet. Polygons whose vertices are
+    /// integer points below [`FAST_BITS`] (map vertices) take an integer
+    /// path, the others [`Intersection::of_rational`]; the two agree.
     pub fn of(p: &[QPoint], q: &[QPoint]) -> Intersection {
+        match (fast::small_ring(p), fast::small_ring(q)) {
+            (Some(p), Some(q)) => fast::intersection(&p, &q),
+            _ => Intersection::of_rational(p, q),
+        }
+    }
+
+    /// [`Intersection::of`] in GMP rationals.
+    pub fn of_rational(p: &[QPoint], q: &[QPoint]) -> Intersection {
         let mut pieces = boundary_pieces(p, q, true, true);
         pieces.extend(boundary_pieces(q, p, false, false));
         // Chain: at each end, of the pieces leaving it, take the first
@@ -256,13 +305,12 @@ impl Intersection {
             }
             cycles.push(edges_of(cycle));
         }
-        Intersection { cycles }
+        Intersection::from_cycles(cycles)
     }
 
-    /// Connected components of the intersection: its counter-clockwise
-    /// boundary cycles.
-    pub fn components(&self) -> usize {
-        self.cycles
+    /// From the boundary's cycles, counting the counter-clockwise ones.
+    fn from_cycles(cycles: Vec<Vec<BoundaryEdge>>) -> Intersection {
+        let components = cycles
             .iter()
             .filter(|c| {
                 let area = c
@@ -270,7 +318,14 @@ impl Intersection {
                     .fold(Rational::new(), |s, e| s + e.from.cross(&e.to));
                 area > 0
             })
-            .count()
+            .count();
+        Intersection { cycles, components }
+    }
+
+    /// Connected components of the intersection: its counter-clockwise
+    /// boundary cycles.
+    pub fn components(&self) -> usize {
+        self.components
     }
 }
 

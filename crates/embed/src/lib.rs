@@ -44,11 +44,8 @@ pub use piece::{Bounds, Piece};
 pub use sight::EdgeSight;
 pub use transversal::transversal;
 pub use views::witness_views_by_rule;
-/// The exact rational point of the pieces, [`wai_exact::QPoint`], under the
-/// name the crates above this one use for it.
-pub use wai_exact::QPoint as Pt;
 pub use witness::{
-    interiors_overlap, kernels_overlap, overlapping_valid_pairs, piece_of, segment_meets_polygon,
-    sight_fans, valid_candidate_edges, valid_from_views, witness_regions, witness_views, CellRef,
-    WitnessCell, Witnesses,
+    interiors_overlap, interiors_overlap_rational, kernels_overlap, overlapping_valid_pairs,
+    piece_of, segment_meets_polygon, sight_fans, valid_candidate_edges, valid_from_views,
+    witness_regions, witness_views, CellRef, WitnessCell, Witnesses,
 };

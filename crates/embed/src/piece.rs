@@ -65,15 +65,6 @@ pub fn segment_cuts(a: &QPoint, b: &QPoint, c: &QPoint, e: &QPoint) -> Vec<Ratio
     vec![c.sub(a).cross(&f) / den]
 }
 
-/// The convex hull of `pts` ([`wai_exact::convex_hull`]), re-exported for
-/// the crates that name it here.
-pub use wai_exact::convex_hull;
-
-/// `u · w` ([`QPoint::dot`]), for the crates that name it here.
-pub fn dot(u: &QPoint, w: &QPoint) -> Rational {
-    u.dot(w)
-}
-
 /// The parameters `t` with `α + t·β > 0` for every `(α, β)` given, an open
 /// interval (the constraints of a bounded open convex polygon), if any.
 fn open_span(constraints: impl Iterator<Item = (Rational, Rational)>) -> Option<Span> {
@@ -101,6 +92,64 @@ fn open_span(constraints: impl Iterator<Item = (Rational, Rational)>) -> Option<
         (Some(lo), Some(hi)) if lo < hi => Some(Span::Open(lo, hi)),
         _ => None,
     }
+}
+
+/// Integer points below `2^HULL_FAST_BITS` in each coordinate take the
+/// integer path of [`open_hulls_meet`].
+///
+/// Implementation note: a difference of two such points is below `2^41`;
+/// a direction `u` is such a difference and its normal `(−u_y, u_x)` too;
+/// a projection `n·p` of a point is below `2·2^41·2^40 = 2^82`, far
+/// inside `i128`.
+pub const HULL_FAST_BITS: u32 = 40;
+
+/// Whether the relative interiors of the convex hulls of two integer point
+/// sets share a point (each set spans a segment or a polygon, as the
+/// pieces of [`Piece`] do), or `None` if a coordinate is not below
+/// [`HULL_FAST_BITS`].
+///
+/// Exact and complete by proper separation (two convex sets have
+/// disjoint relative interiors iff a line has one on each closed side and
+/// not both on it): such a line can be taken parallel to an edge of one
+/// hull, or, for two segments on one line, perpendicular to it; every
+/// direction between two points of either set, and its normal, is tried.
+pub fn open_hulls_meet(p: &[wai_exact::Point], q: &[wai_exact::Point]) -> Option<bool> {
+    let limit = 1i128 << HULL_FAST_BITS;
+    if p.iter()
+        .chain(q)
+        .any(|v| v.x.abs() >= limit || v.y.abs() >= limit)
+    {
+        return None;
+    }
+    let range = |s: &[wai_exact::Point], n: (i128, i128)| {
+        let proj = s.iter().map(|v| n.0 * v.x + n.1 * v.y);
+        let (mut lo, mut hi) = (i128::MAX, i128::MIN);
+        for x in proj {
+            lo = lo.min(x);
+            hi = hi.max(x);
+        }
+        (lo, hi)
+    };
+    let separates = |n: (i128, i128)| {
+        let ((plo, phi), (qlo, qhi)) = (range(p, n), range(q, n));
+        let apart = phi <= qlo || qhi <= plo;
+        let on_one_line = plo == phi && qlo == qhi && phi == qlo;
+        apart && !on_one_line
+    };
+    for s in [p, q] {
+        for (i, a) in s.iter().enumerate() {
+            for b in &s[i + 1..] {
+                let u = (b.x - a.x, b.y - a.y);
+                if u == (0, 0) {
+                    continue;
+                }
+                if separates((-u.1, u.0)) || separates(u) {
+                    return Some(false);
+                }
+            }
+        }
+    }
+    Some(true)
 }
 
 /// Points with small integer coordinates (for tests and figures).

@@ -274,6 +274,23 @@ pub fn interiors_overlap(p: &[QPoint], q: &[QPoint]) -> bool {
     if bp.hi.0 <= bq.lo.0 || bq.hi.0 <= bp.lo.0 || bp.hi.1 <= bq.lo.1 || bq.hi.1 <= bp.lo.1 {
         return false;
     }
+    if let (Some(sp), Some(sq)) = (
+        crate::intersection::fast_ring(p),
+        crate::intersection::fast_ring(q),
+    ) {
+        return crate::intersection::fast_overlaps(&sp, &sq);
+    }
+    one_side_overlaps(p, q, &bq) || one_side_overlaps(q, p, &bp)
+}
+
+/// [`interiors_overlap`] in GMP rationals: the path for points beyond
+/// [`crate::intersection::FAST_BITS`], and the reference of the integer
+/// one.
+pub fn interiors_overlap_rational(p: &[QPoint], q: &[QPoint]) -> bool {
+    let (bp, bq) = (Bounds::of(p), Bounds::of(q));
+    if bp.hi.0 <= bq.lo.0 || bq.hi.0 <= bp.lo.0 || bp.hi.1 <= bq.lo.1 || bq.hi.1 <= bp.lo.1 {
+        return false;
+    }
     one_side_overlaps(p, q, &bq) || one_side_overlaps(q, p, &bp)
 }
 

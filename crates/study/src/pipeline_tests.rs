@@ -60,7 +60,7 @@ fn cell_edges_by_lines_are_cell_edges_by_points() {
                 let h = &study.embeddings()[class][c.embedding];
                 let valid = study.valid_candidates(class, c.embedding);
                 let lines = embedding_wedge_lines(&map, &h.embedding, valid);
-                let by_points = classify_cell_edges(&h.kernel, &lines, &arr.face_points(c.cell));
+                let by_points = classify_cell_edges(h.kernel(), &lines, &arr.face_points(c.cell));
                 assert_eq!(c.kinds, by_points, "{:?}, cell {}", map.name(), c.cell);
                 edges += c.kinds.len();
             }

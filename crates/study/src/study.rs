@@ -9,10 +9,11 @@
 //! here, so a stress run builds each once per map.
 
 use std::cell::{OnceCell, RefCell};
-use std::collections::{BTreeMap, HashMap};
+use std::collections::{BTreeMap, HashMap, HashSet};
 use std::rc::Rc;
 
 use wai_cells::{Arrangement, Decomposition, VisibilityRay};
+use wai_embed::intersection::{edge_type, EdgeType};
 use wai_embed::wedge::{classify_by_lines, embedding_wedge_lines, CellEdgeKind};
 use wai_embed::{
     crossing, gap_chains, interiors_overlap, kernels_overlap, sight_fans, witness_regions,
@@ -78,6 +79,8 @@ pub struct Study<'m> {
     /// Def 4.4, decided so far: by (overlapping pair, (artificial edge,
     /// candidate edge) of its first embedding, of its second).
     crossings: RefCell<HashMap<CrossingKey, Option<Crossing>>>,
+    /// The map's vertices as rational points.
+    map_points: OnceCell<HashSet<QPoint>>,
     /// The time each stage took.
     timer: Timer,
 }
@@ -106,6 +109,8 @@ pub struct EmbeddingPair {
     pub second: (usize, usize),
     overlap: bool,
     intersection: OnceCell<Intersection>,
+    /// By edge of the intersection's cycles: its type (Lemma 4.7).
+    types: OnceCell<Vec<Option<EdgeType>>>,
 }
 
 impl EmbeddingPair {
@@ -229,42 +234,35 @@ impl GapStructure {
 }
 
 /// An embedding of a class's skeleton (Def 3.11) and its kernel
-/// h(ker V*) (Def 3.12), in map coordinates.
+/// h(ker V*) (Def 3.12), in map coordinates; the kernel computed when
+/// first asked for (most embeddings' kernels are never read).
 #[derive(Debug, Clone)]
 pub struct Embedded {
     pub embedding: Embedding,
-    pub kernel: Kernel,
+    /// h(V◇) as map points.
+    polygon: Vec<wai_exact::Point>,
+    kernel: OnceCell<ConvexRegion>,
 }
 
-/// The embedded kernel h(ker V*): the kernel of h(V◇)
-/// (`wai_visibility::kernel_of_ring`), computed when first read and then
-/// kept. It reads as the [`ConvexRegion`] it is (`Deref`), so
-/// `h.kernel.locate(p)` and `&h.kernel` work as on the region; a run that
-/// never reads a kernel (chapter 5's checkers classify cell edges by
-/// their supporting lines) never computes one.
-#[derive(Debug, Clone)]
-pub struct Kernel {
-    /// h(V◇)'s vertices.
-    ring: Vec<wai_exact::Point>,
-    region: OnceCell<ConvexRegion>,
-}
-
-impl Kernel {
-    /// The kernel of the polygon `ring`, to be computed when first read.
-    pub fn of_ring(ring: Vec<wai_exact::Point>) -> Kernel {
-        Kernel {
-            ring,
-            region: OnceCell::new(),
+impl Embedded {
+    /// `embedding` in `map`.
+    pub fn new(embedding: Embedding, map: &Map) -> Embedded {
+        Embedded {
+            polygon: embedding.polygon(map),
+            embedding,
+            kernel: OnceCell::new(),
         }
     }
-}
 
-impl std::ops::Deref for Kernel {
-    type Target = ConvexRegion;
+    /// h(V◇) as map points.
+    pub fn polygon(&self) -> &[wai_exact::Point] {
+        &self.polygon
+    }
 
-    fn deref(&self) -> &ConvexRegion {
-        self.region
-            .get_or_init(|| wai_visibility::kernel_of_ring(&self.ring))
+    /// The embedded kernel h(ker V*), the kernel of h(V◇).
+    pub fn kernel(&self) -> &ConvexRegion {
+        self.kernel
+            .get_or_init(|| wai_visibility::kernel_of_ring(&self.polygon))
     }
 }
 
@@ -295,6 +293,7 @@ impl<'m> Study<'m> {
             localizer: OnceCell::new(),
             preprocessing_size: OnceCell::new(),
             crossings: RefCell::new(HashMap::new()),
+            map_points: OnceCell::new(),
             timer: Timer::default(),
         }
     }
@@ -361,10 +360,7 @@ impl<'m> Study<'m> {
                         embedder
                             .embeddings(key)
                             .into_iter()
-                            .map(|embedding| Embedded {
-                                kernel: Kernel::of_ring(embedding.polygon(self.map)),
-                                embedding,
-                            })
+                            .map(|embedding| Embedded::new(embedding, self.map))
                             .collect()
                     })
                     .collect()
@@ -411,8 +407,8 @@ impl<'m> Study<'m> {
                     .map(|(pair, p)| {
                         let (class, a, b) = (p.first.0, p.first.1, p.second.1);
                         let kernels_overlap = kernels_overlap(
-                            &embeddings[class][a].kernel,
-                            &embeddings[class][b].kernel,
+                            embeddings[class][a].kernel(),
+                            embeddings[class][b].kernel(),
                         );
                         let ws = &witnesses[class];
                         let sight = self
@@ -488,24 +484,60 @@ impl<'m> Study<'m> {
         }))
     }
 
+    /// The edge types (Lemma 4.7, [`wai_embed::intersection::edge_type`])
+    /// of the intersection of `pair`'s skeleton polygons, edge by edge of
+    /// its cycles, if their interiors overlap; classified once.
+    pub fn intersection_types<'s>(
+        &'s self,
+        pair: &'s EmbeddingPair,
+    ) -> Option<&'s [Option<EdgeType>]> {
+        let x = self.intersection(pair)?;
+        Some(pair.types.get_or_init(|| {
+            let rings = self.skeleton_rings();
+            let vertices = self.map_points.get_or_init(|| {
+                self.map
+                    .vertices()
+                    .iter()
+                    .map(|&p| QPoint::from(p))
+                    .collect()
+            });
+            self.timer.stage("intersection types", || {
+                let (p, q) = (
+                    &rings[pair.first.0][pair.first.1],
+                    &rings[pair.second.0][pair.second.1],
+                );
+                x.cycles
+                    .iter()
+                    .flatten()
+                    .map(|e| edge_type(e, p, q, vertices))
+                    .collect()
+            })
+        }))
+    }
+
     /// By class and embedding: the embedded skeleton polygon h(V◇) with its
-    /// artificial edges marked.
+    /// artificial edges marked, for the valid embeddings (Def 4.1), the
+    /// only ones the chapter 4 claims compare; the ring of an embedding
+    /// without witness is empty.
     pub fn skeleton_rings(&self) -> &[Vec<SkeletonRing>] {
         self.rings.get_or_init(|| {
+            let witnesses = self.witnesses();
             self.timer.stage("skeleton rings", || {
                 let keys = self.decomposition().skeletons();
                 self.embeddings()
                     .iter()
+                    .zip(witnesses)
                     .enumerate()
-                    .map(|(class, all)| {
+                    .map(|(class, (all, ws))| {
                         let artificial: Vec<bool> =
                             keys[class].labels.iter().map(Option::is_some).collect();
                         all.iter()
-                            .map(|h| {
-                                SkeletonRing::new(
-                                    &h.embedding.polygon(self.map),
-                                    artificial.clone(),
-                                )
+                            .zip(ws)
+                            .map(|(h, w)| {
+                                if !w.is_valid() {
+                                    return SkeletonRing::new(&[], Vec::new());
+                                }
+                                SkeletonRing::new(h.polygon(), artificial.clone())
                             })
                             .collect()
                     })
@@ -570,6 +602,7 @@ impl<'m> Study<'m> {
                             second: valid[b],
                             overlap,
                             intersection: OnceCell::new(),
+                            types: OnceCell::new(),
                         });
                     }
                 }
@@ -854,7 +887,7 @@ impl<'m> Study<'m> {
                                     )
                                 });
                                 let kinds = classify_by_lines(
-                                    &hs[j].embedding.polygon(self.map),
+                                    hs[j].polygon(),
                                     lines,
                                     arr.face_cycle(f).map(|h| supports[h / 2]),
                                 );
@@ -923,7 +956,7 @@ impl<'m> Study<'m> {
 }
 
 /// Whether the boundaries of two closed polygons share a point.
-fn boundaries_meet(p: &[wai_embed::Pt], q: &[wai_embed::Pt]) -> bool {
+fn boundaries_meet(p: &[QPoint], q: &[QPoint]) -> bool {
     let (np, nq) = (p.len(), q.len());
     (0..np).any(|i| {
         (0..nq).any(|j| {

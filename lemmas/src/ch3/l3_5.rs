@@ -103,7 +103,7 @@ pub fn check_points(points: &[CellPoint], by_class: &[Vec<Embedded>]) -> Report 
         });
         let hits: Vec<usize> = by_class[p.class]
             .iter()
-            .filter(|h| h.kernel.locate(&p.point) != Containment::Outside)
+            .filter(|h| h.kernel().locate(&p.point) != Containment::Outside)
             .map(|h| h.embedding.origin)
             .collect();
         let what = match hits.as_slice() {

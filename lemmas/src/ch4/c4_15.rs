@@ -18,7 +18,8 @@
 //! or on Theorem 4.2's general one.
 
 use serde_json::json;
-use wai_embed::{transversal, Intersection, Piece, Pt};
+use wai_embed::{transversal, Intersection, Piece};
+use wai_exact::QPoint;
 
 use crate::framework::{Case, Checker, Report, Violation};
 use wai_study::Study;
@@ -68,8 +69,8 @@ fn check_study(study: &Study<'_>) -> Report {
 
 /// The open convex hull of the intersection `x`.
 fn open_hull(x: &Intersection) -> Option<Piece> {
-    let points: Vec<Pt> = x.cycles.iter().flatten().map(|e| e.from.clone()).collect();
-    let h = wai_embed::piece::convex_hull(points);
+    let points: Vec<QPoint> = x.cycles.iter().flatten().map(|e| e.from.clone()).collect();
+    let h = wai_exact::convex_hull(points);
     (h.len() >= 3).then_some(Piece::Polygon(h))
 }
 
@@ -111,7 +112,7 @@ mod tests {
         let ring = wai_embed::piece::ints;
         let p = ring(&[(0, 0), (4, 0), (4, 4), (0, 4)]);
         let q = ring(&[(2, 2), (6, 2), (6, 6), (2, 6)]);
-        let pt = |x: i64, y: i64| Piece::Point(Pt::new(Rational::from(x), Rational::from(y)));
+        let pt = |x: i64, y: i64| Piece::Point(QPoint::new(Rational::from(x), Rational::from(y)));
         // Witnesses on the diagonal through the overlap: violated.
         let x = Intersection::of(&p, &q);
         assert!(check(&x, &[pt(1, 1)], &[pt(5, 5)]).is_some());

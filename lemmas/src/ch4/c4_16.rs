@@ -22,7 +22,8 @@
 use rug::Rational;
 use serde_json::json;
 use wai_embed::piece::projection;
-use wai_embed::{Intersection, Piece, Pt};
+use wai_embed::{Intersection, Piece};
+use wai_exact::QPoint;
 
 use super::c4_15::{kernel_case, KERNEL_CASES};
 use crate::framework::{Case, Checker, Report, Violation};
@@ -55,7 +56,7 @@ fn check_study(study: &Study<'_>) -> Report {
             map[all[pair.a].embedding.origin],
             map[all[pair.b].embedding.origin],
         );
-        let t = Pt::from(o2).sub(&Pt::from(o));
+        let t = QPoint::from(o2).sub(&QPoint::from(o));
         let x = study
             .intersection(&study.embedding_pairs()[pair.pair])
             .expect("an overlapping pair has an intersection");
@@ -75,14 +76,14 @@ fn check_study(study: &Study<'_>) -> Report {
 }
 
 /// The least and greatest of `n · v` over the vertices, if any.
-fn range(n: &Pt, vertices: impl Iterator<Item = Pt>) -> Option<(Rational, Rational)> {
-    let v: Vec<Pt> = vertices.collect();
+fn range(n: &QPoint, vertices: impl Iterator<Item = QPoint>) -> Option<(Rational, Rational)> {
+    let v: Vec<QPoint> = vertices.collect();
     (!v.is_empty()).then(|| projection(n, &v))
 }
 
 /// The side of the intersection `x` both witness regions lie on, seen
 /// along `t`, if they lie on one.
-pub fn side(x: &Intersection, t: &Pt, w: &[Piece], w2: &[Piece]) -> Option<&'static str> {
+pub fn side(x: &Intersection, t: &QPoint, w: &[Piece], w2: &[Piece]) -> Option<&'static str> {
     let n = t.perp();
     let (l, u) = range(&n, x.cycles.iter().flatten().map(|e| e.from.clone()))?;
     let (lo, hi) = range(&n, w.iter().chain(w2).flat_map(Piece::vertices))?;
@@ -96,7 +97,7 @@ pub fn side(x: &Intersection, t: &Pt, w: &[Piece], w2: &[Piece]) -> Option<&'sta
 }
 
 /// One pair, with translation `t` from the first origin to the second.
-pub fn check(x: &Intersection, t: &Pt, w: &[Piece], w2: &[Piece]) -> Option<Violation> {
+pub fn check(x: &Intersection, t: &QPoint, w: &[Piece], w2: &[Piece]) -> Option<Violation> {
     let n = t.perp();
     let (l, u) = range(&n, x.cycles.iter().flatten().map(|e| e.from.clone()))?;
     let (a_lo, a_hi) = range(&n, w.iter().flat_map(Piece::vertices))?;
@@ -136,8 +137,8 @@ mod tests {
         let ring = wai_embed::piece::ints;
         let p = ring(&[(0, 0), (4, 0), (4, 4), (0, 4)]);
         let q = ring(&[(2, 0), (6, 0), (6, 4), (2, 4)]);
-        let t = Pt::new(Rational::from(2), Rational::new());
-        let pt = |x: i64, y: i64| Piece::Point(Pt::new(Rational::from(x), Rational::from(y)));
+        let t = QPoint::new(Rational::from(2), Rational::new());
+        let pt = |x: i64, y: i64| Piece::Point(QPoint::new(Rational::from(x), Rational::from(y)));
         // t horizontal: the lines y = c, 0 < c < 4, cross the overlap.
         let x = Intersection::of(&p, &q);
         assert!(check(&x, &t, &[pt(1, 1)], &[pt(5, 3)]).is_some());

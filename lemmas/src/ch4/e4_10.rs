@@ -21,7 +21,8 @@ use std::collections::HashSet;
 use rug::Rational;
 use serde_json::json;
 use wai_embed::intersection::EdgeType;
-use wai_embed::{Intersection, Pt};
+use wai_embed::Intersection;
+use wai_exact::QPoint;
 use wai_study::Study;
 
 use super::l4_7::classified_pairs;
@@ -57,7 +58,7 @@ figure!(
 pub fn shape(
     x: &Intersection,
     types: &[Option<EdgeType>],
-    vertices: &HashSet<Pt>,
+    vertices: &HashSet<QPoint>,
 ) -> (usize, bool) {
     let fives = types
         .iter()
@@ -75,16 +76,16 @@ pub fn shape(
 /// polygon is counted by configuration.
 fn check_study(study: &Study<'_>) -> Report {
     let mut report = Report::new(ID);
-    let vertices: HashSet<Pt> = study
+    let vertices: HashSet<QPoint> = study
         .map()
         .vertices()
         .iter()
-        .map(|&p| Pt::from(p))
+        .map(|&p| QPoint::from(p))
         .collect();
     let mut shown = Vec::new();
     for (pair, x, types) in classified_pairs(study) {
         report.record(None);
-        let (fives, map_vertex) = shape(x, &types, &vertices);
+        let (fives, map_vertex) = shape(x, types, &vertices);
         report.progress_toward("four type 5", Rational::from(fives));
         if fives == 4 {
             report.hit("four type 5");
@@ -158,7 +159,7 @@ mod tests {
             artificial: vec![true; 4],
         };
         let x = Intersection::of(&p.ring, &q.ring);
-        let corner: HashSet<Pt> = ints(&[(2, 2)]).into_iter().collect();
+        let corner: HashSet<QPoint> = ints(&[(2, 2)]).into_iter().collect();
         let types = super::super::l4_7::types(&x, &p, &q, &corner);
         assert!(shape(&x, &types, &corner).1);
         assert!(!shape(&x, &types, &HashSet::new()).1);

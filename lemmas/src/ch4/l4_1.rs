@@ -20,7 +20,8 @@
 //! overlap of 2z + 1 embeddings needs z ≥ 1 to say anything).
 
 use serde_json::json;
-use wai_embed::{common_interior_point, Pt};
+use wai_embed::common_interior_point;
+use wai_exact::QPoint;
 
 use crate::framework::{Case, Checker, Report, Violation};
 use wai_study::family::parameter_of;
@@ -67,16 +68,22 @@ fn check_study(study: &Study<'_>) -> Report {
 /// The most valid embeddings of one skeleton whose skeleton polygons share
 /// an interior point (a skeleton counts only if all its valid embeddings
 /// do), with the class and the point.
-pub fn largest_common_overlap(study: &Study<'_>) -> Option<(usize, usize, Pt)> {
+pub fn largest_common_overlap(study: &Study<'_>) -> Option<(usize, usize, QPoint)> {
     let map = study.map();
-    let mut best: Option<(usize, usize, Pt)> = None;
+    let mut best: Option<(usize, usize, QPoint)> = None;
     for (class, all) in study.embeddings().iter().enumerate() {
         let ws = &study.witnesses()[class];
-        let rings: Vec<Vec<Pt>> = all
+        let rings: Vec<Vec<QPoint>> = all
             .iter()
             .zip(ws)
             .filter(|(_, w)| w.is_valid())
-            .map(|(h, _)| h.embedding.polygon(map).into_iter().map(Pt::from).collect())
+            .map(|(h, _)| {
+                h.embedding
+                    .polygon(map)
+                    .into_iter()
+                    .map(QPoint::from)
+                    .collect()
+            })
             .collect();
         if rings.is_empty() || best.as_ref().is_some_and(|b| b.1 >= rings.len()) {
             continue;

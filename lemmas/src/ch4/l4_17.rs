@@ -43,8 +43,10 @@
 //! "corollary".
 
 use serde_json::json;
-use wai_embed::piece::convex_hull;
-use wai_embed::{crossing, Bounds, Piece, Pt, SightFan};
+use std::cell::OnceCell;
+use wai_embed::piece::open_hulls_meet;
+use wai_embed::{crossing, Piece, SightFan};
+use wai_exact::{convex_hull, Point, QPoint};
 
 use crate::framework::{Case, Checker, Report, Violation};
 use wai_study::Study;
@@ -92,24 +94,25 @@ fn check_study(study: &Study<'_>) -> Report {
             // number of witness cells that see it, and the region its
             // lines of sight behind the artificial edge lie in.
             let views = &study.views()[class][i];
-            let polygon = h.embedding.polygon(study.map());
+            let polygon = h.polygon();
             let k = polygon.len();
             let mut regions = Vec::new();
             for (a, edges) in valid.iter().enumerate() {
                 for &c in edges {
                     let cells = views.iter().filter(|v| v[a] == Some(c)).count();
-                    let pt = |p: wai_exact::Point| Pt::from(p);
-                    let window = (pt(polygon[a]), pt(polygon[(a + 1) % k]));
-                    let edge = (pt(ring[c]), pt(ring[(c + 1) % ring.len()]));
-                    let region = behind(&window, &edge);
-                    let bounds = Bounds::of(&[window.0, window.1, edge.0, edge.1]);
-                    regions.push(((a, c), cells, region, bounds));
+                    let corners = [
+                        polygon[a],
+                        polygon[(a + 1) % k],
+                        ring[c],
+                        ring[(c + 1) % ring.len()],
+                    ];
+                    regions.push(Region::new((a, c), cells, corners));
                 }
             }
-            for (x, (k1, n1, r1, b1)) in regions.iter().enumerate() {
-                for (k2, n2, r2, b2) in regions[x + 1..].iter().filter(|r| r.0 .0 != k1.0) {
-                    report.count("fan_pairs", (n1 * n2) as u64);
-                    if !b1.meets_box(b2) || !meets(r1, r2) {
+            for (x, r1) in regions.iter().enumerate() {
+                for r2 in regions[x + 1..].iter().filter(|r| r.key.0 != r1.key.0) {
+                    report.count("fan_pairs", (r1.cells * r2.cells) as u64);
+                    if !r1.meets(r2) {
                         report.count("apart", 1);
                         report.hit("regions apart");
                         report.record(None);
@@ -117,8 +120,8 @@ fn check_study(study: &Study<'_>) -> Report {
                     }
                     report.hit("regions meet");
                     let found = study
-                        .fans_seeing(class, i, *k1)
-                        .flat_map(|f| study.fans_seeing(class, i, *k2).map(move |g| (f, g)))
+                        .fans_seeing(class, i, r1.key)
+                        .flat_map(|f| study.fans_seeing(class, i, r2.key).map(move |g| (f, g)))
                         .find_map(|(f, g)| violation(ring, f, g));
                     report.record(found.map(tag));
                 }
@@ -128,11 +131,79 @@ fn check_study(study: &Study<'_>) -> Report {
     report
 }
 
+/// The region behind one (artificial edge, candidate edge) of an
+/// embedding ([`behind`]), with the number of witness cells that see the
+/// candidate edge through the artificial edge; its pieces built when a
+/// box test first leaves the question open.
+struct Region {
+    key: (usize, usize),
+    cells: usize,
+    /// The window's ends, then the edge's (map vertices).
+    corners: [Point; 4],
+    /// The closed box around the corners: (min x, min y, max x, max y).
+    bounds: [i128; 4],
+    pieces: OnceCell<Vec<Piece>>,
+}
+
+impl Region {
+    fn new(key: (usize, usize), cells: usize, corners: [Point; 4]) -> Region {
+        let xs = corners.map(|p| p.x);
+        let ys = corners.map(|p| p.y);
+        let min = |v: [i128; 4]| v.into_iter().min().expect("four");
+        let max = |v: [i128; 4]| v.into_iter().max().expect("four");
+        Region {
+            key,
+            cells,
+            corners,
+            bounds: [min(xs), min(ys), max(xs), max(ys)],
+            pieces: OnceCell::new(),
+        }
+    }
+
+    fn pieces(&self) -> &[Piece] {
+        self.pieces.get_or_init(|| {
+            let [w0, w1, e0, e1] = self.corners.map(QPoint::from);
+            behind(&(w0, w1), &(e0, e1))
+        })
+    }
+
+    /// The region's pieces as the point sets whose open hulls they are:
+    /// the edge, and the four corners if they span a polygon.
+    fn point_sets(&self) -> Vec<&[Point]> {
+        let c = &self.corners;
+        let flat = [c[1], c[2], c[3]]
+            .iter()
+            .all(|&x| wai_exact::orientation(c[0], c[1], x) == wai_exact::Orientation::Collinear)
+            && wai_exact::orientation(c[0], c[2], c[3]) == wai_exact::Orientation::Collinear;
+        let mut out: Vec<&[Point]> = vec![&c[2..]];
+        if !flat {
+            out.push(c);
+        }
+        out
+    }
+
+    /// Whether the two regions share a point: boxes first, then the
+    /// pieces exactly ([`open_hulls_meet`] on integers, or
+    /// [`Piece::meets`]).
+    fn meets(&self, o: &Region) -> bool {
+        let (a, b) = (self.bounds, o.bounds);
+        if a[2] < b[0] || b[2] < a[0] || a[3] < b[1] || b[3] < a[1] {
+            return false;
+        }
+        let fast = self.point_sets().into_iter().try_fold(false, |any, x| {
+            o.point_sets()
+                .into_iter()
+                .try_fold(any, |any, y| Some(any || open_hulls_meet(x, y)?))
+        });
+        fast.unwrap_or_else(|| meets(self.pieces(), o.pieces()))
+    }
+}
+
 /// A region that holds every line of sight through the artificial edge
 /// `window` to the map edge `edge` behind it, beyond the window: the open
 /// hull of the two (B° and the region of a fan lie inside it) and the
 /// open edge (where the seen intervals lie).
-fn behind(window: &(Pt, Pt), edge: &(Pt, Pt)) -> Vec<Piece> {
+fn behind(window: &(QPoint, QPoint), edge: &(QPoint, QPoint)) -> Vec<Piece> {
     let hull = convex_hull(vec![
         window.0.clone(),
         window.1.clone(),
@@ -153,17 +224,24 @@ fn meets(a: &[Piece], b: &[Piece]) -> bool {
 /// The corollary on one embedding's (valid) candidate edges, by skeleton
 /// edge.
 pub fn check_candidates(candidates: &[Vec<usize>]) -> Option<Violation> {
-    for (a, ea) in candidates.iter().enumerate() {
-        for (b, eb) in candidates.iter().enumerate().skip(a + 1) {
-            if let Some(e) = ea.iter().find(|e| eb.contains(e)) {
-                return Some(Violation::with_data(
-                    format!("map edge {e} is a candidate edge of artificial edges {a} and {b} of one embedding"),
-                    json!({ "map_edge": e, "artificial_edges": [a, b] }),
-                ));
-            }
-        }
-    }
-    None
+    // (map edge, artificial edge), sorted: a map edge of two artificial
+    // edges appears twice in a row.
+    let mut owners: Vec<(usize, usize)> = candidates
+        .iter()
+        .enumerate()
+        .flat_map(|(a, edges)| edges.iter().map(move |&e| (e, a)))
+        .collect();
+    owners.sort_unstable();
+    let (e, a, b) = owners
+        .windows(2)
+        .find(|w| w[0].0 == w[1].0 && w[0].1 != w[1].1)
+        .map(|w| (w[0].0, w[0].1, w[1].1))?;
+    Some(Violation::with_data(
+        format!(
+            "map edge {e} is a candidate edge of artificial edges {a} and {b} of one embedding"
+        ),
+        json!({ "map_edge": e, "artificial_edges": [a, b] }),
+    ))
 }
 
 /// Two fans of one embedding on different artificial edges: their lines
@@ -200,6 +278,49 @@ mod tests {
         assert!(report.violations.is_empty(), "{:?}", report.violations);
         assert!(report.counts["fan_pairs"] > 0);
         assert!(report.examined > report.counts["apart"]);
+    }
+
+    #[test]
+    fn regions_meet_as_their_pieces_do() {
+        // The integer test of two regions against the rational pieces, on
+        // every two regions of every valid embedding.
+        let mut pairs = 0;
+        for map in [
+            wai_gen::repeated_niches(195),
+            wai_gen::bottled_niches(0),
+            wai_gen::bytes::map_from_seed(84),
+        ] {
+            let study = Study::new(&map);
+            let ring = map.vertices();
+            for (class, hs) in study.embeddings().iter().enumerate() {
+                for (i, h) in hs.iter().enumerate() {
+                    if !study.witnesses()[class][i].is_valid() {
+                        continue;
+                    }
+                    let polygon = h.polygon();
+                    let k = polygon.len();
+                    let mut regions = Vec::new();
+                    for (a, edges) in study.valid_candidates(class, i).iter().enumerate() {
+                        for &c in edges {
+                            let corners = [
+                                polygon[a],
+                                polygon[(a + 1) % k],
+                                ring[c],
+                                ring[(c + 1) % ring.len()],
+                            ];
+                            regions.push(Region::new((a, c), 1, corners));
+                        }
+                    }
+                    for r1 in &regions {
+                        for r2 in &regions {
+                            assert_eq!(r1.meets(r2), meets(r1.pieces(), r2.pieces()));
+                            pairs += 1;
+                        }
+                    }
+                }
+            }
+        }
+        assert!(pairs > 1000, "{pairs}");
     }
 
     #[test]

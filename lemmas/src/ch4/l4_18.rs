@@ -23,7 +23,8 @@
 //! "neither" (then c and c' must not cross).
 
 use serde_json::json;
-use wai_embed::{segment_meets_polygon, Pt};
+use wai_embed::segment_meets_polygon;
+use wai_exact::QPoint;
 
 use crate::framework::{Case, Checker, Report, Violation};
 use wai_study::Study;
@@ -57,7 +58,8 @@ fn check_study(study: &Study<'_>) -> Report {
             study.valid_candidates(p.class, p.a),
             study.valid_candidates(p.class, p.b),
         );
-        let edge = |ring: &[Pt], i: usize| (ring[i].clone(), ring[(i + 1) % ring.len()].clone());
+        let edge =
+            |ring: &[QPoint], i: usize| (ring[i].clone(), ring[(i + 1) % ring.len()].clone());
         for (i, ci) in va.iter().enumerate().filter(|(_, c)| !c.is_empty()) {
             for (j, cj) in vb.iter().enumerate().filter(|(_, c)| !c.is_empty()) {
                 let (a, a2) = (edge(r, i), edge(r2, j));
@@ -106,7 +108,12 @@ fn check_study(study: &Study<'_>) -> Report {
 /// One pair of artificial edges: h(a) (`a`, of h(V◇) `ring`) or h'(a')
 /// (`a2`, of `ring2`) meets the other polygon; if neither does, the
 /// violation a crossing of their candidate edges would be.
-pub fn check(a: &(Pt, Pt), ring: &[Pt], a2: &(Pt, Pt), ring2: &[Pt]) -> Option<Violation> {
+pub fn check(
+    a: &(QPoint, QPoint),
+    ring: &[QPoint],
+    a2: &(QPoint, QPoint),
+    ring2: &[QPoint],
+) -> Option<Violation> {
     if segment_meets_polygon(&a.0, &a.1, ring2) || segment_meets_polygon(&a2.0, &a2.1, ring) {
         return None;
     }
@@ -115,7 +122,7 @@ pub fn check(a: &(Pt, Pt), ring: &[Pt], a2: &(Pt, Pt), ring2: &[Pt]) -> Option<V
 
 /// The violation crossing candidate edges of `a` and `a2` are when
 /// neither artificial edge meets the other polygon.
-fn outside_violation(a: &(Pt, Pt), a2: &(Pt, Pt)) -> Violation {
+fn outside_violation(a: &(QPoint, QPoint), a2: &(QPoint, QPoint)) -> Violation {
     Violation::with_data(
         format!(
             "crossing candidate edges whose artificial edges {}–{} and {}–{} both lie outside the other embedding",

@@ -19,7 +19,8 @@
 use serde_json::json;
 use std::collections::HashSet;
 use wai_embed::intersection::{edge_type, EdgeType};
-use wai_embed::{Intersection, Pt, SkeletonRing};
+use wai_embed::{Intersection, SkeletonRing};
+use wai_exact::QPoint;
 
 use crate::framework::{Case, Checker, Report, Violation};
 use wai_study::EmbeddingPair;
@@ -57,7 +58,7 @@ const NAMES: [&str; 5] = ["type 1", "type 2", "type 3", "type 4", "type 5"];
 fn check_study(study: &Study<'_>) -> Report {
     let mut report = Report::new(ID);
     for (pair, x, types) in classified_pairs(study) {
-        let mut r = check_types(x, &types);
+        let mut r = check_types(x, types);
         r.tag("pair", json!([pair.first, pair.second]));
         report.absorb(r);
     }
@@ -65,27 +66,17 @@ fn check_study(study: &Study<'_>) -> Report {
 }
 
 /// The overlapping pairs of [`Study::embedding_pairs`] whose intersection
-/// is one region, with its edges' types (shared with C4.10).
+/// is one region, with its edges' types (shared with C4.10 and E4.10;
+/// classified once, [`Study::intersection_types`]).
 pub fn classified_pairs<'s>(
     study: &'s Study<'_>,
-) -> Vec<(&'s EmbeddingPair, &'s Intersection, Vec<Option<EdgeType>>)> {
-    let rings = study.skeleton_rings();
-    let vertices: HashSet<Pt> = study
-        .map()
-        .vertices()
-        .iter()
-        .map(|&p| Pt::from(p))
-        .collect();
+) -> Vec<(&'s EmbeddingPair, &'s Intersection, &'s [Option<EdgeType>])> {
     study
         .embedding_pairs()
         .iter()
         .filter_map(|pair| {
             let x = study.intersection(pair).filter(|x| x.components() == 1)?;
-            let (p, q) = (
-                &rings[pair.first.0][pair.first.1],
-                &rings[pair.second.0][pair.second.1],
-            );
-            Some((pair, x, types(x, p, q, &vertices)))
+            Some((pair, x, study.intersection_types(pair)?))
         })
         .collect()
 }
@@ -95,7 +86,7 @@ pub fn types(
     x: &Intersection,
     p: &SkeletonRing,
     q: &SkeletonRing,
-    vertices: &HashSet<Pt>,
+    vertices: &HashSet<QPoint>,
 ) -> Vec<Option<EdgeType>> {
     x.cycles
         .iter()
@@ -109,7 +100,7 @@ pub fn check(
     x: &Intersection,
     p: &SkeletonRing,
     q: &SkeletonRing,
-    vertices: &HashSet<Pt>,
+    vertices: &HashSet<QPoint>,
 ) -> Report {
     check_types(x, &types(x, p, q, vertices))
 }

@@ -104,8 +104,8 @@ pub fn check(p: &SkeletonRing, q: &SkeletonRing, witnesses: &[Piece]) -> Report 
 #[cfg(test)]
 mod tests {
     use super::*;
-    use wai_embed::Pt;
     use wai_exact::Point;
+    use wai_exact::QPoint;
 
     #[test]
     fn holds_on_repeated_niches() {
@@ -143,7 +143,7 @@ mod tests {
             ]),
             vec![false, true, false, true, false, false, false, false],
         );
-        let w = Piece::Point(Pt::new(rug::Rational::from(0), rug::Rational::from(1)));
+        let w = Piece::Point(QPoint::new(rug::Rational::from(0), rug::Rational::from(1)));
         let report = check(&p, &q, &[w]);
         assert_eq!(report.examined, 1);
         assert_eq!(report.violations.len(), 1, "{:?}", report.violations);

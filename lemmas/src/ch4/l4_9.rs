@@ -25,7 +25,8 @@
 use serde_json::json;
 use wai_embed::intersection::{edges_meet, left_right};
 use wai_embed::piece::part_points;
-use wai_embed::{Pt, SkeletonRing};
+use wai_embed::SkeletonRing;
+use wai_exact::QPoint;
 
 use crate::framework::{Case, Checker, Report, Violation};
 use rug::Rational;
@@ -72,7 +73,8 @@ fn check_study(study: &Study<'_>) -> Report {
             &rings[pair.first.0][pair.first.1],
             &rings[pair.second.0][pair.second.1],
         );
-        let lines = meeting_lines(p, q);
+        let meeting = meeting_pairs(p, q);
+        let lines = lines_of(p, q, &meeting);
         let ws = part_points(
             &study.witnesses()[pair.first.0][pair.first.1].pieces(),
             &lines,
@@ -83,7 +85,7 @@ fn check_study(study: &Study<'_>) -> Report {
         );
         for w in &ws {
             for w2 in &ws2 {
-                let mut r = check(p, q, w, w2);
+                let mut r = check_meeting(p, q, &meeting, w, w2);
                 r.tag("pair", json!([pair.first, pair.second]));
                 report.absorb(r);
             }
@@ -92,17 +94,31 @@ fn check_study(study: &Study<'_>) -> Report {
     report
 }
 
+/// The pairs (i, j) of an artificial edge of `p` and one of `q` that
+/// meet ([`edges_meet`]).
+pub fn meeting_pairs(p: &SkeletonRing, q: &SkeletonRing) -> Vec<(usize, usize)> {
+    p.artificial_edges()
+        .flat_map(|i| q.artificial_edges().map(move |j| (i, j)))
+        .filter(|&(i, j)| edges_meet(p.edge(i), q.edge(j)))
+        .collect()
+}
+
 /// The lines of the artificial edges of `p` and `q` that meet one of the
 /// other: the only lines across which a witness's tallies change.
-pub fn meeting_lines(p: &SkeletonRing, q: &SkeletonRing) -> Vec<(Pt, Pt)> {
+pub fn meeting_lines(p: &SkeletonRing, q: &SkeletonRing) -> Vec<(QPoint, QPoint)> {
+    lines_of(p, q, &meeting_pairs(p, q))
+}
+
+/// The lines of the edges of the `meeting` pairs.
+fn lines_of(
+    p: &SkeletonRing,
+    q: &SkeletonRing,
+    meeting: &[(usize, usize)],
+) -> Vec<(QPoint, QPoint)> {
     let mut lines = Vec::new();
-    for i in p.artificial_edges() {
-        for j in q.artificial_edges() {
-            if edges_meet(p.edge(i), q.edge(j)) {
-                for (x, y) in [p.edge(i), q.edge(j)] {
-                    lines.push((x.clone(), y.clone()));
-                }
-            }
+    for &(i, j) in meeting {
+        for (x, y) in [p.edge(i), q.edge(j)] {
+            lines.push((x.clone(), y.clone()));
         }
     }
     lines.sort();
@@ -112,33 +128,50 @@ pub fn meeting_lines(p: &SkeletonRing, q: &SkeletonRing) -> Vec<(Pt, Pt)> {
 
 /// The tallies (LR/LR, RL/RL, LR/RL, RL/LR) of one pair and witnesses,
 /// and how many meeting pairs were undecided.
-pub fn tallies(p: &SkeletonRing, q: &SkeletonRing, w: &Pt, w2: &Pt) -> ([usize; 4], u64) {
+pub fn tallies(p: &SkeletonRing, q: &SkeletonRing, w: &QPoint, w2: &QPoint) -> ([usize; 4], u64) {
+    tallies_of(p, q, &meeting_pairs(p, q), w, w2)
+}
+
+/// [`tallies`] over the `meeting` pairs of [`meeting_pairs`].
+fn tallies_of(
+    p: &SkeletonRing,
+    q: &SkeletonRing,
+    meeting: &[(usize, usize)],
+    w: &QPoint,
+    w2: &QPoint,
+) -> ([usize; 4], u64) {
     let mut t = [0; 4];
     let mut undecided = 0;
-    for i in p.artificial_edges() {
-        for j in q.artificial_edges() {
-            if !edges_meet(p.edge(i), q.edge(j)) {
-                continue;
-            }
-            match (
-                left_right(w, p.edge(i), q.edge(j)),
-                left_right(w2, q.edge(j), p.edge(i)),
-            ) {
-                (Some(true), Some(true)) => t[0] += 1,
-                (Some(false), Some(false)) => t[1] += 1,
-                (Some(true), Some(false)) => t[2] += 1,
-                (Some(false), Some(true)) => t[3] += 1,
-                _ => undecided += 1,
-            }
+    for &(i, j) in meeting {
+        match (
+            left_right(w, p.edge(i), q.edge(j)),
+            left_right(w2, q.edge(j), p.edge(i)),
+        ) {
+            (Some(true), Some(true)) => t[0] += 1,
+            (Some(false), Some(false)) => t[1] += 1,
+            (Some(true), Some(false)) => t[2] += 1,
+            (Some(false), Some(true)) => t[3] += 1,
+            _ => undecided += 1,
         }
     }
     (t, undecided)
 }
 
 /// One pair of embeddings from one pair of witnesses.
-pub fn check(p: &SkeletonRing, q: &SkeletonRing, w: &Pt, w2: &Pt) -> Report {
+pub fn check(p: &SkeletonRing, q: &SkeletonRing, w: &QPoint, w2: &QPoint) -> Report {
+    check_meeting(p, q, &meeting_pairs(p, q), w, w2)
+}
+
+/// [`check`] with the pairs of [`meeting_pairs`].
+fn check_meeting(
+    p: &SkeletonRing,
+    q: &SkeletonRing,
+    meeting: &[(usize, usize)],
+    w: &QPoint,
+    w2: &QPoint,
+) -> Report {
     let mut report = Report::new(ID);
-    let (t, undecided) = tallies(p, q, w, w2);
+    let (t, undecided) = tallies_of(p, q, meeting, w, w2);
     report.count("undecided", undecided);
     for (k, name) in TYPES.iter().enumerate() {
         if t[k] > 0 {
@@ -185,7 +218,7 @@ mod tests {
         let pts = |v: &[(i128, i128)]| v.iter().map(|&(x, y)| Point::new(x, y)).collect::<Vec<_>>();
         let p = SkeletonRing::new(&pts(&[(0, 0), (4, 0), (4, 4), (0, 4)]), vec![true; 4]);
         let q = SkeletonRing::new(&pts(&[(3, -1), (5, 1), (1, 5), (-1, 3)]), vec![true; 4]);
-        let pt = |x: i64, y: i64| Pt::new(rug::Rational::from(x), rug::Rational::from(y));
+        let pt = |x: i64, y: i64| QPoint::new(rug::Rational::from(x), rug::Rational::from(y));
         let (t, _) = tallies(&p, &q, &pt(1, 1), &pt(2, 2));
         let report = check(&p, &q, &pt(1, 1), &pt(2, 2));
         assert_eq!(report.examined, 1);

@@ -30,9 +30,7 @@
 //! happen when c' lies between c1 and c2, and says nothing otherwise).
 
 use serde_json::json;
-use wai_embed::piece::dot;
-use wai_embed::Pt;
-use wai_exact::Point;
+use wai_exact::{Point, QPoint};
 
 use crate::framework::{Case, Checker, Report, Violation};
 use wai_study::Study;
@@ -123,10 +121,10 @@ pub fn crosses(
 /// direction (the two on one line).
 pub fn before(map: &[Point], c1: usize, c2: usize) -> bool {
     let n = map.len();
-    let at = |i: usize| Pt::from(map[i]);
+    let at = |i: usize| QPoint::from(map[i]);
     let (s1, e1, s2) = (at(c1), at((c1 + 1) % n), at(c2));
     // Exact: coordinates may have up to MAX_COORD_BITS = 100 bits.
-    dot(&s2.sub(&s1), &e1.sub(&s1)) > 0
+    s2.sub(&s1).dot(&e1.sub(&s1)) > 0
 }
 
 /// Whether edge `c` lies strictly after `c1` and before `c2` on the

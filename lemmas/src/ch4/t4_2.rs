@@ -49,8 +49,9 @@ use std::collections::BTreeSet;
 
 use rug::Rational;
 use serde_json::{json, Value};
-use wai_embed::piece::{dot, offsets_between, Piece};
-use wai_embed::{Intersection, Mutual, Pt, Sightlines, Witnesses};
+use wai_embed::piece::{offsets_between, Piece};
+use wai_embed::{Intersection, Mutual, Sightlines, Witnesses};
+use wai_exact::QPoint;
 
 use crate::framework::{Case, Checker, Report, Violation};
 use wai_study::Study;
@@ -176,7 +177,7 @@ pub fn proof_lines(
     let all = &study.embeddings()[pair.class];
     let (h, h2) = (&all[pair.a].embedding, &all[pair.b].embedding);
     let map = study.map().vertices();
-    let t = Pt::from(map[h2.origin]).sub(&Pt::from(map[h.origin]));
+    let t = QPoint::from(map[h2.origin]).sub(&QPoint::from(map[h.origin]));
     let x = study
         .intersection(&study.embedding_pairs()[pair.pair])
         .expect("an overlapping pair has an intersection");
@@ -195,17 +196,17 @@ pub fn proof_lines(
 /// and in direction −t through one on Q's edge j (`on_q`, `art_q(j)`).
 pub fn exits(
     x: &Intersection,
-    t: &Pt,
+    t: &QPoint,
     within: Option<(Rational, Rational)>,
     art_p: &dyn Fn(usize) -> bool,
     art_q: &dyn Fn(usize) -> bool,
 ) -> BTreeSet<(usize, usize)> {
     let n = t.perp();
     let edges: Vec<_> = x.cycles.iter().flatten().collect();
-    let vertices: Vec<Pt> = edges.iter().map(|e| e.from.clone()).collect();
+    let vertices: Vec<QPoint> = edges.iter().map(|e| e.from.clone()).collect();
     let proj: Vec<(Rational, Rational)> = edges
         .iter()
-        .map(|e| (dot(&n, &e.from), dot(&n, &e.to)))
+        .map(|e| (n.dot(&e.from), n.dot(&e.to)))
         .collect();
     let offsets = match within {
         Some((lo, hi)) => offsets_between(&vertices, &n, lo, hi),
@@ -228,7 +229,7 @@ pub fn exits(
                 continue;
             }
             let lambda = Rational::from(&u - a) / Rational::from(b - a);
-            let (ta, tb) = (dot(t, &e.from), dot(t, &e.to));
+            let (ta, tb) = (t.dot(&e.from), t.dot(&e.to));
             hits.push((Rational::from(&tb - &ta) * lambda + ta, k));
         }
         hits.sort();
@@ -254,7 +255,7 @@ pub fn exits(
 /// meaning left of `t`.
 fn order_case(
     n: usize,
-    t: &Pt,
+    t: &QPoint,
     map: &[wai_exact::Point],
     h: &wai_embed::Embedding,
     h2: &wai_embed::Embedding,
@@ -265,7 +266,7 @@ fn order_case(
     let ends = |e: &wai_embed::Embedding, s: usize| {
         let (u, v) = (e.vertices[s], e.vertices[(s + 1) % k]);
         // (above, below): the end left of t first.
-        let left = t.cross(&Pt::from(map[u]).sub(&Pt::from(map[v]))) > 0;
+        let left = t.cross(&QPoint::from(map[u]).sub(&QPoint::from(map[v]))) > 0;
         if left {
             (u, v)
         } else {
@@ -304,13 +305,13 @@ fn order_case(
 
 /// The open range of projections on `n` of the common interior of two
 /// convex regions (Theorem 4.3's kernels), if they overlap.
-pub fn common_range(a: &[Pt], b: &[Pt], n: &Pt) -> Option<(Rational, Rational)> {
+pub fn common_range(a: &[QPoint], b: &[QPoint], n: &QPoint) -> Option<(Rational, Rational)> {
     let mut left = Piece::Polygon(a.to_vec());
     for i in 0..b.len() {
         left = left.clip(&b[i], &b[(i + 1) % b.len()], std::cmp::Ordering::Greater)?;
     }
     let v = left.vertices();
-    let p: Vec<Rational> = v.iter().map(|x| dot(n, x)).collect();
+    let p: Vec<Rational> = v.iter().map(|x| n.dot(x)).collect();
     let lo = p.iter().min()?.clone();
     let hi = p.iter().max()?.clone();
     (lo < hi).then_some((lo, hi))

@@ -25,7 +25,7 @@
 use super::t4_2::CROSS_CHECK_MAX_N;
 use super::t4_2::{check_pairs, common_range, hit_orders, proof_lines, ORDER_CASES};
 use crate::framework::{Checker, Report};
-use wai_embed::Pt;
+use wai_exact::QPoint;
 use wai_study::Study;
 
 const ID: &str = "T4.3";
@@ -53,11 +53,11 @@ fn check_study(study: &Study<'_>) -> Report {
         ));
         let all = &study.embeddings()[pair.class];
         let (h, h2) = (&all[pair.a], &all[pair.b]);
-        let t = Pt::from(map[h2.embedding.origin]).sub(&Pt::from(map[h.embedding.origin]));
-        let ring = |k: &wai_visibility::ConvexRegion| -> Vec<Pt> {
-            k.vertices().iter().map(Pt::from).collect()
+        let t = QPoint::from(map[h2.embedding.origin]).sub(&QPoint::from(map[h.embedding.origin]));
+        let ring = |k: &wai_visibility::ConvexRegion| -> Vec<QPoint> {
+            k.vertices().iter().map(QPoint::from).collect()
         };
-        let within = common_range(&ring(&h.kernel), &ring(&h2.kernel), &t.perp());
+        let within = common_range(&ring(h.kernel()), &ring(h2.kernel()), &t.perp());
         let cases = match within {
             Some(range) => proof_lines(study, pair, Some(range)),
             None => Vec::new(),

@@ -28,7 +28,8 @@
 //! proof in different embeddings, Fig 5.13).
 
 use serde_json::json;
-use wai_embed::{Chord, Pt, SightFan};
+use wai_embed::{Chord, SightFan};
+use wai_exact::QPoint;
 
 use crate::framework::{Case, Checker, Report, Violation};
 use wai_study::Study;
@@ -80,7 +81,7 @@ pub enum Verdict {
 /// `fans` (each fan's lines to the one edge, from one embedding), on the
 /// map with vertices `ring`: exactly when the window is a chord
 /// ([`Chord`]), else by [`SightFan::lines_meet_segment`].
-pub fn common_window(ring: &[Pt], windows: &[(Pt, Pt)], fans: &[&SightFan]) -> Verdict {
+pub fn common_window(ring: &[QPoint], windows: &[(QPoint, QPoint)], fans: &[&SightFan]) -> Verdict {
     let mut refuted = 0;
     for (l, (a, b)) in windows.iter().enumerate() {
         let chord = Chord::new(ring, a, b);
@@ -115,11 +116,11 @@ pub fn common_window(ring: &[Pt], windows: &[(Pt, Pt)], fans: &[&SightFan]) -> V
 /// Checks L5.13 on every class.
 fn check_study(study: &Study<'_>) -> Report {
     let mut report = Report::new(ID);
-    let ring: Vec<Pt> = study
+    let ring: Vec<QPoint> = study
         .map()
         .vertices()
         .iter()
-        .map(|&v| Pt::from(v))
+        .map(|&v| QPoint::from(v))
         .collect();
     for (class, c) in study.candidate_sets().iter().enumerate() {
         for ((e, f), shared) in study.edge_pairs()[class].iter() {
@@ -201,8 +202,8 @@ mod tests {
     use rug::Rational;
     use wai_embed::Piece;
 
-    fn pt(x: i64, y: i64) -> Pt {
-        Pt::new(Rational::from(x), Rational::from(y))
+    fn pt(x: i64, y: i64) -> QPoint {
+        QPoint::new(Rational::from(x), Rational::from(y))
     }
 
     /// A witness square below a window (0,0)–(4,0), seeing the edge
@@ -228,8 +229,8 @@ mod tests {
         // A wide bar before the window, between it and the cell.
         let half = Rational::from((-1, 2));
         let bar = (
-            Pt::new((-50).into(), half.clone()),
-            Pt::new(50.into(), half),
+            QPoint::new((-50).into(), half.clone()),
+            QPoint::new(50.into(), half),
         );
         assert_eq!(f.lines_meet_segment(&bar.0, &bar.1), Some(true));
         // A bar through the cell's middle: the lines from below it cross
@@ -241,7 +242,7 @@ mod tests {
         // A map around the fan, with chords at y = 5 (between the cell and
         // the edge: crossed) and from (-110, -50) to (110, 5) (passing
         // below the cell: not crossed); the edge itself is no chord.
-        let ring: Vec<Pt> = [
+        let ring: Vec<QPoint> = [
             (-100, 10),
             (-110, 5),
             (-110, -50),

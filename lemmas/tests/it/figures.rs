@@ -4,8 +4,8 @@
 use std::path::Path;
 
 use serde_json::Value;
-use wai_embed::{interiors_overlap, Mutual, Pt};
-use wai_exact::RatPoint;
+use wai_embed::{interiors_overlap, Mutual};
+use wai_exact::{QPoint, RatPoint};
 use wai_lemmas::ch4::{e4_1, e4_10, e4_28};
 use wai_map::{json::from_json, Map};
 use wai_study::Study;
@@ -89,13 +89,17 @@ fn fig_3_10_an_embedding_without_witness() {
 }
 
 /// The embedded skeleton polygon h(V◇) of `h`.
-fn skeleton_ring(map: &Map, h: &wai_study::Embedded) -> Vec<Pt> {
-    h.embedding.polygon(map).into_iter().map(Pt::from).collect()
+fn skeleton_ring(map: &Map, h: &wai_study::Embedded) -> Vec<QPoint> {
+    h.embedding
+        .polygon(map)
+        .into_iter()
+        .map(QPoint::from)
+        .collect()
 }
 
 /// The embedded kernel h(ker V*) of `h`.
-fn kernel_ring(h: &wai_study::Embedded) -> Vec<Pt> {
-    h.kernel.vertices().iter().map(Pt::from).collect()
+fn kernel_ring(h: &wai_study::Embedded) -> Vec<QPoint> {
+    h.kernel().vertices().iter().map(QPoint::from).collect()
 }
 
 #[test]

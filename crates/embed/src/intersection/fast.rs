@@ -1,0 +1,494 @@
+//! The ring-against-ring computations of this module on polygons whose
+//! vertices are small integer points (map vertices, below
+//! [`FAST_BITS`]): the same algorithms as the rational ones of
+//! [`super`] and [`crate::witness`], in `i128` with no allocation but the
+//! output's.
+//!
+//! A point on an edge `a → b` is `a + t·(b − a)` with `t = n/d` exact; a
+//! point where a test is made is kept homogeneous, `(X, Y, W)` with
+//! `W > 0`; an output point is that triple reduced (coprime entries), so
+//! equal points have equal triples.
+//!
+//! Implementation note: with every coordinate `|c| < 2^29`
+//! ([`FAST_BITS`]):
+//! - a difference of two vertices has `|Δ| < 2^30`, a cross or dot
+//!   product of two differences `< 2·2^60 = 2^61`;
+//! - a cut parameter `t = n/d` on a segment has `0 ≤ n ≤ d < 2^61` (`d` a
+//!   cross product `(b − a) × (e − c)` or a squared length `(b − a)·(b −
+//!   a)`, `n` the matching product with `c − a`), so comparing two, `n1·d2`
+//!   against `n2·d1`, stays below `2^122`;
+//! - a test parameter is a cut or the mediant `(n0 + n1)/(d0 + d1)` of two
+//!   consecutive cuts (strictly between them), `N ≤ D < 2^62`; its point
+//!   `X = a_x·D + N·Δ_x` has `|X| < 2^91 + 2^92 < 2^93`, `W = D < 2^62`;
+//! - locating it against an edge `c → e` takes `Y − c_y·W` (`< 2^94`) and
+//!   the orientation `(e − c) × (X − c_x·W, Y − c_y·W)`, two products
+//!   below `2^30·2^94 = 2^124` and their difference below `2^125`;
+//! - an output point (a cut, `N = n`, `D = d`) has `|X| < 2^92`.
+//!
+//! Everything stays below `2^127`; `fast_bits_bound_holds` recomputes the
+//! worst case, and the differential tests compare every result with the
+//! rational path.
+
+use super::{BoundaryEdge, Intersection};
+use rug::Rational;
+use std::cmp::Ordering;
+use wai_exact::QPoint;
+
+/// Ring vertices with `|x|, |y| < 2^FAST_BITS` take the integer path.
+pub const FAST_BITS: u32 = 29;
+
+/// A small integer point.
+pub(crate) type I = [i64; 2];
+
+/// The ring as small integer points, if every vertex is one.
+pub(crate) fn small_ring(r: &[QPoint]) -> Option<Vec<I>> {
+    r.iter().map(small).collect()
+}
+
+/// The point as a small integer point, if it is one.
+pub(crate) fn small(p: &QPoint) -> Option<I> {
+    let c = |q: &Rational| -> Option<i64> {
+        if *q.denom() != 1 {
+            return None;
+        }
+        q.numer()
+            .to_i64()
+            .filter(|v| v.unsigned_abs() < 1u64 << FAST_BITS)
+    };
+    Some([c(&p.x)?, c(&p.y)?])
+}
+
+fn sub(a: I, b: I) -> [i128; 2] {
+    [
+        i128::from(a[0]) - i128::from(b[0]),
+        i128::from(a[1]) - i128::from(b[1]),
+    ]
+}
+
+fn cross(u: [i128; 2], v: [i128; 2]) -> i128 {
+    u[0] * v[1] - u[1] * v[0]
+}
+
+fn dot(u: [i128; 2], v: [i128; 2]) -> i128 {
+    u[0] * v[0] + u[1] * v[1]
+}
+
+/// The sign of `(b − a) × (c − a)`.
+fn turn(a: I, b: I, c: I) -> Ordering {
+    cross(sub(b, a), sub(c, a)).cmp(&0)
+}
+
+/// `lo ≤ x ≤ hi` for `x` between the two.
+fn between(u: i64, v: i64, x: i64) -> bool {
+    u.min(v) <= x && x <= u.max(v)
+}
+
+/// [`crate::piece::segments_meet`] on small points.
+pub(crate) fn segments_meet(a: I, b: I, c: I, d: I) -> bool {
+    for k in 0..2 {
+        if a[k].max(b[k]) < c[k].min(d[k]) || c[k].max(d[k]) < a[k].min(b[k]) {
+            return false;
+        }
+    }
+    let (o1, o2) = (turn(a, b, c), turn(a, b, d));
+    let (o3, o4) = (turn(c, d, a), turn(c, d, b));
+    let within = |p: I, q: I, x: I| between(p[0], q[0], x[0]) && between(p[1], q[1], x[1]);
+    use Ordering::Equal;
+    if o1 != Equal && o2 != Equal && o3 != Equal && o4 != Equal {
+        return o1 != o2 && o3 != o4;
+    }
+    (o1 == Equal && within(a, b, c))
+        || (o2 == Equal && within(a, b, d))
+        || (o3 == Equal && within(c, d, a))
+        || (o4 == Equal && within(c, d, b))
+}
+
+/// [`super::edges_meet`] on small points: the closed segments meet other
+/// than in an end common to both.
+pub(crate) fn edges_meet(a: [I; 2], b: [I; 2]) -> bool {
+    if !segments_meet(a[0], a[1], b[0], b[1]) {
+        return false;
+    }
+    let Some(&x) = a.iter().find(|p| b.contains(p)) else {
+        return true;
+    };
+    // A common end: they meet elsewhere only if collinear and pointing the
+    // same way from it.
+    let (da, db) = (sub(a[1], a[0]), sub(b[1], b[0]));
+    if cross(da, db) != 0 {
+        return false;
+    }
+    let away = |s: [I; 2]| {
+        if s[0] == x {
+            sub(s[1], x)
+        } else {
+            sub(s[0], x)
+        }
+    };
+    dot(away(a), away(b)) > 0
+}
+
+/// A parameter `n/d` on a segment, `d > 0`.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Frac {
+    n: i128,
+    d: i128,
+}
+
+impl Frac {
+    const ZERO: Frac = Frac { n: 0, d: 1 };
+    const ONE: Frac = Frac { n: 1, d: 1 };
+
+    fn cmp(self, o: Frac) -> Ordering {
+        (self.n * o.d).cmp(&(o.n * self.d))
+    }
+
+    /// Strictly between `self` and `o` (`self < o`).
+    fn mediant(self, o: Frac) -> Frac {
+        Frac {
+            n: self.n + o.n,
+            d: self.d + o.d,
+        }
+    }
+
+    #[cfg(test)]
+    fn to_rational(self) -> Rational {
+        Rational::from((self.n, self.d))
+    }
+}
+
+/// [`crate::piece::segment_cuts`] on small points, pushed onto `out`.
+fn segment_cuts(a: I, b: I, c: I, e: I, out: &mut Vec<Frac>) {
+    if !segments_meet(a, b, c, e) {
+        return;
+    }
+    let d = sub(b, a);
+    let f = sub(e, c);
+    let den = cross(d, f);
+    if den == 0 {
+        let dd = dot(d, d);
+        for x in [c, e] {
+            let n = dot(sub(x, a), d);
+            if (0..=dd).contains(&n) {
+                out.push(Frac { n, d: dd });
+            }
+        }
+        return;
+    }
+    let num = cross(sub(c, a), f);
+    let (n, d) = if den < 0 { (-num, -den) } else { (num, den) };
+    out.push(Frac { n, d });
+}
+
+/// The cuts of `a → b` by the boundary of `q`, with 0 and 1, sorted,
+/// without repeats.
+fn cuts(a: I, b: I, q: &[I]) -> Vec<Frac> {
+    let mut cuts = vec![Frac::ZERO, Frac::ONE];
+    for j in 0..q.len() {
+        segment_cuts(a, b, q[j], q[(j + 1) % q.len()], &mut cuts);
+    }
+    cuts.sort_by(|x, y| x.cmp(*y));
+    cuts.dedup_by(|x, y| x.cmp(*y) == Ordering::Equal);
+    cuts
+}
+
+/// The point `a + t·(b − a)`, homogeneous `(X, Y, W)`, `W > 0`.
+fn at(a: I, b: I, t: Frac) -> [i128; 3] {
+    let d = sub(b, a);
+    [
+        i128::from(a[0]) * t.d + t.n * d[0],
+        i128::from(a[1]) * t.d + t.n * d[1],
+        t.d,
+    ]
+}
+
+/// The same point reduced: coprime entries, `W > 0`.
+fn reduced(p: [i128; 3]) -> [i128; 3] {
+    let g = gcd(
+        gcd(p[0].unsigned_abs(), p[1].unsigned_abs()),
+        p[2].unsigned_abs(),
+    );
+    let g = g.max(1) as i128;
+    [p[0] / g, p[1] / g, p[2] / g]
+}
+
+fn gcd(mut a: u128, mut b: u128) -> u128 {
+    while b != 0 {
+        (a, b) = (b, a % b);
+    }
+    a
+}
+
+/// A reduced homogeneous point as a rational point.
+fn qpoint(p: [i128; 3]) -> QPoint {
+    QPoint::new(Rational::from((p[0], p[2])), Rational::from((p[1], p[2])))
+}
+
+/// Where a point lies against a polygon ([`crate::witness::locate`]).
+pub(crate) enum Locus {
+    Inside,
+    Outside,
+    OnEdge(usize),
+}
+
+/// [`crate::witness::locate`] of the homogeneous point `x` on the small
+/// ring `q`: the same edges in the same order, the same half-open rule.
+fn locate(q: &[I], x: [i128; 3]) -> Locus {
+    let n = q.len();
+    let w = x[2];
+    let mut inside = false;
+    for j in 0..n {
+        let (a, b) = (q[j], q[(j + 1) % n]);
+        // Signs of a_y − x_y and b_y − x_y, scaled by W > 0.
+        let ay = (i128::from(a[1]) * w - x[1]).cmp(&0);
+        let by = (i128::from(b[1]) * w - x[1]).cmp(&0);
+        if (ay == Ordering::Less && by == Ordering::Less)
+            || (ay == Ordering::Greater && by == Ordering::Greater)
+        {
+            continue;
+        }
+        let e = sub(b, a);
+        let r = [x[0] - i128::from(a[0]) * w, x[1] - i128::from(a[1]) * w];
+        let t = cross(e, r).cmp(&0);
+        let within = |k: usize| {
+            let (lo, hi) = (a[k].min(b[k]), a[k].max(b[k]));
+            i128::from(lo) * w <= x[k] && x[k] <= i128::from(hi) * w
+        };
+        if t == Ordering::Equal && within(0) && within(1) {
+            return Locus::OnEdge(j);
+        }
+        if (ay == Ordering::Greater) != (by == Ordering::Greater) {
+            let up = b[1] > a[1];
+            if (up && t == Ordering::Greater) || (!up && t == Ordering::Less) {
+                inside = !inside;
+            }
+        }
+    }
+    if inside {
+        Locus::Inside
+    } else {
+        Locus::Outside
+    }
+}
+
+/// A directed boundary piece: reduced ends, the direction of its edge.
+#[derive(Clone, Debug)]
+struct Stretch {
+    from: [i128; 3],
+    to: [i128; 3],
+    dir: [i128; 2],
+    on_p: Option<usize>,
+    on_q: Option<usize>,
+}
+
+/// [`super`]'s `boundary_pieces` on small rings.
+fn boundary_pieces(p: &[I], q: &[I], p_is_first: bool, shared: bool, out: &mut Vec<Stretch>) {
+    for i in 0..p.len() {
+        let (a, b) = (p[i], p[(i + 1) % p.len()]);
+        let d = sub(b, a);
+        let cuts = cuts(a, b, q);
+        for w in cuts.windows(2) {
+            let other = match locate(q, at(a, b, w[0].mediant(w[1]))) {
+                Locus::Inside => None,
+                Locus::Outside => continue,
+                Locus::OnEdge(j) => {
+                    let f = sub(q[(j + 1) % q.len()], q[j]);
+                    if !shared || dot(d, f) <= 0 {
+                        continue;
+                    }
+                    Some(j)
+                }
+            };
+            let (on_p, on_q) = if p_is_first {
+                (Some(i), other)
+            } else {
+                (other, Some(i))
+            };
+            out.push(Stretch {
+                from: reduced(at(a, b, w[0])),
+                to: reduced(at(a, b, w[1])),
+                dir: d,
+                on_p,
+                on_q,
+            });
+        }
+    }
+}
+
+/// [`super`]'s clockwise order from `r` on integer directions.
+fn clockwise_from(r: [i128; 2], u: [i128; 2], v: [i128; 2]) -> Ordering {
+    let half = |w: [i128; 2]| {
+        let c = cross(r, w);
+        u8::from(!(c < 0 || (c == 0 && dot(r, w) < 0)))
+    };
+    half(u).cmp(&half(v)).then_with(|| cross(v, u).cmp(&0))
+}
+
+/// [`Intersection::of`] on small rings.
+pub(crate) fn intersection(p: &[I], q: &[I]) -> Intersection {
+    let mut pieces = Vec::new();
+    boundary_pieces(p, q, true, true, &mut pieces);
+    boundary_pieces(q, p, false, false, &mut pieces);
+    let mut used = vec![false; pieces.len()];
+    let mut cycles = Vec::new();
+    for start in 0..pieces.len() {
+        if used[start] {
+            continue;
+        }
+        let mut cycle: Vec<usize> = Vec::new();
+        let mut k = start;
+        loop {
+            used[k] = true;
+            cycle.push(k);
+            let here = pieces[k].to;
+            let back = [-pieces[k].dir[0], -pieces[k].dir[1]];
+            let next = (0..pieces.len())
+                .filter(|&m| !used[m] || m == start)
+                .filter(|&m| pieces[m].from == here)
+                .min_by(|&x, &y| clockwise_from(back, pieces[x].dir, pieces[y].dir));
+            match next {
+                Some(m) if m == start => break,
+                Some(m) => k = m,
+                None => break,
+            }
+        }
+        cycles.push(
+            cycle
+                .into_iter()
+                .map(|k| {
+                    let s = &pieces[k];
+                    BoundaryEdge {
+                        from: qpoint(s.from),
+                        to: qpoint(s.to),
+                        on_p: s.on_p,
+                        on_q: s.on_q,
+                    }
+                })
+                .collect(),
+        );
+    }
+    Intersection::from_cycles(cycles)
+}
+
+/// [`crate::witness::interiors_overlap`]'s test of the edges of `p`
+/// against `q` on small rings.
+pub(crate) fn one_side_overlaps(p: &[I], q: &[I]) -> bool {
+    let (mut lo, mut hi) = ([i64::MAX; 2], [i64::MIN; 2]);
+    for v in q {
+        for k in 0..2 {
+            lo[k] = lo[k].min(v[k]);
+            hi[k] = hi[k].max(v[k]);
+        }
+    }
+    for i in 0..p.len() {
+        let (a, b) = (p[i], p[(i + 1) % p.len()]);
+        if (0..2).any(|k| a[k].max(b[k]) < lo[k] || a[k].min(b[k]) > hi[k]) {
+            continue;
+        }
+        let d = sub(b, a);
+        for w in cuts(a, b, q).windows(2) {
+            match locate(q, at(a, b, w[0].mediant(w[1]))) {
+                Locus::Inside => return true,
+                Locus::Outside => {}
+                Locus::OnEdge(j) => {
+                    if dot(d, sub(q[(j + 1) % q.len()], q[j])) > 0 {
+                        return true;
+                    }
+                }
+            }
+        }
+    }
+    false
+}
+
+/// [`super::pieces_inside`] on small points.
+pub(crate) fn pieces_inside(a: I, b: I, q: &[I]) -> usize {
+    let cuts = cuts(a, b, q);
+    let inside = |t: Frac| !matches!(locate(q, at(a, b, t)), Locus::Outside);
+    let mut runs = 0;
+    let mut previous = false;
+    for (k, &t) in cuts.iter().enumerate() {
+        let here = inside(t);
+        if here && !previous {
+            runs += 1;
+        }
+        previous = here;
+        if let Some(&next) = cuts.get(k + 1) {
+            let between = inside(t.mediant(next));
+            if between && !previous {
+                runs += 1;
+            }
+            previous = between;
+        }
+    }
+    runs
+}
+
+/// The cut parameters of `a → b` by `q`'s boundary as rationals (for
+/// tests against the rational path).
+#[cfg(test)]
+pub(crate) fn cut_rationals(a: I, b: I, q: &[I]) -> Vec<Rational> {
+    cuts(a, b, q).into_iter().map(Frac::to_rational).collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use rug::Integer;
+
+    #[test]
+    fn cuts_equal_the_rational_cuts() {
+        let q: Vec<I> = vec![
+            [0, 0],
+            [6, 0],
+            [6, 6],
+            [4, 6],
+            [4, 2],
+            [2, 2],
+            [2, 6],
+            [0, 6],
+        ];
+        let qq: Vec<QPoint> = q
+            .iter()
+            .map(|v| QPoint::new(Rational::from(v[0]), Rational::from(v[1])))
+            .collect();
+        let pt = |v: I| QPoint::new(Rational::from(v[0]), Rational::from(v[1]));
+        for (a, b) in [
+            ([-1, 4], [7, 4]),
+            ([-1, 1], [7, 1]),
+            ([1, 3], [3, 1]),
+            ([0, 0], [6, 0]),
+            ([2, 2], [4, 2]),
+            ([3, -1], [3, 7]),
+        ] {
+            let mut want = vec![Rational::new(), Rational::from(1)];
+            for j in 0..qq.len() {
+                want.extend(crate::piece::segment_cuts(
+                    &pt(a),
+                    &pt(b),
+                    &qq[j],
+                    &qq[(j + 1) % qq.len()],
+                ));
+            }
+            want.sort();
+            want.dedup();
+            assert_eq!(cut_rationals(a, b, &q), want, "{a:?}–{b:?}");
+        }
+    }
+
+    #[test]
+    fn fast_bits_bound_holds() {
+        // The worst cases of the implementation note, in GMP integers.
+        let c = Integer::from(1) << FAST_BITS; // |coordinate| < c
+        let delta = Integer::from(&c * 2u32); // |Δ| < 2c
+        let prod = Integer::from(&delta * &delta) * 2u32; // cross, dot
+        let cut_d = prod.clone(); // 0 ≤ n ≤ d < prod
+        assert!(Integer::from(&cut_d * &cut_d) < Integer::from(1) << 127);
+        let big_d = Integer::from(&cut_d * 2u32); // mediant
+        let x = Integer::from(&c * &big_d) + Integer::from(&big_d * &delta);
+        let y_off: Integer = &x + Integer::from(&c * &big_d);
+        let orient = Integer::from(&delta * &y_off) * 2u32;
+        assert!(orient < Integer::from(1) << 127, "{orient}");
+        assert!(x < Integer::from(1) << 93);
+    }
+}
