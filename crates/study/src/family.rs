@@ -3,17 +3,47 @@
 //! the maps that are that construction (whatever name they carry) and
 //! confirms they reach what the construction promises.
 
+use std::collections::HashMap;
+use std::sync::{Arc, Mutex, OnceLock};
+
+use wai_exact::Point;
 use wai_map::Map;
 
 /// The largest family parameter a tight checker recognises.
 pub const MAX_PARAMETER: u32 = 8;
 
 /// `k` if `map` is exactly `wai_gen::family(id, &[k])` for some
-/// `k ≤ MAX_PARAMETER` (same vertices in the same order).
+/// `k ≤ MAX_PARAMETER` (same vertices in the same order). The family's
+/// maps are generated once per process and kept.
 pub fn parameter_of(map: &Map, id: &str) -> Option<u32> {
+    let members = members(id);
     (0..=MAX_PARAMETER).find(|&k| {
-        wai_gen::family(id, &[k]).is_ok_and(|f| f.n() == map.n() && f.vertices() == map.vertices())
+        members[k as usize]
+            .as_ref()
+            .is_some_and(|f| f.len() == map.n() && f.as_slice() == map.vertices())
     })
+}
+
+/// By parameter k: the vertices of a family's member k, if it has one.
+type Members = Arc<Vec<Option<Vec<Point>>>>;
+
+/// The vertices of `wai_gen::family(id, &[k])` for `k ≤ MAX_PARAMETER`
+/// (`None` where the family has no such member), generated once.
+fn members(id: &str) -> Members {
+    static MEMBERS: OnceLock<Mutex<HashMap<String, Members>>> = OnceLock::new();
+    let table = MEMBERS.get_or_init(|| Mutex::new(HashMap::new()));
+    let mut table = table.lock().expect("no panic while holding the lock");
+    Arc::clone(table.entry(id.to_owned()).or_insert_with(|| {
+        Arc::new(
+            (0..=MAX_PARAMETER)
+                .map(|k| {
+                    wai_gen::family(id, &[k])
+                        .ok()
+                        .map(|f| f.vertices().to_vec())
+                })
+                .collect(),
+        )
+    }))
 }
 
 /// `(niches, chain)` if `map` is exactly `wai_gen::comb_convex_chain(niches,
@@ -28,6 +58,13 @@ pub fn comb_parameters(map: &Map) -> Option<(u32, u32)> {
     let niches = r / 2;
     let chain = map.n().checked_sub(4 * niches + 2)?;
     let (niches, chain) = (u32::try_from(niches).ok()?, u32::try_from(chain).ok()?);
+    // The corridor's south wall runs from x = 0 to x = S·U: a cheap test
+    // before the family's map is generated.
+    let l = wai_gen::comb_layout(niches, chain);
+    let (lo, hi) = map.bounding_box();
+    if lo.x != 0 || hi.x != l.scale * l.u_max || chain < 2 {
+        return None;
+    }
     wai_gen::comb_convex_chain(niches, chain)
         .is_ok_and(|f| f.vertices() == map.vertices())
         .then_some((niches, chain))
