@@ -4,8 +4,10 @@
 use crate::arrangement::{
     along, area_twice_rat, bbox, boxes_meet, meeting_pairs, on_closed_segment, Arrangement, Support,
 };
+use crate::eye::small_of;
 use rug::Rational;
-use wai_exact::{orientation_rat, Orientation, RatPoint};
+use std::cmp::Ordering;
+use wai_exact::{orientation_rat, Orientation, Point, RatPoint, Vector};
 
 impl Arrangement {
     /// Check every invariant; the error names the first that fails.
@@ -96,26 +98,30 @@ impl Arrangement {
 
     /// The geometric layer of [`Arrangement::sanity_check`] (assumes the
     /// topology is sound).
+    ///
+    /// Every predicate is exact: on the points' `i128` homogeneous
+    /// coordinates with checked products, on GMP where a product would
+    /// overflow ([`Geo`]).
     pub fn check_geometry(&self) -> Result<(), String> {
         let mv = self.map.vertices();
         let n = mv.len();
-        let map_pt = |i: usize| RatPoint::from(mv[i % n]);
-        let points = self.points();
+        let geo = Geo { arr: self };
+        let map_pt = |i: usize| Pt::Map(mv[i % n]);
         // Edges on their supports, in the support's direction.
         for (e, geom) in self.edges.iter().enumerate() {
             let (a, b) = (self.half_edges[2 * e].origin, self.dest(2 * e));
-            let (pa, pb) = (&points[a], &points[b]);
-            if a == b || pa == pb {
+            let (pa, pb) = (Pt::Vertex(a), Pt::Vertex(b));
+            if a == b || geo.equal(pa, pb) {
                 return Err(format!("edge {e}: zero length"));
             }
             let d = self.direction(2 * e);
-            if along(d, pa) >= along(d, pb) {
+            if geo.along(d, pa, pb) != Ordering::Less {
                 return Err(format!("edge {e}: against its support's direction"));
             }
             match geom.support {
                 Support::MapEdge(i) => {
                     let (p, q) = (map_pt(i), map_pt(i + 1));
-                    if !on_closed_segment(&p, &q, pa) || !on_closed_segment(&p, &q, pb) {
+                    if !geo.on_closed_segment(p, q, pa) || !geo.on_closed_segment(p, q, pb) {
                         return Err(format!("edge {e}: off map edge {i}"));
                     }
                 }
@@ -125,10 +131,10 @@ impl Arrangement {
                     }
                     for &r in self.edge_rays(e) {
                         let ray = &self.rays[r];
-                        let s = map_pt(ray.anchor);
+                        let (s, t) = (map_pt(ray.anchor), Pt::Exact(&ray.end.point));
                         if !self.groups[g].rays.contains(&r)
-                            || !on_closed_segment(&s, &ray.end.point, pa)
-                            || !on_closed_segment(&s, &ray.end.point, pb)
+                            || !geo.on_closed_segment(s, t, pa)
+                            || !geo.on_closed_segment(s, t, pb)
                         {
                             return Err(format!("edge {e}: not covered by ray {r}"));
                         }
@@ -137,6 +143,7 @@ impl Arrangement {
             }
         }
         // The outer face: map edges only, area −area(M).
+        let points = self.points();
         let outer = self.outer_face();
         let outer_hs = self.face_half_edges(outer);
         if let Some(h) = outer_hs
@@ -151,11 +158,13 @@ impl Arrangement {
             .into_iter()
             .map(|v| &points[v])
             .collect();
-        if area_twice_rat(&ring) != -map_area.clone() {
+        if area_twice_rat(&ring) != -map_area {
             return Err("outer face: area is not −area(M)".to_string());
         }
-        // Cells: convex, counter-clockwise, positive area; areas sum up.
-        let mut total = Rational::new();
+        // Cells: convex, counter-clockwise, positive area. (That their
+        // areas sum to area(M) needs no test: every half-edge lies on one
+        // face and its twin runs the other way, so the signed areas of all
+        // faces sum to 0 and the cells' to minus the outer face's.)
         for f in self.cells() {
             let vs = self.face_vertices(f);
             let mut sorted = vs.clone();
@@ -164,21 +173,23 @@ impl Arrangement {
             if sorted.len() != vs.len() {
                 return Err(format!("face {f}: a vertex repeats on its boundary"));
             }
-            let ring: Vec<&RatPoint> = vs.iter().map(|&v| &points[v]).collect();
-            let k = ring.len();
+            let k = vs.len();
+            let at = |i: usize| Pt::Vertex(vs[i % k]);
+            let mut strict = false;
             for i in 0..k {
-                let (a, b, c) = (ring[i], ring[(i + 1) % k], ring[(i + 2) % k]);
-                let turn = orientation_rat(a, b, c);
+                let (a, b, c) = (at(i), at(i + 1), at(i + 2));
+                let turn = geo.orientation(a, b, c);
+                strict |= turn == Orientation::CounterClockwise;
                 let ok = turn == Orientation::CounterClockwise
-                    || (turn == Orientation::Collinear && on_closed_segment(a, c, b));
+                    || (turn == Orientation::Collinear && geo.on_closed_segment(a, c, b));
                 if !ok {
                     return Err(format!(
                         "face {f}: not convex (turn at vertex {})",
                         vs[(i + 1) % k]
                     ));
                 }
-                for (j, p) in ring.iter().enumerate() {
-                    if orientation_rat(a, b, p) == Orientation::Clockwise {
+                for j in 0..k {
+                    if geo.orientation(a, b, at(j)) == Orientation::Clockwise {
                         return Err(format!(
                             "face {f}: not convex (vertex {} right of its edge {} → {})",
                             vs[j],
@@ -188,16 +199,11 @@ impl Arrangement {
                     }
                 }
             }
-            let area = area_twice_rat(&ring);
-            if area <= 0 {
-                return Err(format!("face {f}: area {area} ≤ 0"));
+            // Convex and counter-clockwise (every vertex left of or on every
+            // edge): the area is positive iff some turn is strict.
+            if !strict {
+                return Err(format!("face {f}: area 0"));
             }
-            total += area;
-        }
-        if total != map_area {
-            return Err(format!(
-                "cells' areas sum to {total}, not area(M) {map_area}"
-            ));
         }
         self.check_no_crossings()
     }
@@ -205,18 +211,24 @@ impl Arrangement {
     /// No vertex in an edge's relative interior; no two edges cross or
     /// overlap. Candidates by integer bounding boxes, sorted by x.
     fn check_no_crossings(&self) -> Result<(), String> {
-        let points = self.points();
+        let geo = Geo { arr: self };
         let ends = |e: usize| (self.half_edges[2 * e].origin, self.dest(2 * e));
+        let vboxes: Vec<[i128; 4]> = (0..self.vertices.len()).map(|v| geo.bbox(v)).collect();
         let eboxes: Vec<[i128; 4]> = (0..self.edges.len())
             .map(|e| {
                 let (a, b) = ends(e);
-                bbox([&points[a], &points[b]])
+                let (p, q) = (&vboxes[a], &vboxes[b]);
+                [
+                    p[0].min(q[0]),
+                    p[1].min(q[1]),
+                    p[2].max(q[2]),
+                    p[3].max(q[3]),
+                ]
             })
             .collect();
-        let vboxes: Vec<[i128; 4]> = points.iter().map(|p| bbox([p])).collect();
         // A point's box is at most 1 wide: sort by xmin and scan from
         // xmin ≥ eb[0] − 1 while xmin ≤ eb[2].
-        let mut vorder: Vec<usize> = (0..points.len()).collect();
+        let mut vorder: Vec<usize> = (0..vboxes.len()).collect();
         vorder.sort_by_key(|&v| vboxes[v][0]);
         for (e, eb) in eboxes.iter().enumerate() {
             let (a, b) = ends(e);
@@ -228,13 +240,13 @@ impl Arrangement {
                 if v == a || v == b || !boxes_meet(&vboxes[v], eb) {
                     continue;
                 }
-                if on_closed_segment(&points[a], &points[b], &points[v]) {
+                if geo.on_closed_segment(Pt::Vertex(a), Pt::Vertex(b), Pt::Vertex(v)) {
                     return Err(format!("vertex {v} lies in the interior of edge {e}"));
                 }
             }
         }
         let bad = meeting_pairs(&eboxes, |e, f| {
-            let why = self.edges_meet_badly(ends(e), ends(f))?;
+            let why = self.edges_meet_badly(&geo, ends(e), ends(f))?;
             Some(format!("edges {e} and {f} {why}"))
         });
         match bad.into_iter().next() {
@@ -246,10 +258,11 @@ impl Arrangement {
     /// Whether two edges meet other than in one shared end point.
     fn edges_meet_badly(
         &self,
+        geo: &Geo<'_>,
         (a, b): (usize, usize),
         (c, d): (usize, usize),
     ) -> Option<&'static str> {
-        let p = |v: usize| &self.points()[v];
+        let p = Pt::Vertex;
         let shared = [a, b].iter().filter(|x| **x == c || **x == d).count();
         match shared {
             2 => Some("are the same segment"),
@@ -258,12 +271,12 @@ impl Arrangement {
                 let x = if w == a { b } else { a };
                 let y = if w == c { d } else { c };
                 // Overlap iff x and y lie on one ray from w.
-                (orientation_rat(p(w), p(x), p(y)) == Orientation::Collinear
-                    && !on_closed_segment(p(x), p(y), p(w)))
+                (geo.orientation(p(w), p(x), p(y)) == Orientation::Collinear
+                    && !geo.on_closed_segment(p(x), p(y), p(w)))
                 .then_some("overlap")
             }
             _ => {
-                let o = |u: usize, v: usize, t: usize| orientation_rat(p(u), p(v), p(t));
+                let o = |u: usize, v: usize, t: usize| geo.orientation(p(u), p(v), p(t));
                 let (o1, o2, o3, o4) = (o(a, b, c), o(a, b, d), o(c, d, a), o(c, d, b));
                 let apart = |s: Orientation, t: Orientation| s == t && s != Orientation::Collinear;
                 if apart(o1, o2) || apart(o3, o4) {
@@ -273,13 +286,191 @@ impl Arrangement {
                     .iter()
                     .all(|&s| s == Orientation::Collinear)
                 {
-                    let overlap = on_closed_segment(p(a), p(b), p(c))
-                        || on_closed_segment(p(a), p(b), p(d))
-                        || on_closed_segment(p(c), p(d), p(a));
+                    let overlap = geo.on_closed_segment(p(a), p(b), p(c))
+                        || geo.on_closed_segment(p(a), p(b), p(d))
+                        || geo.on_closed_segment(p(c), p(d), p(a));
                     return overlap.then_some("overlap");
                 }
                 Some("cross")
             }
         }
+    }
+}
+
+/// A point the sanity check asks about: an arrangement vertex, a map
+/// vertex, or an exact point (a ray's end).
+#[derive(Clone, Copy)]
+enum Pt<'a> {
+    Vertex(usize),
+    Map(Point),
+    Exact(&'a RatPoint),
+}
+
+/// The sanity check's predicates: on `i128` homogeneous coordinates with
+/// every product checked, falling back to the GMP predicates of
+/// `wai_exact` and `crate::arrangement` when a value does not fit (so the
+/// answers are exact either way; a test compares the two paths).
+struct Geo<'a> {
+    arr: &'a Arrangement,
+}
+
+impl<'a> Geo<'a> {
+    fn small(&self, p: Pt<'_>) -> Option<[i128; 3]> {
+        match p {
+            Pt::Vertex(v) => self.arr.small[v],
+            Pt::Map(q) => Some([q.x, q.y, 1]),
+            Pt::Exact(q) => small_of(q),
+        }
+    }
+
+    fn exact<'b>(&'b self, p: Pt<'b>) -> std::borrow::Cow<'b, RatPoint> {
+        match p {
+            Pt::Vertex(v) => std::borrow::Cow::Borrowed(&self.arr.points()[v]),
+            Pt::Map(q) => std::borrow::Cow::Owned(RatPoint::from(q)),
+            Pt::Exact(q) => std::borrow::Cow::Borrowed(q),
+        }
+    }
+
+    fn equal(&self, a: Pt<'_>, b: Pt<'_>) -> bool {
+        match (self.small(a), self.small(b)) {
+            // Both in lowest terms with w > 0: equal points, equal triples.
+            (Some(x), Some(y)) => x == y,
+            _ => self.exact(a) == self.exact(b),
+        }
+    }
+
+    fn orientation(&self, a: Pt<'_>, b: Pt<'_>, c: Pt<'_>) -> Orientation {
+        if let (Some(a), Some(b), Some(c)) = (self.small(a), self.small(b), self.small(c)) {
+            if let Some(o) = orientation_small(a, b, c) {
+                return o;
+            }
+        }
+        orientation_rat(&self.exact(a), &self.exact(b), &self.exact(c))
+    }
+
+    /// Whether `p` lies on the closed segment `ab`.
+    fn on_closed_segment(&self, a: Pt<'_>, b: Pt<'_>, p: Pt<'_>) -> bool {
+        if self.orientation(a, b, p) != Orientation::Collinear {
+            return false;
+        }
+        if let (Some(a), Some(b), Some(p)) = (self.small(a), self.small(b), self.small(p)) {
+            if let Some(s) = toward_dot_sign(p, a, b) {
+                return s != Ordering::Greater;
+            }
+        }
+        on_closed_segment(&self.exact(a), &self.exact(b), &self.exact(p))
+    }
+
+    /// The order of `a` and `b` along the direction `d`.
+    fn along(&self, d: Vector, a: Pt<'_>, b: Pt<'_>) -> Ordering {
+        if let (Some([ax, ay, aw]), Some([bx, by, bw])) = (self.small(a), self.small(b)) {
+            // d·a − d·b has the sign of d·(a·bw − b·aw) (aw, bw > 0).
+            let s = || -> Option<i128> {
+                let ux = ax.checked_mul(bw)?.checked_sub(bx.checked_mul(aw)?)?;
+                let uy = ay.checked_mul(bw)?.checked_sub(by.checked_mul(aw)?)?;
+                d.x.checked_mul(ux)?.checked_add(d.y.checked_mul(uy)?)
+            };
+            if let Some(s) = s() {
+                return s.cmp(&0);
+            }
+        }
+        along(d, &self.exact(a)).cmp(&along(d, &self.exact(b)))
+    }
+
+    /// An integer box around vertex `v` (floors and ceilings).
+    fn bbox(&self, v: usize) -> [i128; 4] {
+        match self.arr.small[v] {
+            Some([x, y, w]) => {
+                let fl = |c: i128| c.div_euclid(w);
+                let ce = |c: i128| -(-c).div_euclid(w);
+                [fl(x), fl(y), ce(x), ce(y)]
+            }
+            None => bbox([&self.arr.points()[v]]),
+        }
+    }
+}
+
+/// The orientation of three points `[x, y, w]` (w > 0): the sign of the
+/// 3×3 determinant of their rows, in checked `i128`; `None` on overflow.
+fn orientation_small(a: [i128; 3], b: [i128; 3], c: [i128; 3]) -> Option<Orientation> {
+    let m = |u: i128, v: i128| u.checked_mul(v);
+    let minor = |i: usize, j: usize| m(b[i], c[j])?.checked_sub(m(b[j], c[i])?);
+    let det = m(a[0], minor(1, 2)?)?
+        .checked_sub(m(a[1], minor(0, 2)?)?)?
+        .checked_add(m(a[2], minor(0, 1)?)?)?;
+    Some(match det.cmp(&0) {
+        Ordering::Greater => Orientation::CounterClockwise,
+        Ordering::Less => Orientation::Clockwise,
+        Ordering::Equal => Orientation::Collinear,
+    })
+}
+
+/// The sign of (a − p)·(b − p) for points `[x, y, w]` (w > 0), in checked
+/// `i128`; `None` on overflow.
+fn toward_dot_sign(p: [i128; 3], a: [i128; 3], b: [i128; 3]) -> Option<Ordering> {
+    // (a − p) ∝ (ax·pw − px·aw, ay·pw − py·aw), scaled by aw·pw > 0.
+    let rel = |q: [i128; 3]| -> Option<(i128, i128)> {
+        Some((
+            q[0].checked_mul(p[2])?
+                .checked_sub(p[0].checked_mul(q[2])?)?,
+            q[1].checked_mul(p[2])?
+                .checked_sub(p[1].checked_mul(q[2])?)?,
+        ))
+    };
+    let (u, v) = (rel(a)?, rel(b)?);
+    Some(
+        u.0.checked_mul(v.0)?
+            .checked_add(u.1.checked_mul(v.1)?)?
+            .cmp(&0),
+    )
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The `i128` predicates agree with `wai_exact`'s on points of every
+    /// size, and decline past their range.
+    #[test]
+    fn small_predicates_agree_with_gmp() {
+        let mut rng = 0x2545_f491_4f6c_dd1du64;
+        let mut next = |bits: u32| {
+            rng ^= rng << 13;
+            rng ^= rng >> 7;
+            rng ^= rng << 17;
+            let v = (rng % (1u64 << bits.min(63))) as i128;
+            if rng & 1 == 0 {
+                v
+            } else {
+                -v
+            }
+        };
+        let (mut small, mut declined) = (0, 0);
+        for bits in [2u32, 8, 20, 30, 40, 45, 62] {
+            for _ in 0..400 {
+                let mut pt = || {
+                    let w = next(bits).abs().max(1);
+                    let p = RatPoint::from_i128(next(bits), next(bits), w).unwrap();
+                    (small_of(&p).unwrap(), p)
+                };
+                let (a, b, c) = (pt(), pt(), pt());
+                // Collinear triples too: c on the line through a and b.
+                let mid = RatPoint::midpoint(&a.1, &b.1);
+                let m = (small_of(&mid).unwrap_or([0, 0, 1]), mid);
+                for (x, y, z) in [(&a, &b, &c), (&a, &b, &m)] {
+                    match orientation_small(x.0, y.0, z.0) {
+                        Some(o) => {
+                            assert_eq!(o, orientation_rat(&x.1, &y.1, &z.1));
+                            small += 1;
+                        }
+                        None => declined += 1,
+                    }
+                }
+                if let Some(s) = toward_dot_sign(m.0, a.0, b.0) {
+                    assert_eq!(s != Ordering::Greater, on_closed_segment(&a.1, &b.1, &m.1));
+                }
+            }
+        }
+        assert!(small > 1000 && declined > 100, "{small} {declined}");
     }
 }

@@ -63,6 +63,13 @@ pub fn comb_parameters(map: &Map) -> Option<(u32, u32)> {
     let niches = r / 2;
     let chain = map.n().checked_sub(4 * niches + 2)?;
     let (niches, chain) = (u32::try_from(niches).ok()?, u32::try_from(chain).ok()?);
+    // The corridor's south wall runs from x = 0 to x = S·U: a cheap test
+    // before the family's map is generated.
+    let l = wai_gen::comb_layout(niches, chain);
+    let (lo, hi) = map.bounding_box();
+    if lo.x != 0 || hi.x != l.scale * l.u_max || chain < 2 {
+        return None;
+    }
     wai_gen::comb_convex_chain(niches, chain)
         .is_ok_and(|f| f.vertices() == map.vertices())
         .then_some((niches, chain))

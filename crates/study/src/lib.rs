@@ -37,6 +37,6 @@ pub mod wedge_counts;
 
 pub use profile::{Stage, StageTimes};
 pub use study::{
-    CellEdges, Embedded, EmbeddingPair, GapStructure, OverlappingPair, SkeletonPair, Study,
-    TouchingPair, Views, CROSS_SKELETON_MAX_N,
+    fresh_skeleton, CellEdges, Embedded, EmbeddingPair, FreshSkeleton, GapStructure,
+    OverlappingPair, SkeletonPair, Study, TouchingPair, Views, CROSS_SKELETON_MAX_N,
 };

@@ -25,6 +25,8 @@
 //! A viewpoint is kept only if it lies strictly inside the map (the thesis
 //! assumes p not on the boundary, sec. 3.4); duplicates are dropped.
 
+use std::cmp::Ordering;
+
 use rug::{Integer, Rational};
 use serde_json::{json, Value};
 use wai_exact::{
@@ -266,8 +268,36 @@ pub fn vertex_spurious_by_def(vp: &VisibilityPolygon, i: usize) -> bool {
 
 /// Whether `a` is strictly closer to `p` than `b` is (exact squared
 /// distances).
+///
+/// With homogeneous coordinates, `|a − p|² = |a·wp − p·wa|² / (wa·wp)²`, so
+/// the comparison is `|a·wp − p·wa|²·wb² < |b·wp − p·wb|²·wa²` in integers
+/// (the common factor wp² dropped); in `i128` when every value fits
+/// (checked), else in GMP.
 pub fn closer(p: &RatPoint, a: &RatPoint, b: &RatPoint) -> bool {
-    squared_distance(p, a) < squared_distance(p, b)
+    let small = || -> Option<bool> {
+        let t = |q: &RatPoint| Some([q.hx().to_i128()?, q.hy().to_i128()?, q.hw().to_i128()?]);
+        let (p, a, b) = (t(p)?, t(a)?, t(b)?);
+        let sq = |q: [i128; 3], w_other: i128| -> Option<i128> {
+            let ux = q[0]
+                .checked_mul(p[2])?
+                .checked_sub(p[0].checked_mul(q[2])?)?;
+            let uy = q[1]
+                .checked_mul(p[2])?
+                .checked_sub(p[1].checked_mul(q[2])?)?;
+            let d = ux.checked_mul(ux)?.checked_add(uy.checked_mul(uy)?)?;
+            d.checked_mul(w_other.checked_mul(w_other)?)
+        };
+        Some(sq(a, b[2])? < sq(b, a[2])?)
+    };
+    if let Some(c) = small() {
+        return c;
+    }
+    let sq = |q: &RatPoint, w_other: &Integer| -> Integer {
+        let ux = Integer::from(q.hx() * p.hw()) - Integer::from(p.hx() * q.hw());
+        let uy = Integer::from(q.hy() * p.hw()) - Integer::from(p.hy() * q.hw());
+        (Integer::from(&ux * &ux) + Integer::from(&uy * &uy)) * Integer::from(w_other * w_other)
+    };
+    sq(a, b.hw()) < sq(b, a.hw())
 }
 
 fn coords(q: &RatPoint) -> (Rational, Rational) {
@@ -277,11 +307,360 @@ fn coords(q: &RatPoint) -> (Rational, Rational) {
     )
 }
 
-fn squared_distance(a: &RatPoint, b: &RatPoint) -> Rational {
-    let ((ax, ay), (bx, by)) = (coords(a), coords(b));
-    let dx = ax - bx;
-    let dy = ay - by;
-    Rational::from(&dx * &dx) + Rational::from(&dy * &dy)
+/// The rational with the least denominator (then the least numerator in
+/// absolute value) strictly between `a` and `b` (`a < b`): the
+/// Stern–Brocot search by continued fractions, exact.
+///
+/// ```
+/// use rug::Rational;
+/// let q = |n: i64, d: i64| Rational::from((n, d));
+/// assert_eq!(wai_study::sample::simplest_between(&q(1, 3), &q(2, 3)), q(1, 2));
+/// assert_eq!(wai_study::sample::simplest_between(&q(-7, 2), &q(5, 1)), q(0, 1));
+/// assert_eq!(wai_study::sample::simplest_between(&q(3, 10), &q(1, 3)), q(4, 13));
+/// ```
+pub fn simplest_between(a: &Rational, b: &Rational) -> Rational {
+    simplest::<Rational>(a, b).expect("GMP does not overflow")
+}
+
+/// Exact rationals for the simple-point searches, in GMP ([`Rational`])
+/// or in `i128` ([`Frac`]); an operation answers `None` only when an
+/// `i128` would overflow.
+trait Q: Clone + Sized {
+    fn int(v: i128) -> Self;
+    fn add(&self, o: &Self) -> Option<Self>;
+    fn sub(&self, o: &Self) -> Option<Self>;
+    fn mul(&self, o: &Self) -> Option<Self>;
+    /// `self / o`, `o ≠ 0`.
+    fn div(&self, o: &Self) -> Option<Self>;
+    fn cmp(&self, o: &Self) -> Option<Ordering>;
+    fn floor(&self) -> Option<Self>;
+    fn is_zero(&self) -> bool;
+    /// The point `(x, y)`.
+    fn point(x: &Self, y: &Self) -> Option<RatPoint>;
+    /// The coordinates of `p`.
+    fn of(p: &RatPoint) -> Option<(Self, Self)>;
+}
+
+impl Q for Rational {
+    fn int(v: i128) -> Self {
+        Rational::from(v)
+    }
+    fn add(&self, o: &Self) -> Option<Self> {
+        Some(Rational::from(self + o))
+    }
+    fn sub(&self, o: &Self) -> Option<Self> {
+        Some(Rational::from(self - o))
+    }
+    fn mul(&self, o: &Self) -> Option<Self> {
+        Some(Rational::from(self * o))
+    }
+    fn div(&self, o: &Self) -> Option<Self> {
+        Some(Rational::from(self / o))
+    }
+    fn cmp(&self, o: &Self) -> Option<Ordering> {
+        Some(Ord::cmp(self, o))
+    }
+    fn floor(&self) -> Option<Self> {
+        Some(Rational::from(self.floor_ref()))
+    }
+    fn is_zero(&self) -> bool {
+        *self == 0
+    }
+    fn point(x: &Self, y: &Self) -> Option<RatPoint> {
+        let w = Integer::from(x.denom() * y.denom());
+        let hx = Integer::from(x.numer() * y.denom());
+        let hy = Integer::from(y.numer() * x.denom());
+        RatPoint::new(hx, hy, w)
+    }
+    fn of(p: &RatPoint) -> Option<(Self, Self)> {
+        Some(coords(p))
+    }
+}
+
+/// `n / d` with `d > 0` in lowest terms, in `i128`; every operation is
+/// checked, so a result is exact or absent.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Frac {
+    n: i128,
+    d: i128,
+}
+
+impl Frac {
+    fn new(n: i128, d: i128) -> Option<Frac> {
+        if d == 0 {
+            return None;
+        }
+        let g = gcd_i128(n, d);
+        let (n, d) = (n / g, d / g);
+        if d < 0 {
+            Some(Frac {
+                n: n.checked_neg()?,
+                d: d.checked_neg()?,
+            })
+        } else {
+            Some(Frac { n, d })
+        }
+    }
+}
+
+fn gcd_i128(a: i128, b: i128) -> i128 {
+    let (mut a, mut b) = (a.unsigned_abs(), b.unsigned_abs());
+    while b != 0 {
+        (a, b) = (b, a % b);
+    }
+    // a ≤ max(|n|, |d|) ≤ 2^127, and a divides a nonzero d: at most |d|.
+    i128::try_from(a.max(1)).unwrap_or(1)
+}
+
+impl Q for Frac {
+    fn int(v: i128) -> Self {
+        Frac { n: v, d: 1 }
+    }
+    fn add(&self, o: &Self) -> Option<Self> {
+        let n = self
+            .n
+            .checked_mul(o.d)?
+            .checked_add(o.n.checked_mul(self.d)?)?;
+        Frac::new(n, self.d.checked_mul(o.d)?)
+    }
+    fn sub(&self, o: &Self) -> Option<Self> {
+        let n = self
+            .n
+            .checked_mul(o.d)?
+            .checked_sub(o.n.checked_mul(self.d)?)?;
+        Frac::new(n, self.d.checked_mul(o.d)?)
+    }
+    fn mul(&self, o: &Self) -> Option<Self> {
+        Frac::new(self.n.checked_mul(o.n)?, self.d.checked_mul(o.d)?)
+    }
+    fn div(&self, o: &Self) -> Option<Self> {
+        Frac::new(self.n.checked_mul(o.d)?, self.d.checked_mul(o.n)?)
+    }
+    fn cmp(&self, o: &Self) -> Option<Ordering> {
+        Some(self.n.checked_mul(o.d)?.cmp(&o.n.checked_mul(self.d)?))
+    }
+    fn floor(&self) -> Option<Self> {
+        Some(Frac::int(self.n.div_euclid(self.d)))
+    }
+    fn is_zero(&self) -> bool {
+        self.n == 0
+    }
+    fn point(x: &Self, y: &Self) -> Option<RatPoint> {
+        RatPoint::from_i128(
+            x.n.checked_mul(y.d)?,
+            y.n.checked_mul(x.d)?,
+            x.d.checked_mul(y.d)?,
+        )
+    }
+    fn of(p: &RatPoint) -> Option<(Self, Self)> {
+        let w = p.hw().to_i128()?;
+        Some((
+            Frac::new(p.hx().to_i128()?, w)?,
+            Frac::new(p.hy().to_i128()?, w)?,
+        ))
+    }
+}
+
+/// [`simplest_between`] in any [`Q`]; `None` on `i128` overflow.
+fn simplest<T: Q>(a: &T, b: &T) -> Option<T> {
+    let one = T::int(1);
+    let f = a.floor()?;
+    // An integer strictly inside: the one nearest 0.
+    let above = f.add(&one)?;
+    if above.cmp(b)? == Ordering::Less {
+        let below = b.floor()?;
+        let below = if below.cmp(b)? == Ordering::Equal {
+            below.sub(&one)?
+        } else {
+            below
+        };
+        let zero = T::int(0);
+        return Some(if above.cmp(&zero)? == Ordering::Greater {
+            above
+        } else if below.cmp(&zero)? == Ordering::Less {
+            below
+        } else {
+            zero
+        });
+    }
+    // a and b in [f, f + 1]: f + 1 / (the simplest between 1/(b − f) and
+    // 1/(a − f)), with 1/0 read as +∞.
+    let (fa, fb) = (a.sub(&f)?, b.sub(&f)?);
+    let hi_inv = one.div(&fb)?;
+    let inner = if fa.is_zero() {
+        hi_inv.floor()?.add(&one)?
+    } else {
+        simplest(&hi_inv, &one.div(&fa)?)?
+    };
+    f.add(&one.div(&inner)?)
+}
+
+/// Two points inside the open convex polygon `ring` (counter-clockwise,
+/// positive area) with small denominators, so that queries at them stay on
+/// the integer fast paths: x1 the simplest rational strictly inside the
+/// polygon's x-range, y1 the simplest inside its vertical span at x1; x2
+/// the simplest between x1 and the right end, y2 likewise. `None` if the
+/// polygon has no interior (its x-range or a span is empty). Computed in
+/// `i128` fractions, or in GMP where those overflow (the same points).
+pub fn simple_interior_points(ring: &[RatPoint]) -> Option<[RatPoint; 2]> {
+    interior_points_in::<Frac>(ring, true)
+        .unwrap_or_else(|| {
+            interior_points_in::<Rational>(ring, true).expect("GMP does not overflow")
+        })
+        .map(|(p, q)| [p, q.expect("asked for")])
+}
+
+/// The first point of [`simple_interior_points`] alone.
+pub fn simple_interior_point(ring: &[RatPoint]) -> Option<RatPoint> {
+    interior_points_in::<Frac>(ring, false)
+        .unwrap_or_else(|| {
+            interior_points_in::<Rational>(ring, false).expect("GMP does not overflow")
+        })
+        .map(|(p, _)| p)
+}
+
+/// [`simple_interior_points`] in `T` (the second point only if `both`):
+/// `None` on overflow, `Some(None)` if the polygon has no interior.
+#[allow(clippy::type_complexity)]
+fn interior_points_in<T: Q>(
+    ring: &[RatPoint],
+    both: bool,
+) -> Option<Option<(RatPoint, Option<RatPoint>)>> {
+    let pts: Vec<(T, T)> = ring.iter().map(T::of).collect::<Option<_>>()?;
+    let k = pts.len();
+    if k == 0 {
+        return Some(None);
+    }
+    let (mut lo, mut hi) = (pts[0].0.clone(), pts[0].0.clone());
+    for p in &pts[1..] {
+        if p.0.cmp(&lo)? == Ordering::Less {
+            lo = p.0.clone();
+        }
+        if p.0.cmp(&hi)? == Ordering::Greater {
+            hi = p.0.clone();
+        }
+    }
+    if lo.cmp(&hi)? != Ordering::Less {
+        return Some(None);
+    }
+    // The open vertical span of the polygon at x (strictly inside x-range).
+    let span = |x: &T| -> Option<Option<(T, T)>> {
+        let mut span: Option<(T, T)> = None;
+        for i in 0..k {
+            let (a, b) = (&pts[i], &pts[(i + 1) % k]);
+            let (l, r) = if a.0.cmp(&b.0)? != Ordering::Greater {
+                (a, b)
+            } else {
+                (b, a)
+            };
+            let inside = l.0.cmp(x)? != Ordering::Greater && x.cmp(&r.0)? != Ordering::Greater;
+            if !inside || l.0.cmp(&r.0)? == Ordering::Equal {
+                continue;
+            }
+            let t = x.sub(&l.0)?.div(&r.0.sub(&l.0)?)?;
+            let y = r.1.sub(&l.1)?.mul(&t)?.add(&l.1)?;
+            span = Some(match span {
+                None => (y.clone(), y),
+                Some((ylo, yhi)) => {
+                    let ylo = if y.cmp(&ylo)? == Ordering::Less {
+                        y.clone()
+                    } else {
+                        ylo
+                    };
+                    let yhi = if y.cmp(&yhi)? == Ordering::Greater {
+                        y
+                    } else {
+                        yhi
+                    };
+                    (ylo, yhi)
+                }
+            });
+        }
+        Some(span.filter(|(ylo, yhi)| ylo.cmp(yhi) == Some(Ordering::Less)))
+    };
+    let at = |x: &T| -> Option<Option<RatPoint>> {
+        let Some((ylo, yhi)) = span(x)? else {
+            return Some(None);
+        };
+        Some(Some(T::point(x, &simplest(&ylo, &yhi)?)?))
+    };
+    let x1 = simplest(&lo, &hi)?;
+    let Some(p1) = at(&x1)? else {
+        return Some(None);
+    };
+    if !both {
+        return Some(Some((p1, None)));
+    }
+    let x2 = simplest(&x1, &hi)?;
+    Some(at(&x2)?.map(|p2| (p1, Some(p2))))
+}
+
+/// Three points of the open segment from `a` to `b` (distinct points on
+/// the line through the integer points `on.0` and `on.1`) with small
+/// denominators, in order from `a`: the simplest point inside it (by the
+/// coordinate that varies, then the line), and the simplest on each side
+/// of that one. Computed in `i128` fractions, or in GMP where those
+/// overflow (the same points).
+pub fn simple_segment_points(a: &RatPoint, b: &RatPoint, on: (Point, Point)) -> [RatPoint; 3] {
+    let v = segment_points_in::<Frac>(a, b, on, true).unwrap_or_else(|| {
+        segment_points_in::<Rational>(a, b, on, true).expect("GMP does not overflow")
+    });
+    [v[0].clone(), v[1].clone(), v[2].clone()]
+}
+
+/// The middle point of [`simple_segment_points`] alone.
+pub fn simple_segment_point(a: &RatPoint, b: &RatPoint, on: (Point, Point)) -> RatPoint {
+    segment_points_in::<Frac>(a, b, on, false)
+        .unwrap_or_else(|| {
+            segment_points_in::<Rational>(a, b, on, false).expect("GMP does not overflow")
+        })
+        .swap_remove(0)
+}
+
+/// [`simple_segment_points`] in `T` (only the middle one unless `all`):
+/// `None` on overflow.
+fn segment_points_in<T: Q>(
+    a: &RatPoint,
+    b: &RatPoint,
+    on: (Point, Point),
+    all: bool,
+) -> Option<Vec<RatPoint>> {
+    let (pa, pb) = (T::of(a)?, T::of(b)?);
+    let (p, q) = on;
+    let vertical = pa.0.cmp(&pb.0)? == Ordering::Equal;
+    // The varying coordinate u and the other as a function of it.
+    let (ua, ub) = if vertical {
+        (&pa.1, &pb.1)
+    } else {
+        (&pa.0, &pb.0)
+    };
+    let slope = if vertical {
+        None
+    } else {
+        Some(T::int(q.y.checked_sub(p.y)?).div(&T::int(q.x.checked_sub(p.x)?))?)
+    };
+    let point = |u: &T| -> Option<RatPoint> {
+        match &slope {
+            None => T::point(&pa.0, u),
+            Some(m) => {
+                let y = u.sub(&T::int(p.x))?.mul(m)?.add(&T::int(p.y))?;
+                T::point(u, &y)
+            }
+        }
+    };
+    let increasing = ua.cmp(ub)? == Ordering::Less;
+    let (lo, hi) = if increasing { (ua, ub) } else { (ub, ua) };
+    let mid = simplest(lo, hi)?;
+    if !all {
+        return Some(vec![point(&mid)?]);
+    }
+    let (first, last) = (simplest(lo, &mid)?, simplest(&mid, hi)?);
+    let (near_a, near_b) = if increasing {
+        (first, last)
+    } else {
+        (last, first)
+    };
+    Some(vec![point(&near_a)?, point(&mid)?, point(&near_b)?])
 }
 
 /// Whether vertex `i` of V_p is reflex in V_p (a clockwise turn).
@@ -312,6 +691,148 @@ mod tests {
         assert!(views.iter().any(|p| Integer::from(p.hw() % 7u32) == 0));
         // And not everything is a midpoint of two integer points.
         assert!(views.iter().any(|p| *p.hw() > 2));
+    }
+
+    #[test]
+    fn simplest_between_is_inside_and_simplest() {
+        let q = |n: i64, d: i64| Rational::from((n, d));
+        for (a, b) in [
+            (q(0, 1), q(1, 1)),
+            (q(-1, 1), q(0, 1)),
+            (q(-5, 3), q(-4, 3)),
+            (q(1, 1000), q(1, 999)),
+            (q(355, 113), q(22, 7)),
+            (q(7, 1), q(9, 1)),
+            (q(-9, 1), q(-7, 1)),
+        ] {
+            let s = simplest_between(&a, &b);
+            assert!(a < s && s < b, "{a} {s} {b}");
+            // No smaller denominator fits: brute force.
+            for d in 1..s.denom().to_u32().unwrap() {
+                let d = Rational::from(d);
+                let lo = Rational::from(&a * &d).floor() + 1u32;
+                assert!(Rational::from(&lo / &d) >= b, "{a} {b}: {lo}/{d} fits");
+            }
+        }
+    }
+
+    /// The `i128` fractions and GMP give the same points wherever the
+    /// former answer, and decline past their range.
+    #[test]
+    fn fractions_and_gmp_agree() {
+        let r = |x: i128, y: i128, w: i128| RatPoint::from_i128(x, y, w).unwrap();
+        let mut small = 0;
+        for scale in [1i128, 1 << 20, 1 << 40, 1 << 60] {
+            let ring = [
+                r(0, 0, 1),
+                r(1000 * scale, scale, 1000),
+                r(scale, 1000 * scale, 999),
+            ];
+            let big = interior_points_in::<Rational>(&ring, true).unwrap();
+            if let Some(f) = interior_points_in::<Frac>(&ring, true) {
+                assert_eq!(f, big);
+                small += 1;
+            }
+            let (a, b) = (r(3 * scale, scale, 7), r(6 * scale, 2 * scale, 5));
+            let on = (Point::new(0, 0), Point::new(3, 1));
+            let big = segment_points_in::<Rational>(&a, &b, on, true).unwrap();
+            if let Some(f) = segment_points_in::<Frac>(&a, &b, on, true) {
+                assert_eq!(f, big);
+            }
+        }
+        assert!(small >= 2, "{small}");
+        let q = |n: i128, d: i128| (Frac::new(n, d).unwrap(), Rational::from((n, d)));
+        for ((fa, ra), (fb, rb)) in [
+            (q(1, 3), q(2, 3)),
+            (q(-7, 2), q(5, 1)),
+            (q(3, 10), q(1, 3)),
+            (q(-5, 3), q(-4, 3)),
+            (q(1, 1000), q(1, 999)),
+            (q(355, 113), q(22, 7)),
+            (q(-9, 1), q(-7, 1)),
+        ] {
+            let f = simplest(&fa, &fb).unwrap();
+            let g = simplest_between(&ra, &rb);
+            assert_eq!(Rational::from((f.n, f.d)), g);
+        }
+    }
+
+    #[test]
+    fn simple_points_lie_inside() {
+        let r = |x: i64, y: i64, w: i64| {
+            RatPoint::new(Integer::from(x), Integer::from(y), Integer::from(w)).unwrap()
+        };
+        // A thin triangle.
+        let ring = [r(0, 0, 1), r(1000, 1, 1000), r(1, 1000, 999)];
+        let [p, q] = simple_interior_points(&ring).unwrap();
+        for x in [&p, &q] {
+            let inside = (0..3).all(|i| {
+                orientation_rat(&ring[i], &ring[(i + 1) % 3], x) == Orientation::CounterClockwise
+            });
+            assert!(inside, "{x}");
+        }
+        assert_ne!(p, q);
+        // A segment on the line through (0, 0) and (3, 1).
+        let (a, b) = (r(3, 1, 7), r(6, 2, 5));
+        let pts = simple_segment_points(&a, &b, (Point::new(0, 0), Point::new(3, 1)));
+        let line = (
+            RatPoint::from(Point::new(0, 0)),
+            RatPoint::from(Point::new(3, 1)),
+        );
+        for x in &pts {
+            assert_eq!(orientation_rat(&line.0, &line.1, x), Orientation::Collinear);
+        }
+        let xs: Vec<Rational> = pts.iter().map(|p| coords(p).0).collect();
+        assert!(coords(&a).0 < xs[0] && xs[0] < xs[1] && xs[1] < xs[2] && xs[2] < coords(&b).0);
+        // Vertical, from top to bottom.
+        let pts = simple_segment_points(
+            &r(2, 9, 1),
+            &r(2, 1, 1),
+            (Point::new(2, 0), Point::new(2, 5)),
+        );
+        let ys: Vec<Rational> = pts.iter().map(|p| coords(p).1).collect();
+        assert!(ys[0] > ys[1] && ys[1] > ys[2], "{ys:?}");
+        assert_eq!(pts[1], r(2, 2, 1));
+    }
+
+    #[test]
+    fn closer_agrees_with_rational_distances() {
+        let squared = |a: &RatPoint, b: &RatPoint| {
+            let ((ax, ay), (bx, by)) = (coords(a), coords(b));
+            let (dx, dy) = (ax - bx, ay - by);
+            Rational::from(&dx * &dx) + Rational::from(&dy * &dy)
+        };
+        let r = |x: i128, y: i128, w: i128| RatPoint::from_i128(x, y, w).unwrap();
+        let big = |x: i128, y: i128, w: i128| {
+            let s = Integer::from(1) << 80u32;
+            RatPoint::new(
+                Integer::from(x) * &s,
+                Integer::from(y) * &s,
+                Integer::from(w) * &s + 1u32,
+            )
+            .unwrap()
+        };
+        let pts = [
+            r(0, 0, 1),
+            r(3, 4, 1),
+            r(-5, 0, 1),
+            r(7, 9, 3),
+            r(1, 1, 1000),
+            big(3, 4, 1),
+            big(5, 0, 1),
+            big(-1, 2, 7),
+        ];
+        for p in &pts {
+            for a in &pts {
+                for b in &pts {
+                    assert_eq!(
+                        closer(p, a, b),
+                        squared(p, a) < squared(p, b),
+                        "{p} {a} {b}"
+                    );
+                }
+            }
+        }
     }
 
     #[test]

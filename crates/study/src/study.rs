@@ -12,6 +12,7 @@ use std::cell::{OnceCell, RefCell};
 use std::collections::{BTreeMap, HashMap, HashSet};
 use std::rc::Rc;
 
+use rustc_hash::FxHashMap;
 use wai_cells::{Arrangement, Decomposition, VisibilityRay};
 use wai_embed::intersection::{edge_type, EdgeType};
 use wai_embed::wedge::{classify_by_lines, embedding_wedge_lines, CellEdgeKind};
@@ -22,9 +23,10 @@ use wai_embed::{
     SkeletonRing, Witnesses,
 };
 use wai_exact::QPoint;
+use wai_exact::RatPoint;
 use wai_localize::Localizer;
 use wai_map::Map;
-use wai_visibility::{ConvexRegion, VisibilityIndex, VisibilityPolygon};
+use wai_visibility::{ConvexRegion, MapSkeleton, VisibilityIndex, VisibilityPolygon};
 
 use crate::profile::{StageTimes, Timer};
 use crate::sample;
@@ -34,6 +36,10 @@ pub struct Study<'m> {
     map: &'m Map,
     index: OnceCell<VisibilityIndex<'m>>,
     decomposition: OnceCell<Decomposition<'m>>,
+    /// The arrangement's sanity check, run once.
+    sanity: OnceCell<Result<(), String>>,
+    /// V*_p computed afresh, by the point p asked for.
+    fresh: RefCell<FxHashMap<RatPoint, Rc<FreshSkeleton>>>,
     /// By sample limit: V_p of [`sample::viewpoints`]`(map, limit)`.
     polygons: RefCell<BTreeMap<usize, Rc<Vec<VisibilityPolygon>>>>,
     /// By class of the decomposition: its skeleton's embeddings.
@@ -84,6 +90,11 @@ pub struct Study<'m> {
     /// The time each stage took.
     timer: Timer,
 }
+
+/// V*_p of a point p computed afresh (a visibility query and Def 3.7, not
+/// the decomposition's walk), in map terms (its embedding included); or
+/// why it cannot be built.
+pub type FreshSkeleton = Result<MapSkeleton, String>;
 
 /// (index in [`Study::overlapping_pairs`], (artificial edge, candidate
 /// edge) of the pair's embedding `a`, the same of `b`).
@@ -273,6 +284,8 @@ impl<'m> Study<'m> {
             map,
             index: OnceCell::new(),
             decomposition: OnceCell::new(),
+            sanity: OnceCell::new(),
+            fresh: RefCell::new(FxHashMap::default()),
             polygons: RefCell::new(BTreeMap::new()),
             embeddings: OnceCell::new(),
             witnesses: OnceCell::new(),
@@ -333,6 +346,36 @@ impl<'m> Study<'m> {
         self.decomposition.get_or_init(|| {
             self.timer
                 .stage("decomposition", || Decomposition::new(self.map))
+        })
+    }
+
+    /// The arrangement's layered sanity check (topology, then geometry:
+    /// `Arrangement::sanity_check`), run once: the verdict every checker
+    /// that reads the cells as faces of the true arrangement rests on.
+    pub fn arrangement_sanity(&self) -> &Result<(), String> {
+        self.sanity.get_or_init(|| {
+            let arr = self.arrangement();
+            self.timer.stage("sanity check", || arr.sanity_check())
+        })
+    }
+
+    /// V*_p of each of `points`, computed afresh by the study's visibility
+    /// index ([`VisibilityIndex::skeleton_at`]), each point once per study
+    /// (the cell checkers T3.3b and A3.6 sample many of the same points).
+    pub fn fresh_skeletons(&self, points: &[RatPoint]) -> Vec<Rc<FreshSkeleton>> {
+        let index = self.index();
+        self.timer.stage("fresh skeletons", || {
+            points
+                .iter()
+                .map(|p| {
+                    if let Some(s) = self.fresh.borrow().get(p) {
+                        return Rc::clone(s);
+                    }
+                    let s = Rc::new(fresh_skeleton(index, p));
+                    self.fresh.borrow_mut().insert(p.clone(), Rc::clone(&s));
+                    s
+                })
+                .collect()
         })
     }
 
@@ -963,6 +1006,11 @@ fn boundaries_meet(p: &[QPoint], q: &[QPoint]) -> bool {
             wai_embed::piece::segments_meet(&p[i], &p[(i + 1) % np], &q[j], &q[(j + 1) % nq])
         })
     })
+}
+
+/// V*_p at `p` in map terms, or why it cannot be built.
+pub fn fresh_skeleton(index: &VisibilityIndex<'_>, p: &RatPoint) -> FreshSkeleton {
+    index.skeleton_at(p).map_err(|e| e.to_string())
 }
 
 impl std::fmt::Debug for Study<'_> {

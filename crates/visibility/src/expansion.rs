@@ -9,7 +9,9 @@
 
 use crate::assemble::{assemble, fits_fast};
 use crate::locate::Grid;
+use crate::map_skeleton::{from_leaves, MapSkeleton, SkeletonAtError};
 use crate::polygon::{VisibilityError, VisibilityPolygon};
+use crate::skeleton::Skeleton;
 use crate::triangulation::{Across, Triangulation};
 use rug::Integer;
 use std::cmp::Ordering;
@@ -141,6 +143,12 @@ impl<'m> VisibilityIndex<'m> {
         self.map
     }
 
+    /// Bits of the largest map coordinate.
+    #[cfg(test)]
+    pub(crate) fn coord_bits(&self) -> u32 {
+        self.coord_bits
+    }
+
     pub fn triangulation(&self) -> &Triangulation {
         &self.triangulation
     }
@@ -153,6 +161,30 @@ impl<'m> VisibilityIndex<'m> {
     /// and cones are split only at vertices strictly inside them, so the
     /// result equals [`crate::reference::visibility_polygon`]'s.
     pub fn visibility_polygon(&self, p: &RatPoint) -> Result<VisibilityPolygon, VisibilityError> {
+        let leaves = self.leaves_at(p)?;
+        Ok(assemble(self.map, p, self.coord_bits, &leaves))
+    }
+
+    /// V*_p of an interior point p in map terms (Def 3.7): read off the
+    /// expansion without V_p's points when p's coordinates are small
+    /// ([`crate::map_skeleton`]), else from V_p and [`Skeleton::of`].
+    ///
+    /// # Edge cases
+    /// The same as [`VisibilityIndex::visibility_polygon`]'s; the result
+    /// equals `MapSkeleton::of(&Skeleton::of(map, &V_p)?)` for every p.
+    pub fn skeleton_at(&self, p: &RatPoint) -> Result<MapSkeleton, SkeletonAtError> {
+        let leaves = self.leaves_at(p)?;
+        if let Some(sk) = from_leaves(self.map, p, self.coord_bits, &leaves) {
+            return Ok(sk?);
+        }
+        let vp = assemble(self.map, p, self.coord_bits, &leaves);
+        Ok(MapSkeleton::of(&Skeleton::of(self.map, &vp)?))
+    }
+
+    /// The expansion's leaves for p: counter-clockwise, the map vertex
+    /// whose direction starts each angular interval and the nearest map
+    /// edge on it.
+    pub(crate) fn leaves_at(&self, p: &RatPoint) -> Result<Vec<(usize, usize)>, VisibilityError> {
         let v = self.map.vertices();
         let frame = Frame::new(p, v, self.coord_bits);
         let tri = &self.triangulation;
@@ -192,8 +224,7 @@ impl<'m> VisibilityIndex<'m> {
                 hi: c0[(k + 1) % 3] as u32,
             })
             .collect();
-        let leaves = self.expand(&frame, stack);
-        Ok(assemble(self.map, p, self.coord_bits, &leaves))
+        Ok(self.expand(&frame, stack))
     }
 
     /// The view from map vertex `x` (its visibility polygon V_x, as the

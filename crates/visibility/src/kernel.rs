@@ -91,17 +91,17 @@ fn within_segment(a: &RatPoint, b: &RatPoint, q: &RatPoint) -> bool {
 
 /// The kernel of the polygon `ring` (counter-clockwise, integer vertices):
 /// every point that sees the whole polygon.
+///
+/// The clipping runs on `i128` homogeneous points ([`kernel_small`]) and
+/// falls back to GMP points when a product would overflow; both give the
+/// same region (tested).
 pub fn kernel_of_ring(ring: &[Point]) -> ConvexRegion {
-    let xs = ring.iter().map(|p| p.x);
-    let ys = ring.iter().map(|p| p.y);
-    let (x0, x1) = (xs.clone().min().unwrap_or(0) - 1, xs.max().unwrap_or(0) + 1);
-    let (y0, y1) = (ys.clone().min().unwrap_or(0) - 1, ys.max().unwrap_or(0) + 1);
-    let corners = [
-        Point::new(x0, y0),
-        Point::new(x1, y0),
-        Point::new(x1, y1),
-        Point::new(x0, y1),
-    ];
+    kernel_small(ring).unwrap_or_else(|| kernel_exact(ring))
+}
+
+/// [`kernel_of_ring`] with GMP points throughout.
+pub fn kernel_exact(ring: &[Point]) -> ConvexRegion {
+    let corners = grown_box(ring);
     // Each vertex with the line of the edge to the next vertex.
     let mut region: Vec<(RatPoint, Line)> = (0..4)
         .map(|i| {
@@ -121,6 +121,113 @@ pub fn kernel_of_ring(ring: &[Point]) -> ConvexRegion {
     ConvexRegion {
         vertices: region.into_iter().map(|(p, _)| p).collect(),
     }
+}
+
+/// The bounding box of `ring` grown by 1, counter-clockwise.
+fn grown_box(ring: &[Point]) -> [Point; 4] {
+    let xs = ring.iter().map(|p| p.x);
+    let ys = ring.iter().map(|p| p.y);
+    let (x0, x1) = (xs.clone().min().unwrap_or(0) - 1, xs.max().unwrap_or(0) + 1);
+    let (y0, y1) = (ys.clone().min().unwrap_or(0) - 1, ys.max().unwrap_or(0) + 1);
+    [
+        Point::new(x0, y0),
+        Point::new(x1, y0),
+        Point::new(x1, y1),
+        Point::new(x0, y1),
+    ]
+}
+
+/// A point `(x / w, y / w)` with `w > 0`, in lowest terms (as
+/// `wai_exact::construct_intersection_i128` gives them: equal points have
+/// equal triples).
+type Triple = [i128; 3];
+
+/// The side of the directed line `l` on which `p` lies, in checked `i128`
+/// arithmetic: `None` on overflow. The sign of
+/// `(b − a) × (p − a)·w` with `w > 0`.
+fn side_small(l: &Line, p: &Triple) -> Option<Side> {
+    use wai_exact::mul_checked;
+    let (a, b) = (l.a(), l.b());
+    let [x, y, w] = *p;
+    let (dx, dy) = (b.x.checked_sub(a.x)?, b.y.checked_sub(a.y)?);
+    let (ux, uy) = (
+        x.checked_sub(mul_checked(a.x, w)?)?,
+        y.checked_sub(mul_checked(a.y, w)?)?,
+    );
+    let s = mul_checked(dx, uy)?.checked_sub(mul_checked(dy, ux)?)?;
+    Some(match s.cmp(&0) {
+        std::cmp::Ordering::Greater => Side::Left,
+        std::cmp::Ordering::Less => Side::Right,
+        std::cmp::Ordering::Equal => Side::On,
+    })
+}
+
+/// [`kernel_of_ring`] on `i128` homogeneous points; `None` if some
+/// intermediate value does not fit (every product is checked, so the
+/// result, when there is one, is exact).
+pub fn kernel_small(ring: &[Point]) -> Option<ConvexRegion> {
+    let corners = grown_box(ring);
+    let mut region: Vec<(Triple, Line)> = (0..4)
+        .map(|i| {
+            let line = Line::new(corners[i], corners[(i + 1) % 4]).expect("a box of positive size");
+            ([corners[i].x, corners[i].y, 1], line)
+        })
+        .collect();
+    for i in 0..ring.len() {
+        let Some(cut) = Line::new(ring[i], ring[(i + 1) % ring.len()]) else {
+            continue;
+        };
+        region = clip_small(&region, &cut)?;
+        if region.is_empty() {
+            break;
+        }
+    }
+    let vertices = region
+        .into_iter()
+        .map(|([x, y, w], _)| RatPoint::from_i128(x, y, w))
+        .collect::<Option<Vec<RatPoint>>>()?;
+    Some(ConvexRegion { vertices })
+}
+
+/// [`clip`] on `i128` points; `None` on overflow.
+fn clip_small(region: &[(Triple, Line)], cut: &Line) -> Option<Vec<(Triple, Line)>> {
+    let m = region.len();
+    let sides = region
+        .iter()
+        .map(|(p, _)| side_small(cut, p))
+        .collect::<Option<Vec<Side>>>()?;
+    if sides.iter().all(|&s| s != Side::Right) {
+        return Some(region.to_vec());
+    }
+    let mut out: Vec<(Triple, Line)> = Vec::new();
+    for i in 0..m {
+        let j = (i + 1) % m;
+        let (p, line) = &region[i];
+        let (si, sj) = (sides[i], sides[j]);
+        if si != Side::Right {
+            let next_line = if si == Side::On && sj != Side::Left {
+                *cut
+            } else {
+                *line
+            };
+            out.push((*p, next_line));
+        }
+        let crossing = matches!(
+            (si, sj),
+            (Side::Left, Side::Right) | (Side::Right, Side::Left)
+        );
+        if crossing {
+            if let Some(x) = wai_exact::construct_intersection_i128(cut, line)? {
+                let next_line = if si == Side::Left { *cut } else { *line };
+                out.push((x, next_line));
+            }
+        }
+    }
+    out.dedup_by(|a, b| a.0 == b.0);
+    while out.len() > 1 && out.first().map(|f| f.0) == out.last().map(|l| l.0) {
+        out.pop();
+    }
+    Some(out)
 }
 
 /// Clip a convex region to the closed half-plane left of `cut`.
@@ -165,4 +272,52 @@ fn clip(region: &[(RatPoint, Line)], cut: &Line) -> Vec<(RatPoint, Line)> {
         out.pop();
     }
     out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The `i128` clipping gives the GMP clipping's region, on maps of
+    /// every kind, their sub-rings (skeleton-like polygons with collinear
+    /// and parallel edges) and large scales; beyond the range it declines.
+    #[test]
+    fn the_small_kernel_equals_the_exact_one() {
+        let mut rings: Vec<Vec<Point>> = Vec::new();
+        for kind in wai_gen::RANDOM_KINDS {
+            for seed in 0..6 {
+                let m = wai_gen::random(kind.id, kind.min_n.max(6) + seed as usize, seed).unwrap();
+                let v = m.vertices().to_vec();
+                // Star-shaped pieces: every third vertex dropped.
+                let sub: Vec<Point> = v
+                    .iter()
+                    .enumerate()
+                    .filter(|(i, _)| i % 3 != 2)
+                    .map(|(_, p)| *p)
+                    .collect();
+                rings.push(v);
+                rings.push(sub);
+            }
+        }
+        for f in wai_gen::FAMILIES {
+            rings.push(wai_gen::family(f.id, &[2]).unwrap().vertices().to_vec());
+        }
+        let (mut small, mut declined) = (0, 0);
+        for ring in &rings {
+            for scale in [1i128, 1 << 20, 1 << 40] {
+                let scaled: Vec<Point> = ring
+                    .iter()
+                    .map(|p| Point::new(p.x * scale, p.y * scale))
+                    .collect();
+                match kernel_small(&scaled) {
+                    Some(k) => {
+                        assert_eq!(k, kernel_exact(&scaled), "{scaled:?}");
+                        small += 1;
+                    }
+                    None => declined += 1,
+                }
+            }
+        }
+        assert!(small > 100 && declined > 0, "{small} {declined}");
+    }
 }

@@ -21,6 +21,7 @@ mod classify;
 mod expansion;
 mod kernel;
 mod locate;
+mod map_skeleton;
 mod polygon;
 pub mod reference;
 mod skeleton;
@@ -28,6 +29,7 @@ mod triangulation;
 
 pub use expansion::VisibilityIndex;
 pub use kernel::{kernel_of_ring, ConvexRegion};
+pub use map_skeleton::{MapSkeleton, SkeletonAtError};
 pub use polygon::{EdgeKind, OnMap, VisEdge, VisVertex, VisibilityError, VisibilityPolygon};
 pub use skeleton::{reconstruct, LineLabel, Skeleton, SkeletonEdge, SkeletonError, SkeletonKey};
 pub use triangulation::{Across, Triangulation};

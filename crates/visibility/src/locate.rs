@@ -69,8 +69,18 @@ impl Grid {
 
     /// The triangles that may hold `p`; empty if p is outside the box.
     pub(crate) fn candidates(&self, p: &RatPoint) -> &[u32] {
-        // floor((X/W − origin) / cell) = floor((X − origin·W) / (cell·W)).
+        // floor((X/W − origin) / cell) = floor((X − origin·W) / (cell·W)),
+        // in checked `i128` when the values fit, else in GMP.
+        let small = |num: &Integer, o: i128| -> Option<Option<usize>> {
+            let (num, w) = (num.to_i128()?, p.hw().to_i128()?);
+            let d = w.checked_mul(self.cell)?;
+            let q = num.checked_sub(w.checked_mul(o)?)?.div_euclid(d);
+            Some(usize::try_from(q).ok())
+        };
         let axis = |num: &Integer, o: i128| -> Option<usize> {
+            if let Some(q) = small(num, o) {
+                return q;
+            }
             let d = Integer::from(p.hw() * self.cell);
             let q = (num - Integer::from(p.hw() * o)).div_floor(d);
             q.to_usize()

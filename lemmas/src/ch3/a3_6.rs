@@ -34,12 +34,15 @@
 //! [`wai_cells::Arrangement::new`] and its
 //! [`wai_cells::BoundaryAssignment`], which implements the rule, with the
 //! nearest-anchor reading where collinear rays point one way); every
-//! skeleton is computed afresh by [`wai_visibility::VisibilityIndex`] and
-//! [`wai_visibility::Skeleton::of`]. Instances: the midpoint of every
-//! arrangement edge on a ray (one instance per edge), every arrangement
-//! vertex interior to the map. The skeleton of a 2-cell is taken at one
-//! interior point (T3.3b checks that it is the skeleton of the whole open
-//! cell). **Not covered:** points of ∂M (the thesis assumes viewpoints off
+//! skeleton is computed afresh by a visibility query (the study's
+//! [`Study::fresh_skeletons`], shared with T3.3b). Instances: one point
+//! of every arrangement edge on a ray (the simplest rational point of the
+//! open edge, [`super::t3_3b::edge_points`]; one instance per edge), every
+//! arrangement vertex interior to the map. The skeleton of a 2-cell is
+//! taken at one interior point (T3.3b checks that it is the skeleton of the
+//! whole open cell). Skeletons are compared in map terms
+//! ([`wai_visibility::MapSkeleton::same`]: same vertices and edge kinds,
+//! artificial edges on one line). **Not covered:** points of ∂M (the thesis assumes viewpoints off
 //! the boundary).
 //!
 //! ## Cases
@@ -56,11 +59,14 @@ use serde_json::{json, Value};
 use wai_cells::{Arrangement, Conflict, FaceId, Support};
 use wai_exact::RatPoint;
 use wai_map::Map;
-use wai_visibility::VisibilityIndex;
+use wai_visibility::MapSkeleton;
 
-use super::t3_3b::{embedded_json, interior_points, skeleton_at, Embedded};
+use std::rc::Rc;
+
+use super::t3_3b::{edge_point, fresh_json};
 use crate::framework::{Case, Checker, Known, Report, Violation};
 use wai_study::sample;
+use wai_study::FreshSkeleton;
 use wai_study::Study;
 
 const ID: &str = "A3.6";
@@ -137,7 +143,7 @@ pub const WRONG: &str = "wrong cell";
 
 /// Checks A3.6 on every ray piece and ray vertex of a map.
 fn check_study(study: &Study<'_>) -> Report {
-    check_arrangement(study.map(), study.arrangement(), study.index(), None)
+    check_arrangement(study, None)
 }
 
 /// The verdict on one piece, from its skeleton, its assigned cell's (`None`:
@@ -149,43 +155,52 @@ fn check_study(study: &Study<'_>) -> Report {
 /// fails on a lower-dimensional cell if no adjacent 2-cell has its skeleton,
 /// and is a [`WRONG_CELL`] otherwise.
 fn verdict(
-    at: &Result<Embedded, String>,
-    owner: Option<&Result<Embedded, String>>,
-    adjacent: &[&Result<Embedded, String>],
+    map: &Map,
+    at: &FreshSkeleton,
+    owner: Option<&FreshSkeleton>,
+    adjacent: &[&FreshSkeleton],
     lower_dim_kind: &'static str,
 ) -> Option<&'static str> {
-    if at.is_err() || owner.is_some_and(|o| o.is_err()) || adjacent.iter().any(|a| a.is_err()) {
+    let Ok(at) = at else {
+        return Some(NO_SKELETON);
+    };
+    if owner.is_some_and(|o| o.is_err()) || adjacent.iter().any(|a| a.is_err()) {
         return Some(NO_SKELETON);
     }
+    let same = |s: &FreshSkeleton| s.as_ref().is_ok_and(|s| s.same(map, at));
     match owner {
-        Some(o) if o == at => None,
-        Some(_) if adjacent.contains(&at) => Some(WRONG_CELL),
+        Some(o) if same(o) => None,
+        Some(_) if adjacent.iter().any(|a| same(a)) => Some(WRONG_CELL),
         _ => Some(lower_dim_kind),
     }
 }
 
+/// Whether two fresh skeletons are one skeleton in one embedding.
+fn same_skeleton(map: &Map, a: &FreshSkeleton, b: &FreshSkeleton) -> bool {
+    matches!((a, b), (Ok(a), Ok(b)) if a.same(map, b))
+}
+
 /// The check on a built arrangement. `plant` replaces the skeleton of
 /// one cell, for the planted-violation test.
-fn check_arrangement(
-    map: &Map,
-    arr: &Arrangement,
-    index: &VisibilityIndex<'_>,
-    plant: Option<(FaceId, Embedded)>,
-) -> Report {
+fn check_arrangement(study: &Study<'_>, plant: Option<(FaceId, MapSkeleton)>) -> Report {
+    let (map, arr) = (study.map(), study.arrangement());
+    let at = |p: &RatPoint| -> Rc<FreshSkeleton> {
+        Rc::clone(&study.fresh_skeletons(std::slice::from_ref(p))[0])
+    };
     let name = sample::map_name(map);
     let mut report = Report::new(ID);
     // The skeleton of each cell, at an interior point.
-    let mut cell: Vec<Result<Embedded, String>> =
-        vec![Err("the outer face".into()); arr.face_count()];
+    let outer: Rc<FreshSkeleton> = Rc::new(Err("the outer face".into()));
+    let mut cell: Vec<Rc<FreshSkeleton>> = vec![outer; arr.face_count()];
     for f in arr.cells() {
         let ring: Vec<RatPoint> = arr.face_points(f);
-        cell[f] = match interior_points(&ring) {
-            Some([p, _]) => skeleton_at(index, &p),
-            None => Err(format!("cell {f} has no strict corner")),
+        cell[f] = match sample::simple_interior_point(&ring) {
+            Some(p) => at(&p),
+            None => Rc::new(Err(format!("cell {f} has no interior point"))),
         };
     }
     if let Some((f, e)) = plant {
-        cell[f] = Ok(e);
+        cell[f] = Rc::new(Ok(e));
     }
     // Per edge: whether the rule reports a conflict there, and whether
     // its rays point both ways (a doorway), where the rule has no answer.
@@ -203,10 +218,10 @@ fn check_arrangement(
             continue;
         }
         let (a, b) = (arr.half_edge(2 * e).origin, arr.dest(2 * e));
-        let p = RatPoint::midpoint(arr.point(a), arr.point(b));
+        let p = edge_point(arr, e);
         let (f0, f1) = (arr.half_edge(2 * e).face, arr.half_edge(2 * e + 1).face);
         let owner = arr.owner_of_edge(e);
-        let at = skeleton_at(index, &p);
+        let at = at(&p);
         let conflict = conflict_here.is_some();
         report.count("ray edges", 1);
         report.count("conflicts", u64::from(conflict));
@@ -214,9 +229,10 @@ fn check_arrangement(
         // (a doorway): the rule has no answer, whatever the skeleton.
         let both_ways = conflict_here == Some(true);
         let v = verdict(
+            map,
             &at,
-            (!both_ways).then_some(&cell[owner]),
-            &[&cell[f0], &cell[f1]],
+            (!both_ways).then_some(&*cell[owner]),
+            &[&*cell[f0], &*cell[f1]],
             FAILS_ON_1_CELL,
         );
         let holds = if arr.edge_rays(e).len() > 1 {
@@ -238,9 +254,10 @@ fn check_arrangement(
                     "rays": rays_json(arr, arr.edge_rays(e)),
                     "conflict": conflict, "rays_point_both_ways": both_ways,
                     "owner": owner, "cells": [f0, f1],
-                    "matches_adjacent_cell": at.is_ok() && (cell[f0] == at || cell[f1] == at),
-                    "skeleton": embedded_json(&at),
-                    "owner_skeleton": embedded_json(&cell[owner]),
+                    "matches_adjacent_cell": same_skeleton(map, &at, &cell[f0])
+                        || same_skeleton(map, &at, &cell[f1]),
+                    "skeleton": fresh_json(map, &at),
+                    "owner_skeleton": fresh_json(map, &cell[owner]),
                 }),
             )
         }));
@@ -252,11 +269,17 @@ fn check_arrangement(
         let p = arr.point(v).clone();
         let incident = arr.faces_around(v);
         let owner = arr.owner_of_vertex(v);
-        let at = skeleton_at(index, &p);
-        let adjacent: Vec<&Result<Embedded, String>> = incident.iter().map(|&f| &cell[f]).collect();
+        let at = at(&p);
+        let adjacent: Vec<&FreshSkeleton> = incident.iter().map(|&f| &*cell[f]).collect();
         report.count("interior vertices", 1);
         report.count("conflicts", u64::from(owner.is_none()));
-        let verdict = verdict(&at, owner.map(|f| &cell[f]), &adjacent, FAILS_ON_0_CELL);
+        let verdict = verdict(
+            map,
+            &at,
+            owner.map(|f| &*cell[f]),
+            &adjacent,
+            FAILS_ON_0_CELL,
+        );
         count(&mut report, verdict, VERTEX);
         report.record(verdict.map(|kind| {
             Violation::with_data(
@@ -269,8 +292,8 @@ fn check_arrangement(
                     "kind": kind, "map": name, "vertex": v, "point": p.to_string(),
                     "point_file_units": sample::point_json(map, &p),
                     "owner": owner, "cells": incident,
-                    "matches_incident_cell": adjacent.iter().any(|a| at.is_ok() && **a == at),
-                    "skeleton": embedded_json(&at),
+                    "matches_incident_cell": adjacent.iter().any(|a| same_skeleton(map, &at, a)),
+                    "skeleton": fresh_json(map, &at),
                 }),
             )
         }));
@@ -333,16 +356,19 @@ mod tests {
     #[test]
     fn a_planted_cell_skeleton_is_reported() {
         let map = fixtures::l_room().0;
-        let arr = Arrangement::new(&map, &wai_cells::visibility_rays(&map));
-        let index = VisibilityIndex::new(&map);
+        let study = Study::new(&map);
+        let arr = study.arrangement();
         let f = (0..arr.edge_count())
             .find(|&e| matches!(arr.edge_support(e), Support::Rays(_)))
             .map(|e| arr.owner_of_edge(e))
             .unwrap();
         let ring: Vec<RatPoint> = arr.face_points(f);
-        let (o, mut key) = skeleton_at(&index, &interior_points(&ring).unwrap()[0]).unwrap();
-        key.offsets[0].0 += 1;
-        let r = check_arrangement(&map, &arr, &index, Some((f, (o, key))));
+        let p = sample::simple_interior_point(&ring).unwrap();
+        let mut sk = wai_study::fresh_skeleton(study.index(), &p).unwrap();
+        // Another skeleton: one more vertex.
+        sk.vertices.push(sk.vertices[0]);
+        sk.edges.push(sk.edges[0]);
+        let r = check_arrangement(&study, Some((f, sk)));
         assert!(!r.violations.is_empty());
         assert!(
             case(&r, FAILS_1) + case(&r, FAILS_0) + case(&r, WRONG) > 0,

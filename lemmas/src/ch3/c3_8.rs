@@ -17,20 +17,25 @@
 //! answer is missed: an answer q has V*_q = V*_p translated (Def 3.7 reads
 //! only V), so its origin is a map vertex where V*_p embeds (Lemma 3.4's
 //! embedding), and the embeddings of [`wai_study::Study`] are all of Def
-//! 3.11's (every map vertex tried as h(v0)). p itself is always an answer.
-//! V_p and the translates are computed only for skeletons with more than
-//! one embedding; with one, p is the only answer.
+//! 3.11's (every map vertex tried as h(v0)). A translate q whose skeleton,
+//! read off the expansion ([`Study::fresh_skeletons`]), is not p's (also
+//! read afresh) translated is no answer and its V_q is not built (Def 3.7 reads only the
+//! polygon and the viewpoint: equal polygons, translated with their
+//! viewpoints, have equal skeletons); every answer counted has had its V_q
+//! compared with V_p translated, vertex by vertex. p itself is always an
+//! answer. V_p and the translates are computed only for skeletons with
+//! more than one embedding; with one, p is the only answer.
 //!
 //! ## Cases
 //! Each query by its number A of answers: **one answer**, **several
 //! answers** (2 ≤ A < r) and **r answers** (A = r ≥ 2: the bound reached,
 //! approached with the progress A / r). Counts: `translates` (translates
-//! inside the map whose V_q was compared) and `kernel but no answer`
-//! (those whose V_q differs: points of another embedding that see
+//! inside the map, whose skeleton or V_q was compared) and `kernel but no
+//! answer` (those whose V_q differs: points of another embedding that see
 //! something else, Remark 3.4).
 
 use serde_json::json;
-use wai_exact::{locate_rat, Containment, RatPoint};
+use wai_exact::{locate_rat, Containment, Point, RatPoint};
 use wai_study::sample::{self, translate};
 use wai_study::Study;
 use wai_visibility::VisibilityPolygon;
@@ -85,9 +90,7 @@ pub fn check_points(study: &Study<'_>, points: &[CellPoint], r: usize) -> Report
         let hs = &study.embeddings()[p.class];
         let mut answers = vec![p.point.clone()];
         if hs.len() > 1 {
-            let vp = index
-                .visibility_polygon(&p.point)
-                .expect("a cell's point lies inside the map");
+            let mut vp: Option<VisibilityPolygon> = None;
             let o = v[p.origin];
             for h in hs.iter().filter(|h| h.embedding.origin != p.origin) {
                 let t = v[h.embedding.origin];
@@ -97,6 +100,23 @@ pub fn check_points(study: &Study<'_>, points: &[CellPoint], r: usize) -> Report
                     continue;
                 }
                 report.count("translates", 1);
+                // V*_q other than V*_p translated by t: V_q is not V_p + t
+                // (Def 3.7 reads only V_q and q's position). Both fresh.
+                let own = study.fresh_skeletons(&[p.point.clone(), q.clone()]);
+                if let (Ok(sp), Ok(sq)) = (&*own[0], &*own[1]) {
+                    let moved = v[sp.origin()];
+                    let same_skeleton = v[sq.origin()] == Point::new(moved.x + dx, moved.y + dy)
+                        && sq.key(map) == sp.key(map);
+                    if !same_skeleton {
+                        report.count("kernel but no answer", 1);
+                        continue;
+                    }
+                }
+                let vp = vp.get_or_insert_with(|| {
+                    index
+                        .visibility_polygon(&p.point)
+                        .expect("a cell's point lies inside the map")
+                });
                 let vq = index
                     .visibility_polygon(&q)
                     .expect("an interior point has a visibility polygon");

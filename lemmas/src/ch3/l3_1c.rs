@@ -93,6 +93,8 @@ fn check_study(study: &Study<'_>) -> Report {
 /// L3.1c on one V_p of `map`: every non-spurious edge is one instance.
 pub fn check_polygon(map: &Map, vp: &VisibilityPolygon) -> Report {
     let mut report = Report::new(ID);
+    let pts: Vec<RatPoint> = map.vertices().iter().map(|&x| RatPoint::from(x)).collect();
+    let turns = Turns::new(map, vp.viewpoint(), &pts);
     for i in 0..vp.len() {
         if edge_collinear_with_viewpoint(vp, i) {
             continue;
@@ -109,7 +111,7 @@ pub fn check_polygon(map: &Map, vp: &VisibilityPolygon) -> Report {
         {
             report.hit(COLLINEAR);
         }
-        let problem = check_edge(map, vp, i);
+        let problem = check_edge(map, &pts, &turns, vp, i);
         report.record(problem.map(|(what, extra)| {
             let mut data = sample::replay(map, vp);
             data.insert("edge".into(), json!(i));
@@ -201,7 +203,13 @@ impl EdgeLine {
 }
 
 /// The problem with non-spurious edge `i`, if any: a sentence and data.
-fn check_edge(map: &Map, vp: &VisibilityPolygon, i: usize) -> Option<(String, serde_json::Value)> {
+fn check_edge(
+    map: &Map,
+    pts: &[RatPoint],
+    turns: &Turns<'_>,
+    vp: &VisibilityPolygon,
+    i: usize,
+) -> Option<(String, serde_json::Value)> {
     let n = vp.len();
     let v = vp.vertices();
     let Some(k) = vp.edges()[i].map_edge else {
@@ -236,12 +244,21 @@ fn check_edge(map: &Map, vp: &VisibilityPolygon, i: usize) -> Option<(String, se
         ));
     }
     // 2. No other non-spurious edge on e'.
+    let (ea, eb) = (&pts[k], &pts[(k + 1) % map.n()]);
     for j in (0..n).filter(|&j| j != i && !edge_collinear_with_viewpoint(vp, j)) {
-        let mid = RatPoint::midpoint(&v[j].point, &v[(j + 1) % n].point);
         let named = vp.edges()[j].map_edge == Some(k);
-        let on = side_of_line_rat(&seg.line(), &mid) == Side::On && {
-            let l = line.param(&mid);
-            zero <= l && l <= one
+        // Both ends strictly on one side of e''s line: the midpoint too.
+        let (oa, ob) = (
+            orientation_rat(ea, eb, &v[j].point),
+            orientation_rat(ea, eb, &v[(j + 1) % n].point),
+        );
+        let off_line = oa == ob && oa != Orientation::Collinear;
+        let on = !off_line && {
+            let mid = RatPoint::midpoint(&v[j].point, &v[(j + 1) % n].point);
+            side_of_line_rat(&seg.line(), &mid) == Side::On && {
+                let l = line.param(&mid);
+                zero <= l && l <= one
+            }
         };
         if named || on {
             return Some((
@@ -252,7 +269,7 @@ fn check_edge(map: &Map, vp: &VisibilityPolygon, i: usize) -> Option<(String, se
     }
     // 3. p sees exactly open e of e', decided by the blocked intervals;
     //    a violation is located by probing with `sees`.
-    if visible_part_is(map, vp.viewpoint(), k, s, t) {
+    if visible_part_is(map, turns, k, s, t) {
         return None;
     }
     Some(
@@ -324,20 +341,89 @@ fn locate_by_cut_points(
     None
 }
 
+/// A direction from the viewpoint p: through map vertex `V(i)` or through
+/// the exact point `P(q)`.
+#[derive(Clone, Copy)]
+enum D<'a> {
+    V(usize),
+    P(&'a RatPoint),
+}
+
+/// Turns around the viewpoint p = (X, Y) / W.
+///
+/// Implementation note: when `|X|, |Y| < 2^61` and `W·|v| < 2^61` for every
+/// map vertex v (the bound of `wai_visibility`'s fast path), the
+/// directions `W·v − (X, Y)` are below 2^62 per coordinate and the cross
+/// product of two is below 2^125: exact in `i128`. They are computed once
+/// per polygon; turns involving another point (V_p's vertices on e') take
+/// [`orientation_rat`].
+struct Turns<'a> {
+    p: &'a RatPoint,
+    pts: &'a [RatPoint],
+    dirs: Option<Vec<(i128, i128)>>,
+}
+
+impl<'a> Turns<'a> {
+    fn new(map: &Map, p: &'a RatPoint, pts: &'a [RatPoint]) -> Turns<'a> {
+        const FAST: u32 = 61;
+        let bits = map
+            .vertices()
+            .iter()
+            .map(Point::magnitude_bits)
+            .max()
+            .unwrap_or(0);
+        let fits = p.hx().significant_bits() <= FAST
+            && p.hy().significant_bits() <= FAST
+            && p.hw().significant_bits() + bits <= FAST;
+        let dirs = fits.then(|| {
+            let (x, y, w) = (
+                p.hx().to_i128().expect("fits"),
+                p.hy().to_i128().expect("fits"),
+                p.hw().to_i128().expect("fits"),
+            );
+            map.vertices()
+                .iter()
+                .map(|v| (w * v.x - x, w * v.y - y))
+                .collect()
+        });
+        Turns { p, pts, dirs }
+    }
+
+    fn point(&self, d: D<'a>) -> &'a RatPoint {
+        match d {
+            D::V(i) => &self.pts[i],
+            D::P(q) => q,
+        }
+    }
+
+    /// The orientation of (p, x, y).
+    fn turn(&self, x: D<'a>, y: D<'a>) -> Orientation {
+        if let (Some(dirs), D::V(i), D::V(j)) = (&self.dirs, x, y) {
+            let (u, w) = (dirs[i], dirs[j]);
+            return match (u.0 * w.1 - u.1 * w.0).cmp(&0) {
+                Ordering::Greater => Orientation::CounterClockwise,
+                Ordering::Less => Orientation::Clockwise,
+                Ordering::Equal => Orientation::Collinear,
+            };
+        }
+        orientation_rat(self.p, self.point(x), self.point(y))
+    }
+}
+
 /// Directions from a viewpoint p inside the closed cone of a map edge
 /// e' = (A, B) (p not on its line), ordered from A's to B's.
 struct Cone<'a> {
-    p: &'a RatPoint,
-    a: &'a RatPoint,
-    b: &'a RatPoint,
+    turns: &'a Turns<'a>,
+    a: D<'a>,
+    b: D<'a>,
     /// The turn from A to B around p.
     sense: Orientation,
 }
 
-impl Cone<'_> {
+impl<'a> Cone<'a> {
     /// The order of the directions of `x` and `y` (both in the cone).
-    fn cmp(&self, x: &RatPoint, y: &RatPoint) -> Ordering {
-        match orientation_rat(self.p, x, y) {
+    fn cmp(&self, x: D<'a>, y: D<'a>) -> Ordering {
+        match self.turns.turn(x, y) {
             Orientation::Collinear => Ordering::Equal,
             o if o == self.sense => Ordering::Less,
             _ => Ordering::Greater,
@@ -346,13 +432,13 @@ impl Cone<'_> {
 
     /// Whether the direction of `x` lies in the closed cone from `lo` to
     /// `hi` (turning in the cone's sense, less than half a turn).
-    fn within(&self, lo: &RatPoint, hi: &RatPoint, x: &RatPoint) -> bool {
+    fn within(&self, lo: D<'a>, hi: D<'a>, x: D<'a>) -> bool {
         let ok = |o: Orientation| o == self.sense || o == Orientation::Collinear;
-        ok(orientation_rat(self.p, lo, x)) && ok(orientation_rat(self.p, x, hi))
+        ok(self.turns.turn(lo, x)) && ok(self.turns.turn(x, hi))
     }
 
     /// Whether the direction of `x` lies in the cone of e'.
-    fn holds(&self, x: &RatPoint) -> bool {
+    fn holds(&self, x: D<'a>) -> bool {
         self.within(self.a, self.b, x)
     }
 }
@@ -361,7 +447,7 @@ impl Cone<'_> {
 /// and whether the direction itself is blocked.
 #[derive(Clone, Copy)]
 struct End<'a> {
-    at: &'a RatPoint,
+    at: D<'a>,
     closed: bool,
 }
 
@@ -376,13 +462,13 @@ struct Blocked<'a> {
 /// Whether the closed directions covered by `blocked` include every
 /// direction of the cone from `from` to `to` (each end counted if its flag
 /// says so).
-fn covers(cone: &Cone<'_>, blocked: &[Blocked<'_>], from: End<'_>, to: End<'_>) -> bool {
+fn covers<'a>(cone: &Cone<'a>, blocked: &[Blocked<'a>], from: End<'a>, to: End<'a>) -> bool {
     // Everything before `reach.at` is covered; `reach.at` itself iff closed.
     let mut reach = End {
         at: from.at,
         closed: !from.closed,
     };
-    let done = |reach: End<'_>| match cone.cmp(reach.at, to.at) {
+    let done = |reach: End<'a>| match cone.cmp(reach.at, to.at) {
         Ordering::Greater => true,
         Ordering::Equal => reach.closed || !to.closed,
         Ordering::Less => false,
@@ -414,7 +500,7 @@ fn covers(cone: &Cone<'_>, blocked: &[Blocked<'_>], from: End<'_>, to: End<'_>) 
 /// Lemma 3.1(3) decided in one pass over the map edges: the points of map
 /// edge `k` that the viewpoint `p` sees are exactly those of the open
 /// segment (`s`, `t`), e's endpoints (on map edge k, in its direction)
-/// aside. p must not lie on the line of edge k.
+/// aside. p must not lie on the line of edge k. `turns` are around p.
 ///
 /// Every other map edge f (a closed segment) hides from p the points x of
 /// e' whose segment px meets f elsewhere than at x (sec. 2.2: grazing a
@@ -425,26 +511,26 @@ fn covers(cone: &Cone<'_>, blocked: &[Blocked<'_>], from: End<'_>, to: End<'_>) 
 /// direction, which it does not block), or the one direction of f if p is
 /// on f's line and f reaches nearer than e' in it. The part of e' that p
 /// sees is what no interval covers.
-fn visible_part_is(map: &Map, p: &RatPoint, k: usize, s: &RatPoint, t: &RatPoint) -> bool {
+fn visible_part_is(map: &Map, turns: &Turns<'_>, k: usize, s: &RatPoint, t: &RatPoint) -> bool {
     let v = map.vertices();
     let n = map.n();
-    let pts: Vec<RatPoint> = v.iter().map(|&x| RatPoint::from(x)).collect();
     let (ia, ib) = (k, (k + 1) % n);
-    let (a, b) = (&pts[ia], &pts[ib]);
-    let sense = orientation_rat(p, a, b);
-    let cone = Cone { p, a, b, sense };
-    // Which side of e''s line p lies on; a point strictly there is in front.
-    let p_side = orientation_rat(a, b, p);
+    let (a, b) = (D::V(ia), D::V(ib));
+    let sense = turns.turn(a, b);
+    let cone = Cone { turns, a, b, sense };
+    // Which side of e''s line p lies on (the orientation of (A, B, p), the
+    // cone's sense); a point strictly there is in front.
+    let p_side = sense;
     let in_front = |x: usize| orientation(v[ia], v[ib], v[x]) == p_side;
     let mut blocked: Vec<Blocked<'_>> = Vec::new();
     for j in (0..n).filter(|&j| j != k) {
         let (ic, id) = (j, (j + 1) % n);
-        let turn = orientation_rat(p, &pts[ic], &pts[id]);
+        let turn = turns.turn(D::V(ic), D::V(id));
         if turn == Orientation::Collinear {
             // p on f's line, off f: f is seen edge-on, in one direction.
-            if cone.holds(&pts[ic]) && (in_front(ic) || in_front(id)) {
+            if cone.holds(D::V(ic)) && (in_front(ic) || in_front(id)) {
                 let end = End {
-                    at: &pts[ic],
+                    at: D::V(ic),
                     closed: true,
                 };
                 blocked.push(Blocked { lo: end, hi: end });
@@ -452,7 +538,7 @@ fn visible_part_is(map: &Map, p: &RatPoint, k: usize, s: &RatPoint, t: &RatPoint
             continue;
         }
         let (first, second) = if turn == sense { (ic, id) } else { (id, ic) };
-        let (f0, f1) = (&pts[first], &pts[second]);
+        let (f0, f1) = (D::V(first), D::V(second));
         let lo = if cone.holds(f0) {
             first
         } else if cone.within(f0, f1, a) {
@@ -475,31 +561,32 @@ fn visible_part_is(map: &Map, p: &RatPoint, k: usize, s: &RatPoint, t: &RatPoint
             Some(_) => lo,
             None => lo,
         };
-        if shared.is_some() && cone.cmp(&pts[lo], &pts[hi]) == Ordering::Equal {
+        if shared.is_some() && cone.cmp(D::V(lo), D::V(hi)) == Ordering::Equal {
             continue;
         }
         // In front at the probe direction: an endpoint of f nearer than
-        // e', or an endpoint of e' behind f's line.
+        // e', or an endpoint of e' behind f's line (p's side of f's line
+        // is the orientation of (C, D, p), which is `turn`).
         let front = if probe == first || probe == second {
             in_front(probe)
         } else {
-            let f_side = orientation_rat(&pts[ic], &pts[id], p);
             let e_side = orientation(v[ic], v[id], v[probe]);
-            e_side != f_side && e_side != Orientation::Collinear
+            e_side != turn && e_side != Orientation::Collinear
         };
         if front {
             blocked.push(Blocked {
                 lo: End {
-                    at: &pts[lo],
+                    at: D::V(lo),
                     closed: shared != Some(lo),
                 },
                 hi: End {
-                    at: &pts[hi],
+                    at: D::V(hi),
                     closed: shared != Some(hi),
                 },
             });
         }
     }
+    let (s, t) = (D::P(s), D::P(t));
     // Nothing blocks a direction strictly between s and t.
     let meets_e = |j: &Blocked<'_>| match cone.cmp(j.lo.at, j.hi.at) {
         Ordering::Equal => {
@@ -573,6 +660,7 @@ mod tests {
         let (mut compared, mut hidden) = (0, 0);
         for map in &maps {
             let index = VisibilityIndex::new(map);
+            let pts: Vec<RatPoint> = map.vertices().iter().map(|&x| RatPoint::from(x)).collect();
             for p in wai_study::sample::viewpoints(map, 12) {
                 let vp = index.visibility_polygon(&p).unwrap();
                 let n = vp.len();
@@ -586,7 +674,7 @@ mod tests {
                     let (s, t) = (&vp.vertices()[i].point, &vp.vertices()[(i + 1) % n].point);
                     for (s, t) in [(s, t), (&a, &b), (&a, t), (s, &b)] {
                         let (ls, lt) = (line.param(s), line.param(t));
-                        let fast = visible_part_is(map, &p, k, s, t);
+                        let fast = visible_part_is(map, &Turns::new(map, &p, &pts), k, s, t);
                         let slow = locate_by_cut_points(map, &vp, k, &line, &ls, &lt).is_none();
                         assert_eq!(
                             fast,

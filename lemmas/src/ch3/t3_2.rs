@@ -20,7 +20,12 @@
 //!   V_q = V_p + (o − v0) (points, spurious flags and edge kinds) holds iff
 //!   V*_q = V*_p with origin o. When neither holds, q is a point of the
 //!   embedding's kernel that is no witness (Remark 3.4) and the instance
-//!   holds trivially;
+//!   holds trivially. V*_q is read off the expansion
+//!   ([`wai_visibility::VisibilityIndex::skeleton_at`], tested equal to
+//!   the skeleton of V_q); where its non-spurious vertices are not V*_p's
+//!   translated, V_q ≠ V_p + t follows (Def 3.4 and the canonical origin
+//!   depend on the polygon and the viewpoint alone) and V_q is not built;
+//!   otherwise V_q is built and compared;
 //! - **every translate onto another reflex map vertex**: the same test with
 //!   v0 moved onto each other reflex vertex of M (the only candidates for an
 //!   origin) that no sampled viewpoint of the group has as origin, whenever
@@ -120,12 +125,17 @@ pub fn check_viewpoints(study: &Study<'_>, viewpoints: usize) -> Report {
     let mut report = Report::new(ID);
     let mut groups: BTreeMap<SkeletonKey, Vec<(usize, Point)>> = BTreeMap::new();
     let vps = study.sampled_polygons(viewpoints);
+    let mut skeletons: Vec<Option<(Skeleton, SkeletonKey)>> = Vec::with_capacity(vps.len());
     for (k, vp) in vps.iter().enumerate() {
         let (r, skeleton) = rebuild(map, vp);
         report.absorb(r);
         report.hit(REBUILD);
-        if let Some(sk) = skeleton {
+        skeletons.push(skeleton.map(|sk| {
             let key = sk.key();
+            (sk, key)
+        }));
+        if let Some((sk, key)) = &skeletons[k] {
+            let key = key.clone();
             for (s, label) in key.labels.iter().enumerate() {
                 let Some(l) = label else { continue };
                 let ends = [key.offsets[s], key.offsets[(s + 1) % key.offsets.len()]];
@@ -151,8 +161,9 @@ pub fn check_viewpoints(study: &Study<'_>, viewpoints: usize) -> Report {
         origins.dedup();
         for &(k, own) in members {
             // Other embeddings of the skeleton met in the sample.
+            let (sk, key) = skeletons[k].as_ref().expect("grouped by its skeleton");
             for &o in origins.iter().filter(|&&o| o != own) {
-                let (r, outcome) = check_translated(index, &vps[k], o, true);
+                let (r, outcome) = check_translated_with(index, &vps[k], sk, key, o, true);
                 report.absorb(r);
                 report.hit(ACROSS);
                 if let Some(case) = direction(outcome) {
@@ -166,7 +177,7 @@ pub fn check_viewpoints(study: &Study<'_>, viewpoints: usize) -> Report {
                 .iter()
                 .filter(|&&o| o != own && !origins.contains(&o))
             {
-                let (r, outcome) = check_translated(index, &vps[k], o, false);
+                let (r, outcome) = check_translated_with(index, &vps[k], sk, key, o, false);
                 report.absorb(r);
                 if let Some(case) = direction(outcome) {
                     report.hit(TRANSLATE);
@@ -289,9 +300,32 @@ pub fn check_translated(
     target: Point,
     embedding: bool,
 ) -> (Report, Option<bool>) {
+    let sk = Skeleton::of(index.map(), vp).expect("the caller built this skeleton");
+    let key = sk.key();
+    check_translated_with(index, vp, &sk, &key, target, embedding)
+}
+
+/// [`check_translated`] with V*_p and its key already built.
+///
+/// V*_q is read off the expansion
+/// ([`VisibilityIndex::skeleton_at`], tested equal to [`Skeleton::of`] on
+/// V_q). Where it differs from V*_p with origin `target` and its
+/// non-spurious vertices are not V*_p's translated, V_q ≠ V_p + t follows
+/// without building V_q: Def 3.4 makes a vertex spurious by the polygon
+/// and the viewpoint alone, and the canonical origin is chosen by the
+/// polygon alone, so equal polygons (with the viewpoint) have the same
+/// non-spurious vertices from the same origin. Otherwise V_q is built and
+/// compared vertex by vertex.
+fn check_translated_with(
+    index: &VisibilityIndex<'_>,
+    vp: &VisibilityPolygon,
+    sk: &Skeleton,
+    key: &SkeletonKey,
+    target: Point,
+    embedding: bool,
+) -> (Report, Option<bool>) {
     let map = index.map();
     let mut report = Report::new(ID);
-    let sk = Skeleton::of(map, vp).expect("the caller built this skeleton");
     let o = sk.origin();
     let (dx, dy) = (target.x - o.x, target.y - o.y);
     let q = translate(vp.viewpoint(), dx, dy);
@@ -313,11 +347,27 @@ pub fn check_translated(
         )));
         return (report, Some(false));
     }
+    let v = map.vertices();
+    let fresh = index.skeleton_at(&q).ok();
+    let same_skeleton = fresh
+        .as_ref()
+        .is_some_and(|f| v[f.origin()] == target && f.is(map, f.origin(), key));
+    let same_support = fresh.as_ref().is_some_and(|f| {
+        f.vertices.len() == sk.vertices().len()
+            && f.vertices
+                .iter()
+                .zip(sk.vertices())
+                .all(|(&m, u)| v[m] == Point::new(u.x + dx, u.y + dy))
+    });
+    if !same_skeleton && !same_support && fresh.is_some() {
+        // Different non-spurious vertices: different polygons, as the
+        // theorem's "only if" requires.
+        report.record(None);
+        return (report, Some(false));
+    }
     let vq = index
         .visibility_polygon(&q)
         .expect("an interior point has a visibility polygon");
-    let same_skeleton =
-        Skeleton::of(map, &vq).is_ok_and(|skq| skq.origin() == target && skq.key() == sk.key());
     let translated: Vec<RatPoint> = vp.points().iter().map(|x| translate(x, dx, dy)).collect();
     let same_polygon = vq.points() == translated
         && vq

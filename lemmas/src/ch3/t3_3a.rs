@@ -31,9 +31,11 @@
 //! crossing inside M, which cannot be reflex because rays run from ∂M to
 //! ∂M); and, among them, **straight vertex** (a 180° turn).
 
+use std::cmp::Ordering;
+
 use rug::Rational;
 use serde_json::json;
-use wai_exact::{orientation_rat, Orientation, RatPoint};
+use wai_exact::RatPoint;
 
 use crate::framework::{Case, Checker, Report, Violation};
 use wai_study::sample;
@@ -70,7 +72,7 @@ fn check_study(study: &Study<'_>) -> Report {
     let map = study.map();
     let arr = study.arrangement();
     let mut report = Report::new(ID);
-    if let Err(e) = arr.sanity_check() {
+    if let Err(e) = study.arrangement_sanity() {
         report.record(Some(Violation::with_data(
             format!(
                 "map {}: the arrangement fails its sanity check: {e}",
@@ -94,29 +96,96 @@ fn check_study(study: &Study<'_>) -> Report {
     report
 }
 
-/// The upper or lower half of the directions, for the angular order from
-/// the positive x axis: 0 for angles in [0, π), 1 for [π, 2π).
-fn half(d: &(Rational, Rational)) -> u8 {
-    if d.1 > 0 || (d.1 == 0 && d.0 > 0) {
-        0
-    } else {
-        1
+/// The directions of a cell's edges (from vertex i to i + 1), each scaled
+/// by a positive factor (signs of cross and dot products, and the angular
+/// order, are those of the true directions).
+///
+/// Implementation note: for points `(x, y) / w` (w > 0) the direction
+/// from a to b scaled by `wa·wb` is `(xb·wa − xa·wb, yb·wa − ya·wb)`. When
+/// every component is below 2^62 the cross and dot products of two are
+/// below 2^125: exact in `i128` (`Small`). Otherwise the rational
+/// differences (`Big`).
+enum Dirs {
+    Small(Vec<(i128, i128)>),
+    Big(Vec<(Rational, Rational)>),
+}
+
+impl Dirs {
+    fn of(ring: &[RatPoint]) -> Dirs {
+        let k = ring.len();
+        let small = || -> Option<Vec<(i128, i128)>> {
+            let t: Vec<[i128; 3]> = ring
+                .iter()
+                .map(|p| Some([p.hx().to_i128()?, p.hy().to_i128()?, p.hw().to_i128()?]))
+                .collect::<Option<_>>()?;
+            let fits = |c: i128| c.unsigned_abs() < 1 << 62;
+            (0..k)
+                .map(|i| {
+                    let (a, b) = (t[i], t[(i + 1) % k]);
+                    let dx = b[0]
+                        .checked_mul(a[2])?
+                        .checked_sub(a[0].checked_mul(b[2])?)?;
+                    let dy = b[1]
+                        .checked_mul(a[2])?
+                        .checked_sub(a[1].checked_mul(b[2])?)?;
+                    (fits(dx) && fits(dy)).then_some((dx, dy))
+                })
+                .collect()
+        };
+        match small() {
+            Some(d) => Dirs::Small(d),
+            None => Dirs::Big(
+                (0..k)
+                    .map(|i| {
+                        let (a, b) = (coords(&ring[i]), coords(&ring[(i + 1) % k]));
+                        (b.0 - a.0, b.1 - a.1)
+                    })
+                    .collect(),
+            ),
+        }
     }
-}
 
-fn cross(a: &(Rational, Rational), b: &(Rational, Rational)) -> Rational {
-    Rational::from(&a.0 * &b.1) - Rational::from(&a.1 * &b.0)
-}
+    fn is_zero(&self, i: usize) -> bool {
+        match self {
+            Dirs::Small(d) => d[i] == (0, 0),
+            Dirs::Big(d) => d[i].0 == 0 && d[i].1 == 0,
+        }
+    }
 
-fn dot(a: &(Rational, Rational), b: &(Rational, Rational)) -> Rational {
-    Rational::from(&a.0 * &b.0) + Rational::from(&a.1 * &b.1)
-}
+    fn cross(&self, i: usize, j: usize) -> Ordering {
+        match self {
+            Dirs::Small(d) => (d[i].0 * d[j].1 - d[i].1 * d[j].0).cmp(&0),
+            Dirs::Big(d) => {
+                (Rational::from(&d[i].0 * &d[j].1) - Rational::from(&d[i].1 * &d[j].0)).cmp0()
+            }
+        }
+    }
 
-/// Whether direction `a` comes strictly before `b` counter-clockwise from
-/// the positive x axis.
-fn angle_less(a: &(Rational, Rational), b: &(Rational, Rational)) -> bool {
-    let (ha, hb) = (half(a), half(b));
-    ha < hb || (ha == hb && cross(a, b) > 0)
+    fn dot(&self, i: usize, j: usize) -> Ordering {
+        match self {
+            Dirs::Small(d) => (d[i].0 * d[j].0 + d[i].1 * d[j].1).cmp(&0),
+            Dirs::Big(d) => {
+                (Rational::from(&d[i].0 * &d[j].0) + Rational::from(&d[i].1 * &d[j].1)).cmp0()
+            }
+        }
+    }
+
+    /// The upper or lower half of the directions, for the angular order
+    /// from the positive x axis: 0 for angles in [0, π), 1 for [π, 2π).
+    fn half(&self, i: usize) -> u8 {
+        let upper = match self {
+            Dirs::Small(d) => d[i].1 > 0 || (d[i].1 == 0 && d[i].0 > 0),
+            Dirs::Big(d) => d[i].1 > 0 || (d[i].1 == 0 && d[i].0 > 0),
+        };
+        u8::from(!upper)
+    }
+
+    /// Whether direction `i` comes strictly before `j` counter-clockwise
+    /// from the positive x axis.
+    fn angle_less(&self, i: usize, j: usize) -> bool {
+        let (hi, hj) = (self.half(i), self.half(j));
+        hi < hj || (hi == hj && self.cross(i, j) == Ordering::Greater)
+    }
 }
 
 fn coords(p: &RatPoint) -> (Rational, Rational) {
@@ -135,30 +204,27 @@ fn coords(p: &RatPoint) -> (Rational, Rational) {
 pub fn check_cell(map_name: &str, cell: usize, ring: &[RatPoint]) -> Report {
     let mut report = Report::new(ID);
     let k = ring.len();
-    let dirs: Vec<(Rational, Rational)> = (0..k)
-        .map(|i| {
-            let (a, b) = (coords(&ring[i]), coords(&ring[(i + 1) % k]));
-            (b.0 - a.0, b.1 - a.1)
-        })
-        .collect();
+    let dirs = Dirs::of(ring);
     let mut reflex = Vec::new();
     let mut spikes = Vec::new();
     let mut repeated = Vec::new();
     let mut descents = 0usize;
-    for i in 0..k {
-        let (prev, cur, next) = (&ring[(i + k - 1) % k], &ring[i], &ring[(i + 1) % k]);
-        let (din, dout) = (&dirs[(i + k - 1) % k], &dirs[i]);
-        if (din.0 == 0 && din.1 == 0) || (dout.0 == 0 && dout.1 == 0) {
+    for (i, cur) in ring.iter().enumerate() {
+        let (din, dout) = ((i + k - 1) % k, i);
+        if dirs.is_zero(din) || dirs.is_zero(dout) {
             repeated.push(cur.to_string());
             continue;
         }
-        match orientation_rat(prev, cur, next) {
-            Orientation::Clockwise => reflex.push(cur.to_string()),
-            Orientation::Collinear if dot(din, dout) < 0 => spikes.push(cur.to_string()),
-            Orientation::Collinear => report.hit(STRAIGHT),
-            Orientation::CounterClockwise => {}
+        // The turn at cur: the orientation of (prev, cur, next).
+        match dirs.cross(din, dout) {
+            Ordering::Less => reflex.push(cur.to_string()),
+            Ordering::Equal if dirs.dot(din, dout) == Ordering::Less => {
+                spikes.push(cur.to_string())
+            }
+            Ordering::Equal => report.hit(STRAIGHT),
+            Ordering::Greater => {}
         }
-        if angle_less(dout, din) {
+        if dirs.angle_less(dout, din) {
             descents += 1;
         }
     }
@@ -248,6 +314,37 @@ mod tests {
         );
         assert_eq!((r.examined, r.violations.len()), (1, 0));
         assert_eq!(r.cases.get(STRAIGHT), Some(&1));
+    }
+
+    /// The `i128` directions and the rational ones give the same verdicts:
+    /// the planted rings again with coordinates beyond 2^62.
+    #[test]
+    fn large_coordinates_take_the_rational_path_with_the_same_verdicts() {
+        let rings = [
+            ring(&[(0, 0), (1, 0), (2, 0), (2, 2), (0, 2)]),
+            ring(&[(0, 0), (4, 0), (4, 2), (2, 2), (2, 4), (0, 4)]),
+            ring(&[(0, 4), (-3, -4), (4, 1), (-4, 1), (3, -4)]),
+            ring(&[(0, 0), (2, 0), (2, 2), (2, 3), (2, 2), (0, 2)]),
+        ];
+        for r in &rings {
+            let big: Vec<RatPoint> = r
+                .iter()
+                .map(|p| {
+                    let s = rug::Integer::from(1) << 70u32;
+                    RatPoint::new(
+                        rug::Integer::from(p.hx() * &s) + 1u32,
+                        rug::Integer::from(p.hy() * &s),
+                        s,
+                    )
+                    .unwrap()
+                })
+                .collect();
+            assert!(matches!(Dirs::of(&big), Dirs::Big(_)));
+            assert!(matches!(Dirs::of(r), Dirs::Small(_)));
+            let (a, b) = (check_cell("planted", 1, r), check_cell("planted", 1, &big));
+            assert_eq!(a.violations.len(), b.violations.len());
+            assert_eq!(a.cases, b.cases);
+        }
     }
 
     #[test]

@@ -19,15 +19,19 @@
 //! exact. The cells and their skeletons are the production
 //! [`wai_cells::Decomposition`]'s, which computes skeletons by walking the
 //! arrangement from one query (sec. 3.9.2); every sample's skeleton is
-//! computed afresh by [`wai_visibility::VisibilityIndex`] and
-//! [`wai_visibility::Skeleton::of`] and compared with its cell's, one
-//! instance per cell:
-//! - a 2-cell: two interior points (the centroid of a strict corner and its
-//!   neighbours, and the point a quarter of the way from it to the opposite
-//!   vertex);
+//! computed afresh by a visibility query
+//! ([`wai_visibility::VisibilityIndex::skeleton_at`]: Def 3.7 read off the
+//! triangular expansion, tested equal to [`wai_visibility::Skeleton::of`]
+//! on V_p) and compared with its cell's, one instance per cell:
+//! - a 2-cell: two interior points, chosen with small denominators
+//!   ([`wai_study::sample::simple_interior_points`]) so that the queries
+//!   stay on the integer fast paths;
 //! - a 1-cell (an arrangement edge on a ray; edges on ∂M are not interior):
-//!   the points at 1/4, 1/2 and 3/4 of it;
+//!   three points of it, likewise ([`wai_study::sample::simple_segment_points`]);
 //! - a 0-cell (an arrangement vertex off ∂M): the vertex.
+//!
+//! The queries are the study's ([`Study::fresh_skeletons`]), shared with
+//! A3.6, which asks for many of the same points.
 //!
 //! So the checker also tests the walk against fresh queries on every cell.
 //! Two skeletons are equal when their origins v0 (map points) and their
@@ -43,10 +47,11 @@
 //! 2-cell shares).
 
 use serde_json::{json, Value};
-use wai_cells::LowerSite;
-use wai_exact::{orientation_rat, Orientation, Point, RatPoint};
+use wai_cells::{Arrangement, LowerSite, Support};
+use wai_exact::{Point, RatPoint};
 use wai_map::Map;
-use wai_visibility::{Skeleton, SkeletonKey, VisibilityIndex};
+use wai_study::FreshSkeleton;
+use wai_visibility::SkeletonKey;
 
 use crate::framework::{Case, Checker, Report, Violation};
 use wai_study::sample;
@@ -87,73 +92,84 @@ pub const NO_SKELETON: &str = "no-skeleton";
 /// Checks T3.3b on every cell of every dimension of a map.
 fn check_study(study: &Study<'_>) -> Report {
     let map = study.map();
-    let arr = study.arrangement();
     let name = sample::map_name(map);
     let mut report = Report::new(ID);
-    if let Err(e) = arr.sanity_check() {
+    if let Err(e) = study.arrangement_sanity() {
         report.record(Some(Violation::with_data(
             format!("map {name}: the arrangement fails its sanity check: {e}"),
             json!({"map": name, "kind": NO_SKELETON, "sanity_check": e}),
         )));
         return report;
     }
-    let index = study.index();
     // The cells' skeletons as the decomposition computes them (by its
     // walk, sec. 3.9.2): every sample is checked against them.
     let d = study.decomposition();
-    let embedded = |origin: usize, class: usize| -> Result<Embedded, String> {
-        Ok((map.vertices()[origin], d.skeletons()[class].clone()))
-    };
     let arr = d.arrangement();
     for f in arr.cells() {
-        let ring: Vec<RatPoint> = arr.face_points(f);
         report.hit(CELL_2);
-        let Some(points) = interior_points(&ring) else {
+        let ring: Vec<RatPoint> = arr.face_points(f);
+        let Some(points) = sample::simple_interior_points(&ring) else {
             report.record(Some(Violation::with_data(
-                format!("map {name}, cell {f}: no strict corner, no interior point"),
+                format!("map {name}, cell {f}: no interior point"),
                 json!({"map": name, "kind": NO_SKELETON, "cell": f,
                        "cell_vertices": ring.iter().map(ToString::to_string).collect::<Vec<_>>()}),
             )));
             continue;
         };
-        let claimed = embedded(d.origin_of(f), d.skeleton_of(f));
-        report.absorb(check_cell_points(
-            map,
-            index,
-            Cell::Face(f),
-            &claimed,
-            &points,
-        ));
+        let claimed = (d.origin_of(f), &d.skeletons()[d.skeleton_of(f)]);
+        report.absorb(check_cell_points(study, Cell::Face(f), claimed, &points));
     }
     for c in d.lower_cells() {
-        let claimed = embedded(c.origin, c.class);
+        let claimed = (c.origin, &d.skeletons()[c.class]);
         let (cell, points) = match c.site {
             LowerSite::Edge(e) => {
                 report.hit(CELL_1);
-                let (a, b) = (
-                    arr.point(arr.half_edge(2 * e).origin),
-                    arr.point(arr.dest(2 * e)),
-                );
-                let mid = RatPoint::midpoint(a, b);
-                let points = vec![
-                    RatPoint::midpoint(a, &mid),
-                    mid.clone(),
-                    RatPoint::midpoint(&mid, b),
-                ];
-                (Cell::Edge(e), points)
+                (Cell::Edge(e), edge_points(arr, e).to_vec())
             }
             LowerSite::Vertex(v) => {
                 report.hit(CELL_0);
                 (Cell::Vertex(v), vec![arr.point(v).clone()])
             }
         };
-        report.absorb(check_cell_points(map, index, cell, &claimed, &points));
+        report.absorb(check_cell_points(study, cell, claimed, &points));
     }
     report
 }
 
-/// A skeleton in its embedding: the origin v0 (a map point) and the key.
-pub type Embedded = (Point, SkeletonKey);
+/// Three points of the open arrangement edge `e` on a ray, with small
+/// denominators ([`sample::simple_segment_points`]): the middle one is
+/// the simplest point of the edge ([`edge_point`]).
+pub fn edge_points(arr: &Arrangement, e: usize) -> [RatPoint; 3] {
+    let (a, b, line) = edge_line(arr, e);
+    sample::simple_segment_points(a, b, line)
+}
+
+/// The simplest point of the open arrangement edge `e`: the middle one of
+/// [`edge_points`].
+pub fn edge_point(arr: &Arrangement, e: usize) -> RatPoint {
+    let (a, b, line) = edge_line(arr, e);
+    sample::simple_segment_point(a, b, line)
+}
+
+/// The ends of arrangement edge `e` and two integer points of its line.
+fn edge_line(arr: &Arrangement, e: usize) -> (&RatPoint, &RatPoint, (Point, Point)) {
+    let (a, b) = (
+        arr.point(arr.half_edge(2 * e).origin),
+        arr.point(arr.dest(2 * e)),
+    );
+    let line = match arr.edge_rays(e).first() {
+        Some(&r) => (arr.rays()[r].line.a(), arr.rays()[r].line.b()),
+        None => {
+            // A map edge: its own end points.
+            let Support::MapEdge(i) = arr.edge_support(e) else {
+                unreachable!("an edge is on a map edge or covered by rays")
+            };
+            let v = arr.map().vertices();
+            (v[i], v[(i + 1) % v.len()])
+        }
+    };
+    (a, b, line)
+}
 
 /// A cell of the decomposition, by dimension.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -176,92 +192,50 @@ impl Cell {
     }
 }
 
-/// V*_p at `p` in its embedding, or why it cannot be built.
-pub fn skeleton_at(index: &VisibilityIndex<'_>, p: &RatPoint) -> Result<Embedded, String> {
-    let vp = index
-        .visibility_polygon(p)
-        .map_err(|e| format!("V_p: {e}"))?;
-    let sk = Skeleton::of(index.map(), &vp).map_err(|e| format!("V*_p: {e}"))?;
-    Ok((sk.origin(), sk.key()))
+/// A skeleton for a violation's data: its origin (map point), vertex
+/// offsets and number of artificial edges.
+pub fn skeleton_json(map: &Map, origin: usize, key: &SkeletonKey) -> Value {
+    let o = map.vertices()[origin];
+    json!({
+        "origin": [o.x.to_string(), o.y.to_string()],
+        "offsets": key.offsets.iter().map(|(x, y)| [x.to_string(), y.to_string()]).collect::<Vec<_>>(),
+        "artificial_edges": key.labels.iter().filter(|l| l.is_some()).count(),
+    })
 }
 
-pub fn embedded_json(s: &Result<Embedded, String>) -> Value {
+/// A fresh skeleton for a violation's data.
+pub fn fresh_json(map: &Map, s: &FreshSkeleton) -> Value {
     match s {
-        Ok((o, key)) => json!({
-            "origin": [o.x.to_string(), o.y.to_string()],
-            "offsets": key.offsets.iter().map(|(x, y)| [x.to_string(), y.to_string()]).collect::<Vec<_>>(),
-            "artificial_edges": key.labels.iter().filter(|l| l.is_some()).count(),
-        }),
+        Ok(sk) => skeleton_json(map, sk.origin(), &sk.key(map)),
         Err(e) => json!({"error": e}),
     }
 }
 
-/// `Σ w_i p_i / Σ w_i`, exactly.
-fn combine(parts: &[(&RatPoint, u32)]) -> RatPoint {
-    use rug::Integer;
-    let mut w = Integer::from(1);
-    for (p, _) in parts {
-        w *= p.hw();
-    }
-    let total: u32 = parts.iter().map(|&(_, k)| k).sum();
-    let (mut x, mut y) = (Integer::new(), Integer::new());
-    for &(p, k) in parts {
-        let scale = Integer::from(&w / p.hw()) * k;
-        x += Integer::from(p.hx() * &scale);
-        y += Integer::from(p.hy() * &scale);
-    }
-    RatPoint::new(x, y, w * total).expect("a positive denominator")
-}
-
-/// Two interior points of a convex cell with vertices `ring`
-/// (counter-clockwise): the centroid of a strict corner and its two
-/// neighbours, and the point a quarter of the way from it to the vertex
-/// opposite the corner. `None` if no three consecutive vertices turn.
-pub fn interior_points(ring: &[RatPoint]) -> Option<[RatPoint; 2]> {
-    let k = ring.len();
-    let i = (0..k).find(|&i| {
-        orientation_rat(&ring[(i + k - 1) % k], &ring[i], &ring[(i + 1) % k])
-            == Orientation::CounterClockwise
-    })?;
-    let c = combine(&[
-        (&ring[(i + k - 1) % k], 1),
-        (&ring[i], 1),
-        (&ring[(i + 1) % k], 1),
-    ]);
-    let q = combine(&[(&c, 3), (&ring[(i + k / 2) % k], 1)]);
-    Some([c, q])
-}
-
 /// T3.3b on one cell: the cell is one instance, violated if the skeleton
-/// of some point of `points` (computed afresh through `index`) differs from
-/// `claimed`, the cell's skeleton, or if a skeleton cannot be built. A violation names the map, the cell, the point (exact,
-/// and in file units) and both skeletons.
+/// of some point of `points` (computed afresh: [`Study::fresh_skeletons`])
+/// is not `claimed` — the cell's skeleton `key` with its origin at map
+/// vertex `claimed.0` — or cannot be built. A violation names the map, the
+/// cell, the point (exact) and both skeletons.
 pub fn check_cell_points(
-    map: &Map,
-    index: &VisibilityIndex<'_>,
+    study: &Study<'_>,
     cell: Cell,
-    claimed: &Result<Embedded, String>,
+    claimed: (usize, &SkeletonKey),
     points: &[RatPoint],
 ) -> Report {
+    let map = study.map();
     let name = sample::map_name(map);
     let mut report = Report::new(ID);
-    let bad = std::iter::once(None)
-        .chain(points.iter().map(Some))
-        .find_map(|p| {
-            let at = match p {
-                None if claimed.is_err() => claimed.clone(),
-                None => return None,
-                Some(p) => skeleton_at(index, p),
-            };
-            (at.is_err() || at != *claimed).then_some((p, at))
-        });
+    let fresh = study.fresh_skeletons(points);
+    let bad = points.iter().zip(&fresh).find(|(_, at)| match &***at {
+        Ok(sk) => !sk.is(map, claimed.0, claimed.1),
+        Err(_) => true,
+    });
     report.record(bad.map(|(p, at)| {
-        let kind = if at.is_err() || claimed.is_err() {
+        let kind = if at.is_err() {
             NO_SKELETON
         } else {
             SKELETON_DIFFERS
         };
-        let p = p.map_or("the cell".to_owned(), ToString::to_string);
         Violation::with_data(
             format!(
                 "map {name}, {}: the point {p} has {}",
@@ -276,9 +250,10 @@ pub fn check_cell_points(
                 "kind": kind,
                 "map": name,
                 "cell": cell.describe(),
-                "point": p,
-                "skeleton": embedded_json(&at),
-                "cell_skeleton": embedded_json(claimed),
+                "point": p.to_string(),
+                "point_file_units": sample::point_json(map, p),
+                "skeleton": fresh_json(map, at),
+                "cell_skeleton": skeleton_json(map, claimed.0, claimed.1),
             }),
         )
     }));
@@ -289,6 +264,7 @@ pub fn check_cell_points(
 mod tests {
     use super::*;
     use crate::fixtures;
+    use wai_study::fresh_skeleton;
 
     #[test]
     fn a_family_map_passes() {
@@ -331,30 +307,30 @@ mod tests {
         assert!(r.cases.get(CELL_1).is_some_and(|&k| k > 0), "{:?}", r.cases);
     }
 
-    /// The L room's cells and two interior points of each.
-    fn cells_of(map: &Map) -> (VisibilityIndex<'_>, Vec<(usize, [RatPoint; 2])>) {
-        let arr = wai_cells::Arrangement::new(map, &wai_cells::visibility_rays(map));
-        let cells = arr
-            .cells()
+    /// The cells of a map and two interior points of each.
+    fn cells_of(study: &Study<'_>) -> Vec<(usize, [RatPoint; 2])> {
+        let arr = study.arrangement();
+        arr.cells()
             .map(|f| {
                 let ring: Vec<RatPoint> = arr.face_points(f);
-                (f, interior_points(&ring).unwrap())
+                (f, sample::simple_interior_points(&ring).unwrap())
             })
-            .collect();
-        (VisibilityIndex::new(map), cells)
+            .collect()
     }
 
     #[test]
     fn an_altered_cell_skeleton_is_reported() {
         let map = fixtures::l_room().0;
-        let (index, cells) = cells_of(&map);
+        let study = Study::new(&map);
+        let cells = cells_of(&study);
         let (f, pts) = &cells[0];
-        let claimed = skeleton_at(&index, &pts[0]);
-        let r = check_cell_points(&map, &index, Cell::Face(*f), &claimed, &pts[1..]);
+        let sk = fresh_skeleton(study.index(), &pts[0]).unwrap();
+        let key = sk.key(&map);
+        let r = check_cell_points(&study, Cell::Face(*f), (sk.origin(), &key), &pts[1..]);
         assert_eq!((r.examined, r.violations.len()), (1, 0));
-        let (o, mut key) = claimed.unwrap();
-        key.offsets[0].0 += 1;
-        let r = check_cell_points(&map, &index, Cell::Face(*f), &Ok((o, key)), &pts[1..]);
+        let mut altered = key.clone();
+        altered.offsets[0].0 += 1;
+        let r = check_cell_points(&study, Cell::Face(*f), (sk.origin(), &altered), &pts[1..]);
         assert_eq!((r.examined, r.violations.len()), (1, 1));
         assert_eq!(r.violations[0].data["kind"], SKELETON_DIFFERS);
         assert_eq!(r.violations[0].data["cell"], Cell::Face(*f).describe());
@@ -363,42 +339,29 @@ mod tests {
     #[test]
     fn a_point_of_another_cell_is_reported() {
         let map = fixtures::l_room().0;
-        let (index, cells) = cells_of(&map);
-        let claimed = skeleton_at(&index, &cells[0].1[0]);
+        let study = Study::new(&map);
+        let cells = cells_of(&study);
+        let sk = fresh_skeleton(study.index(), &cells[0].1[0]).unwrap();
+        let key = sk.key(&map);
         // Some other cell of the L room has another skeleton.
         let strangers: usize = cells[1..]
             .iter()
             .map(|(_, pts)| {
-                check_cell_points(&map, &index, Cell::Face(cells[0].0), &claimed, &pts[..1])
-                    .violations
-                    .len()
+                check_cell_points(
+                    &study,
+                    Cell::Face(cells[0].0),
+                    (sk.origin(), &key),
+                    &pts[..1],
+                )
+                .violations
+                .len()
             })
             .sum();
         assert!(strangers > 0);
         // A point outside the map has no skeleton.
-        let outside = [RatPoint::from(Point::new(3, 3))];
-        let r = check_cell_points(&map, &index, Cell::Vertex(99), &claimed, &outside);
+        let outside = [RatPoint::from(wai_exact::Point::new(3, 3))];
+        let r = check_cell_points(&study, Cell::Vertex(99), (sk.origin(), &key), &outside);
         assert_eq!(r.violations.len(), 1);
         assert_eq!(r.violations[0].data["kind"], NO_SKELETON);
-    }
-
-    #[test]
-    fn interior_points_are_strictly_inside() {
-        let ring: Vec<RatPoint> = [(0, 0), (3, 0), (6, 0), (6, 3), (0, 3)]
-            .iter()
-            .map(|&(x, y)| RatPoint::from(Point::new(x, y)))
-            .collect();
-        let [a, b] = interior_points(&ring).unwrap();
-        assert_ne!(a, b);
-        let box_ring: Vec<Point> = [(0, 0), (6, 0), (6, 3), (0, 3)]
-            .iter()
-            .map(|&(x, y)| Point::new(x, y))
-            .collect();
-        for p in [a, b] {
-            assert_eq!(
-                wai_exact::locate_rat(&box_ring, &p),
-                wai_exact::Containment::Inside
-            );
-        }
     }
 }

@@ -109,7 +109,7 @@ pub fn check_with_n(study: &Study<'_>, n: Option<usize>) -> Report {
     let name = sample::map_name(map);
     let mut report = Report::new(ID);
     let n = n.unwrap_or(map.n());
-    if let Err(e) = arr.sanity_check() {
+    if let Err(e) = study.arrangement_sanity() {
         report.record(Some(Violation::with_data(
             format!("map {name}: the arrangement fails its sanity check: {e}"),
             json!({"map": name, "sanity_check": e}),

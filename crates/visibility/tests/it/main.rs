@@ -4,4 +4,5 @@
 mod cases;
 mod common;
 mod laws;
+mod map_skeleton;
 mod production;

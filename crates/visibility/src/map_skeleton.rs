@@ -1,0 +1,367 @@
+//! V*_p in map terms (Def 3.7), read straight off the triangular expansion
+//! when the viewpoint's coordinates are small: the many skeletons a checker
+//! compares (one per sampled point of every cell) without building V_p's
+//! spurious vertices as exact points.
+
+use crate::assemble::fits_fast;
+use crate::polygon::VisibilityError;
+use crate::skeleton::{LineLabel, Skeleton, SkeletonEdge, SkeletonError, SkeletonKey};
+use rug::Integer;
+use std::cmp::Ordering;
+use wai_exact::{orientation, Orientation, Point, RatPoint, Vector};
+use wai_map::Map;
+
+/// A skeleton V*_p in map terms: the map vertex of each skeleton vertex,
+/// counter-clockwise from the canonical origin v0 (Def 3.7 (6), as
+/// [`Skeleton`] chooses it), and for each edge from vertex i to i + 1 the
+/// map edge under it — the full edge itself, or the half or partial edge an
+/// artificial edge replaces (Def 3.7 (2)–(4)).
+///
+/// Two points have equal skeletons in the same embedding (equal
+/// [`SkeletonKey`]s and origins) iff their map skeletons have the same
+/// vertices and kinds of edges and each artificial edge's map edge lies on
+/// the same line ([`MapSkeleton::same`]): the label is that line (Def 3.7
+/// (5)), and collinear map edges give equal labels (Fig 3.5).
+#[derive(Clone, Debug, PartialEq, Eq, Hash)]
+pub struct MapSkeleton {
+    /// By skeleton vertex: its map vertex, from v0.
+    pub vertices: Vec<usize>,
+    /// By skeleton edge: the map edge under it, and whether the edge is
+    /// artificial.
+    pub edges: Vec<(usize, bool)>,
+}
+
+/// Why V*_p could not be formed at a point.
+#[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
+pub enum SkeletonAtError {
+    #[error("V_p: {0}")]
+    Visibility(#[from] VisibilityError),
+    #[error("V*_p: {0}")]
+    Skeleton(#[from] SkeletonError),
+}
+
+impl MapSkeleton {
+    /// The map terms of a skeleton.
+    pub fn of(sk: &Skeleton) -> MapSkeleton {
+        MapSkeleton {
+            vertices: sk.map_vertices().to_vec(),
+            edges: sk
+                .edges()
+                .iter()
+                .map(|e| match e {
+                    SkeletonEdge::Full { map_edge } => (*map_edge, false),
+                    SkeletonEdge::Artificial { map_edge, .. } => (*map_edge, true),
+                })
+                .collect(),
+        }
+    }
+
+    /// The map vertex of the origin v0.
+    pub fn origin(&self) -> usize {
+        self.vertices[0]
+    }
+
+    /// The canonical key (as [`Skeleton::key`]).
+    pub fn key(&self, map: &Map) -> SkeletonKey {
+        let v = map.vertices();
+        let o = v[self.origin()];
+        SkeletonKey {
+            offsets: self
+                .vertices
+                .iter()
+                .map(|&m| (v[m].x - o.x, v[m].y - o.y))
+                .collect(),
+            labels: self
+                .edges
+                .iter()
+                .map(|&(e, artificial)| {
+                    artificial.then(|| LineLabel::through(v[e], v[(e + 1) % map.n()], o))
+                })
+                .collect(),
+        }
+    }
+
+    /// Whether `self` and `other` are one skeleton in one embedding: equal
+    /// keys and origins.
+    pub fn same(&self, map: &Map, other: &MapSkeleton) -> bool {
+        if self.vertices != other.vertices || self.edges.len() != other.edges.len() {
+            return false;
+        }
+        let v = map.vertices();
+        let n = map.n();
+        self.edges
+            .iter()
+            .zip(&other.edges)
+            .all(|(&(e, ae), &(f, af))| {
+                ae == af
+                    && (e == f
+                        || (ae
+                            && orientation(v[e], v[(e + 1) % n], v[f]) == Orientation::Collinear
+                            && orientation(v[e], v[(e + 1) % n], v[(f + 1) % n])
+                                == Orientation::Collinear))
+            })
+    }
+
+    /// Whether `self` is the skeleton `key` with its origin at map vertex
+    /// `origin`.
+    pub fn is(&self, map: &Map, origin: usize, key: &SkeletonKey) -> bool {
+        let v = map.vertices();
+        let n = map.n();
+        if self.origin() != origin
+            || self.vertices.len() != key.offsets.len()
+            || self.edges.len() != key.labels.len()
+        {
+            return false;
+        }
+        let o = v[origin];
+        let rel = |m: usize| (v[m].x - o.x, v[m].y - o.y);
+        self.vertices
+            .iter()
+            .zip(&key.offsets)
+            .all(|(&m, &off)| rel(m) == off)
+            && self
+                .edges
+                .iter()
+                .zip(&key.labels)
+                .all(|(&(e, artificial), label)| match label {
+                    None => !artificial,
+                    Some(l) => artificial && on_label(l, rel(e)) && on_label(l, rel((e + 1) % n)),
+                })
+    }
+}
+
+/// Whether the point `(x, y)` (relative to the origin) lies on `l`:
+/// `a·x + b·y = c`, in `i128` when the products cannot overflow.
+fn on_label(l: &LineLabel, (x, y): (i128, i128)) -> bool {
+    let small = |c: &Integer| c.to_i128().filter(|c| c.unsigned_abs() < 1 << 62);
+    let fits = |c: i128| c.unsigned_abs() < 1 << 62;
+    match (small(&l.a), small(&l.b), small(&l.c)) {
+        (Some(a), Some(b), Some(c)) if fits(x) && fits(y) => {
+            // |a·x|, |b·y| < 2^124 and |c| < 2^62: the sum fits.
+            a * x + b * y == c
+        }
+        _ => l.contains(x, y),
+    }
+}
+
+/// What the boundary of V_p runs along after a vertex.
+#[derive(Clone, Copy, PartialEq, Eq)]
+enum Along {
+    Ray,
+    MapEdge(usize),
+}
+
+/// A vertex of V_p: the map vertex of a non-spurious one.
+#[derive(Clone, Copy, PartialEq, Eq)]
+enum Vertex {
+    At(usize),
+    Spurious,
+}
+
+/// V*_p from the expansion's `leaves` (as [`crate::assemble`] reads them)
+/// without building V_p's points, if `p` fits the fast path and every
+/// boundary direction meets the configuration below; `None` otherwise
+/// (the caller builds V_p and [`Skeleton::of`] instead).
+///
+/// At the direction of map vertex d that starts a leaf, with map edge
+/// `before` nearest just before it and `after` just after: if d is an end
+/// of both, V_p turns at d (a non-spurious vertex). If d is an end of one
+/// only, the other edge's line meets the ray from p through d at
+/// `p + t·(d − p)`, t = num / den in `i128` (the bound of
+/// [`fits_fast`]); t > 1 makes d the near, non-spurious end of a spurious
+/// edge whose far end is that meeting point. Any other configuration
+/// (neither edge at d, or t ≤ 1) falls back.
+///
+/// A non-spurious vertex is reflex in V_p — what the canonical origin asks
+/// — iff it is the near end of a spurious edge (the boundary comes back
+/// toward p along the map edge: the interior angle exceeds 180°, the map
+/// edge not being collinear with p, as no V_p edge along a map edge is), or
+/// it lies between its own two map edges (m − 1 and m) and is reflex in the
+/// map. Other configurations fall back. Tests compare every skeleton with
+/// [`Skeleton::of`] on V_p.
+pub(crate) fn from_leaves(
+    map: &Map,
+    p: &RatPoint,
+    coord_bits: u32,
+    leaves: &[(usize, usize)],
+) -> Option<Result<MapSkeleton, SkeletonError>> {
+    if !fits_fast(p, coord_bits) {
+        return None;
+    }
+    let (x, y, w) = (p.hx().to_i128()?, p.hy().to_i128()?, p.hw().to_i128()?);
+    let v = map.vertices();
+    let n = map.n();
+    // Within the bound of `fits_fast`: directions below 2^62, an edge
+    // vector below 2^63, cross products below 2^126.
+    let rel = |i: usize| Vector::new(w * v[i].x - x, w * v[i].y - y);
+    // Whether the line of map edge `e` meets the ray from p through vertex
+    // `d` beyond d (t > 1), before it (`Less`) or at it.
+    let beyond = |d: usize, e: usize| -> Option<Ordering> {
+        let (dv, ra, rb) = (rel(d), rel(e), rel((e + 1) % n));
+        let den = dv.cross(Vector::new(rb.x - ra.x, rb.y - ra.y));
+        if den == 0 {
+            return None;
+        }
+        let num = ra.cross(rb);
+        Some(if den > 0 {
+            num.cmp(&den)
+        } else {
+            den.cmp(&num)
+        })
+    };
+    let g = leaves.len();
+    let mut boundary: Vec<(Vertex, Along)> = Vec::with_capacity(2 * g);
+    for k in 0..g {
+        let (before, (d, after)) = (leaves[(k + g - 1) % g].1, leaves[k]);
+        if before == after {
+            continue;
+        }
+        let ends_at = |e: usize| d == e || d == (e + 1) % n;
+        match (ends_at(before), ends_at(after)) {
+            (true, true) => boundary.push((Vertex::At(d), Along::MapEdge(after))),
+            (true, false) => {
+                if beyond(d, after)? != Ordering::Greater {
+                    return None;
+                }
+                boundary.push((Vertex::At(d), Along::Ray));
+                boundary.push((Vertex::Spurious, Along::MapEdge(after)));
+            }
+            (false, true) => {
+                if beyond(d, before)? != Ordering::Greater {
+                    return None;
+                }
+                boundary.push((Vertex::Spurious, Along::Ray));
+                boundary.push((Vertex::At(d), Along::MapEdge(after)));
+            }
+            (false, false) => return None,
+        }
+    }
+    let m = boundary.len();
+    let kept: Vec<(usize, usize)> = boundary
+        .iter()
+        .enumerate()
+        .filter_map(|(i, (vx, _))| match vx {
+            Vertex::At(mv) => Some((i, *mv)),
+            Vertex::Spurious => None,
+        })
+        .collect();
+    if kept.is_empty() {
+        return None;
+    }
+    let mut reflex = Vec::new();
+    for &(i, mv) in &kept {
+        let (into, out) = (boundary[(i + m - 1) % m].1, boundary[i].1);
+        let is_reflex = match (into, out) {
+            (Along::Ray, _) | (_, Along::Ray) => true,
+            (Along::MapEdge(e1), Along::MapEdge(e2)) => {
+                if e1 != (mv + n - 1) % n || e2 != mv {
+                    return None;
+                }
+                map.is_reflex(mv)
+            }
+        };
+        if is_reflex {
+            reflex.push((i, mv));
+        }
+    }
+    let pool = if reflex.is_empty() { &kept } else { &reflex };
+    let at = |mv: usize| {
+        let q: Point = v[mv];
+        (q.x, q.y)
+    };
+    let &(origin_at, _) = pool.iter().min_by_key(|&&(_, mv)| at(mv))?;
+    let start = kept.iter().position(|&(i, _)| i == origin_at)?;
+    let mut kept = kept;
+    kept.rotate_left(start);
+    let k = kept.len();
+    let mut edges = Vec::with_capacity(k);
+    for s in 0..k {
+        let (i, _) = kept[s];
+        let (j, _) = kept[(s + 1) % k];
+        let mut solid = None;
+        let mut count = 0;
+        let mut len = 0;
+        let mut e = i;
+        loop {
+            len += 1;
+            if let Along::MapEdge(me) = boundary[e].1 {
+                solid = Some(me);
+                count += 1;
+            }
+            e = (e + 1) % m;
+            if e == j {
+                break;
+            }
+        }
+        match (count, solid) {
+            (1, Some(me)) => edges.push((me, len > 1)),
+            _ => return None,
+        }
+    }
+    Some(Ok(MapSkeleton {
+        vertices: kept.iter().map(|&(_, mv)| mv).collect(),
+        edges,
+    }))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::VisibilityIndex;
+    use wai_exact::{locate_rat, Containment};
+
+    /// Midpoints of vertex pairs and points of a rational grid inside `map`.
+    fn points(map: &Map) -> Vec<RatPoint> {
+        let v = map.vertices();
+        let mut out: Vec<RatPoint> = Vec::new();
+        for i in 0..v.len() {
+            for j in i + 2..v.len() {
+                out.push(RatPoint::midpoint(&v[i].into(), &v[j].into()));
+            }
+        }
+        let (lo, hi) = map.bounding_box();
+        for i in 1..6i128 {
+            for j in 1..6i128 {
+                let x = Integer::from(lo.x) * 6 + (hi.x - lo.x) * i;
+                let y = Integer::from(lo.y) * 6 + (hi.y - lo.y) * j;
+                out.push(RatPoint::new(x * 5 + 1, y * 5 + 2, Integer::from(30)).unwrap());
+            }
+        }
+        out.retain(|q| locate_rat(v, q) == Containment::Inside);
+        out
+    }
+
+    /// The combinatorial reading agrees with the skeleton of V_p wherever
+    /// it answers, and answers for nearly every point of small maps.
+    #[test]
+    fn the_fast_path_answers_and_agrees() {
+        let (mut fast, mut all) = (0, 0);
+        let mut maps = Vec::new();
+        for kind in wai_gen::RANDOM_KINDS {
+            for seed in 0..3 {
+                maps.push(wai_gen::random(kind.id, kind.min_n.max(8) + 4, seed).unwrap());
+            }
+        }
+        maps.extend(wai_gen::exhaustive_polyomino_maps(
+            5,
+            wai_gen::Symmetry::Free,
+        ));
+        for map in &maps {
+            let index = VisibilityIndex::new(map);
+            for p in points(map) {
+                let leaves = index.leaves_at(&p).unwrap();
+                let vp = index.visibility_polygon(&p).unwrap();
+                let want = Skeleton::of(map, &vp).map(|s| MapSkeleton::of(&s));
+                all += 1;
+                if let Some(got) = from_leaves(map, &p, index.coord_bits(), &leaves) {
+                    fast += 1;
+                    assert_eq!(got, want, "p = {p} in {:?}", map.vertices());
+                }
+            }
+        }
+        assert!(
+            fast * 100 >= all * 95,
+            "fast path on {fast} of {all} points"
+        );
+    }
+}
