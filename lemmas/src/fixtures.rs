@@ -1,6 +1,9 @@
 //! Maps and visibility polygons shared by the checkers' unit tests.
 
 use wai_exact::{Point, RatPoint};
+use wai_study::Study;
+
+use crate::framework::Checker;
 use wai_map::Map;
 use wai_visibility::{VisibilityIndex, VisibilityPolygon};
 
@@ -65,4 +68,17 @@ pub(crate) fn doorway() -> (Map, VisibilityPolygon) {
         (0, 4),
     ];
     seen_from(&ring, "doorway", (3, 1))
+}
+
+/// `checker` finds no violation on the layout maps `layout(seed)` of
+/// `seeds`, and examines something over them.
+pub(crate) fn holds_on(checker: &Checker, layout: fn(u64) -> Map, seeds: &[u64]) {
+    let mut examined = 0;
+    for &seed in seeds {
+        let map = layout(seed);
+        let report = checker.run(&Study::new(&map));
+        examined += report.examined;
+        assert!(report.violations.is_empty(), "{:?}", report.violations);
+    }
+    assert!(examined > 0, "{}: nothing examined", checker.id);
 }

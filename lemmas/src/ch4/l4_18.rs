@@ -139,14 +139,7 @@ mod tests {
 
     #[test]
     fn holds_on_repeated_niches() {
-        let mut examined = 0;
-        for seed in [195, 114] {
-            let map = wai_gen::repeated_niches(seed);
-            let report = CHECKER.run(&Study::new(&map));
-            examined += report.examined;
-            assert!(report.violations.is_empty(), "{:?}", report.violations);
-        }
-        assert!(examined > 0);
+        crate::fixtures::holds_on(&CHECKER, wai_gen::repeated_niches, &[195, 114]);
     }
 
     #[test]
