@@ -191,56 +191,43 @@ pub fn kernel_small(ring: &[Point]) -> Option<ConvexRegion> {
 
 /// [`clip`] on `i128` points; `None` on overflow.
 fn clip_small(region: &[(Triple, Line)], cut: &Line) -> Option<Vec<(Triple, Line)>> {
-    let m = region.len();
-    let sides = region
-        .iter()
-        .map(|(p, _)| side_small(cut, p))
-        .collect::<Option<Vec<Side>>>()?;
-    if sides.iter().all(|&s| s != Side::Right) {
-        return Some(region.to_vec());
-    }
-    let mut out: Vec<(Triple, Line)> = Vec::new();
-    for i in 0..m {
-        let j = (i + 1) % m;
-        let (p, line) = &region[i];
-        let (si, sj) = (sides[i], sides[j]);
-        if si != Side::Right {
-            let next_line = if si == Side::On && sj != Side::Left {
-                *cut
-            } else {
-                *line
-            };
-            out.push((*p, next_line));
-        }
-        let crossing = matches!(
-            (si, sj),
-            (Side::Left, Side::Right) | (Side::Right, Side::Left)
-        );
-        if crossing {
-            if let Some(x) = wai_exact::construct_intersection_i128(cut, line)? {
-                let next_line = if si == Side::Left { *cut } else { *line };
-                out.push((x, next_line));
-            }
-        }
-    }
-    out.dedup_by(|a, b| a.0 == b.0);
-    while out.len() > 1 && out.first().map(|f| f.0) == out.last().map(|l| l.0) {
-        out.pop();
-    }
-    Some(out)
+    clip_by(
+        region,
+        cut,
+        |p| side_small(cut, p),
+        wai_exact::construct_intersection_i128,
+    )
 }
 
 /// Clip a convex region to the closed half-plane left of `cut`.
 fn clip(region: &[(RatPoint, Line)], cut: &Line) -> Vec<(RatPoint, Line)> {
+    clip_by(
+        region,
+        cut,
+        |p| Some(side_of_line_rat(cut, p)),
+        |a, b| Some(construct_intersection(a, b)),
+    )
+    .expect("the GMP path never declines")
+}
+
+/// The clipping of [`clip`] and [`clip_small`] in terms of the point
+/// type's `side` of `cut` and the `meet` of two lines (`Some(None)`:
+/// parallel); `None` where either declines (an overflow).
+fn clip_by<P: Clone + PartialEq>(
+    region: &[(P, Line)],
+    cut: &Line,
+    side: impl Fn(&P) -> Option<Side>,
+    meet: impl Fn(&Line, &Line) -> Option<Option<P>>,
+) -> Option<Vec<(P, Line)>> {
     let m = region.len();
-    let sides: Vec<Side> = region
+    let sides = region
         .iter()
-        .map(|(p, _)| side_of_line_rat(cut, p))
-        .collect();
+        .map(|(p, _)| side(p))
+        .collect::<Option<Vec<Side>>>()?;
     if sides.iter().all(|&s| s != Side::Right) {
-        return region.to_vec();
+        return Some(region.to_vec());
     }
-    let mut out: Vec<(RatPoint, Line)> = Vec::new();
+    let mut out: Vec<(P, Line)> = Vec::new();
     for i in 0..m {
         let j = (i + 1) % m;
         let (p, line) = &region[i];
@@ -260,7 +247,7 @@ fn clip(region: &[(RatPoint, Line)], cut: &Line) -> Vec<(RatPoint, Line)> {
             (Side::Left, Side::Right) | (Side::Right, Side::Left)
         );
         if crossing {
-            if let Some(x) = construct_intersection(cut, line) {
+            if let Some(x) = meet(cut, line)? {
                 let next_line = if si == Side::Left { *cut } else { *line };
                 out.push((x, next_line));
             }
@@ -271,7 +258,7 @@ fn clip(region: &[(RatPoint, Line)], cut: &Line) -> Vec<(RatPoint, Line)> {
     while out.len() > 1 && out.first().map(|f| &f.0) == out.last().map(|l| &l.0) {
         out.pop();
     }
-    out
+    Some(out)
 }
 
 #[cfg(test)]
