@@ -569,7 +569,12 @@ fn main() {
             "localizer overlays: cells placed + trapezoid labels against N(n + r²) (C5.18)",
             "N(n + r²)",
             "size (entries)",
-            by(&|r: &Row| ((r.total * (r.n + r.r * r.r)) as f64, r.overlay_size as f64)),
+            by(&|r: &Row| {
+                (
+                    wai_lemmas::ch5::c5_18::bound(r.total, r.n, r.r) as f64,
+                    r.overlay_size as f64,
+                )
+            }),
         ),
         (
             "preprocess_time_vs_bound.svg",
