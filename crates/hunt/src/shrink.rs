@@ -1,4 +1,4 @@
-//! Shrinking a counterexample to a map a person can read (issue 11).
+//! Shrinking a counterexample to a map a person can read.
 //!
 //! A violation found on a 30-vertex random map says little; the same
 //! violation on a 7-vertex map with coordinates below 10 can be drawn and
