@@ -2,57 +2,47 @@
 //! decomposition (`wai_cells`, thesis sec. 3.6, Defs 3.8–3.10).
 //!
 //! Laws:
-//! - the arrangement of the map edges and the visibility rays passes its
-//!   layered `sanity_check` (twins, face cycles, Euler's V − E + F = 2,
-//!   orientation, convex cells), built alone (`Arrangement::new`) and
-//!   inside the `Decomposition`, and the two have the same counts;
+//! - the decomposition's arrangement of the map edges and the visibility
+//!   rays passes its layered `sanity_check` (twins, face cycles, Euler's
+//!   V − E + F = 2, orientation, convex cells, no crossings);
 //! - the memory estimate's `vertex_bound` is never below the real vertex
 //!   count;
 //! - the classes partition the 2-cells, and N = Σ |EC|;
 //! - the skeleton the walk of sec. 3.9.2 gives each cell, of every
 //!   dimension, equals a fresh visibility query at its representative
-//!   point (`VisibilityIndex` + `Skeleton::of`);
+//!   point (`VisibilityIndex::skeleton_at`, which the visibility target
+//!   holds equal to `Skeleton::of` on V_p);
 //! - the same map scaled by 2^31 (off the `i64` paths of maps below 2^30)
 //!   has the same counts and classes.
 #![no_main]
 
 use libfuzzer_sys::fuzz_target;
-use wai_cells::{vertex_bound, visibility_rays, Arrangement, Decomposition};
+use wai_cells::{vertex_bound, Decomposition};
 use wai_exact::{Point, RatPoint};
 use wai_map::Map;
-use wai_visibility::{Skeleton, VisibilityIndex};
+use wai_visibility::VisibilityIndex;
 
-fuzz_target!(|data: &[u8]| {
-    wai_fuzz::init();
+fuzz_target!(|data: &[u8]| wai_fuzz::inline(|| decompose(data)));
+
+fn decompose(data: &[u8]) {
     let Some((map, _)) = wai_fuzz::map_of(data) else {
         return;
     };
     let name = map.name().unwrap_or("unnamed").to_owned();
-    let rays = visibility_rays(&map);
-    let arr = Arrangement::new(&map, &rays);
+    let d = Decomposition::new(&map);
+    let arr = d.arrangement();
     if let Err(e) = arr.sanity_check() {
-        panic!("{name}: Arrangement::new fails its sanity check: {e}");
+        panic!("{name}: the decomposition's arrangement fails its sanity check: {e}");
     }
-    let bound = vertex_bound(&map, &rays);
+    let bound = vertex_bound(&map, arr.rays());
     assert!(
         bound >= arr.vertex_count() as u64,
         "{name}: vertex_bound {bound} < {} vertices",
         arr.vertex_count()
     );
 
-    let d = Decomposition::new(&map);
-    let inner = d.arrangement();
-    if let Err(e) = inner.sanity_check() {
-        panic!("{name}: the decomposition's arrangement fails its sanity check: {e}");
-    }
-    assert_eq!(
-        (inner.vertex_count(), inner.edge_count(), inner.face_count()),
-        (arr.vertex_count(), arr.edge_count(), arr.face_count()),
-        "{name}: the decomposition's arrangement differs from Arrangement::new's"
-    );
-
     // The classes partition the 2-cells; N = Σ |EC|.
-    let mut seen = vec![false; inner.face_count()];
+    let mut seen = vec![false; arr.face_count()];
     for (i, class) in d.classes().iter().enumerate() {
         for &c in class {
             assert!(!seen[c], "{name}: cell {c} in two classes");
@@ -67,30 +57,28 @@ fuzz_target!(|data: &[u8]| {
     let total: usize = (0..d.classes().len()).map(|i| d.class_complexity(i)).sum();
     assert_eq!(d.total_complexity(), total, "{name}: N = Σ |EC|");
 
-    // The walked skeletons against fresh queries, cells of every dimension.
+    // The walked skeletons against fresh queries, cells of every dimension
+    // (`skeleton_at`; the visibility target holds it equal to
+    // `Skeleton::of` on V_p).
     let index = VisibilityIndex::new(&map);
     let v = map.vertices();
-    let fresh = |p: &RatPoint| {
-        let vp = index
-            .visibility_polygon(p)
-            .unwrap_or_else(|e| panic!("{name}: representative {p}: {e}"));
-        let sk = Skeleton::of(&map, &vp)
+    let agrees = |p: &RatPoint, origin: usize, class: usize| {
+        let sk = index
+            .skeleton_at(p)
             .unwrap_or_else(|e| panic!("{name}: no skeleton at representative {p}: {e}"));
-        (sk.origin(), sk.key())
+        sk.is(&map, origin, &d.skeletons()[class])
     };
     for &f in d.cells() {
-        let walked = (v[d.origin_of(f)], d.skeletons()[d.skeleton_of(f)].clone());
         let at = d.representative(f);
         assert!(
-            fresh(at) == walked,
+            agrees(at, d.origin_of(f), d.skeleton_of(f)),
             "{name}: 2-cell {f} at {at}: walk and query differ"
         );
     }
     for c in d.lower_cells() {
-        let walked = (v[c.origin], d.skeletons()[c.class].clone());
         let at = d.lower_representative(c);
         assert!(
-            fresh(&at) == walked,
+            agrees(&at, c.origin, c.class),
             "{name}: {:?} at {at}: walk and query differ",
             c.site
         );
@@ -111,4 +99,4 @@ fuzz_target!(|data: &[u8]| {
         e.classes(),
         "{name}: classes change when scaled by 2^31"
     );
-});
+}

@@ -11,7 +11,10 @@
 //!
 //! Laws: both algorithms give the same result, exactly — the same
 //! visibility polygon, or the same error (outside, on the boundary); an
-//! interior point has a visibility polygon and a skeleton (Def 3.7).
+//! interior point has a visibility polygon and a skeleton (Def 3.7), and
+//! the skeleton read off the expansion (`VisibilityIndex::skeleton_at`,
+//! which the decompose target and the claim checkers query) is the one
+//! `Skeleton::of` forms from V_p.
 #![no_main]
 
 use arbitrary::Unstructured;
@@ -19,7 +22,7 @@ use libfuzzer_sys::fuzz_target;
 use rug::Integer;
 use wai_exact::{construct_intersection, locate_rat, Containment, Line, Point, RatPoint};
 use wai_map::Map;
-use wai_visibility::{reference, Skeleton, VisibilityIndex};
+use wai_visibility::{reference, MapSkeleton, Skeleton, VisibilityIndex};
 
 /// `a + (t/d)·(b − a)` for integers `t`, `d > 0`.
 fn along(a: Point, b: Point, t: i128, d: i128) -> Option<RatPoint> {
@@ -75,7 +78,6 @@ fn viewpoint(u: &mut Unstructured<'_>, map: &Map) -> arbitrary::Result<Option<Ra
 }
 
 fuzz_target!(|data: &[u8]| {
-    wai_fuzz::init();
     let Some((map, mut u)) = wai_fuzz::map_of(data) else {
         return;
     };
@@ -98,9 +100,16 @@ fuzz_target!(|data: &[u8]| {
         );
         if locate_rat(map.vertices(), &p) == Containment::Inside {
             let vp = got.unwrap_or_else(|e| panic!("interior point {p} in {name}: {e}"));
-            if let Err(e) = Skeleton::of(&map, &vp) {
-                panic!("no skeleton at interior point {p} in {name}: {e}");
-            }
+            let sk = Skeleton::of(&map, &vp)
+                .unwrap_or_else(|e| panic!("no skeleton at interior point {p} in {name}: {e}"));
+            let at = index
+                .skeleton_at(&p)
+                .unwrap_or_else(|e| panic!("skeleton_at fails at interior point {p} in {name}: {e}"));
+            assert_eq!(
+                at,
+                MapSkeleton::of(&sk),
+                "skeleton_at and Skeleton::of differ at {p} in {name}"
+            );
         }
     }
 });

@@ -277,9 +277,15 @@ impl Arrangement {
             }
             _ => {
                 let o = |u: usize, v: usize, t: usize| geo.orientation(p(u), p(v), p(t));
-                let (o1, o2, o3, o4) = (o(a, b, c), o(a, b, d), o(c, d, a), o(c, d, b));
                 let apart = |s: Orientation, t: Orientation| s == t && s != Orientation::Collinear;
-                if apart(o1, o2) || apart(o3, o4) {
+                // Most pairs that meet in their boxes are told apart by the
+                // first line alone: its two tests before the other two.
+                let (o1, o2) = (o(a, b, c), o(a, b, d));
+                if apart(o1, o2) {
+                    return None;
+                }
+                let (o3, o4) = (o(c, d, a), o(c, d, b));
+                if apart(o3, o4) {
                     return None;
                 }
                 if [o1, o2, o3, o4]
