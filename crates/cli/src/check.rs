@@ -47,16 +47,16 @@ pub struct Args {
     #[arg(long, num_args = 1.., value_name = "MAP")]
     pub files: Vec<PathBuf>,
     /// Stop after this many maps (default 1000 without --budget).
-    #[arg(long)]
+    #[arg(long, value_parser = crate::options::count_u64, allow_negative_numbers = true)]
     pub count: Option<u64>,
     /// Stop after this much wall-clock time: 90s, 10m, 1h30m.
     #[arg(long)]
     pub budget: Option<String>,
     /// Map i of a generated stream has seed S + i.
-    #[arg(long, default_value_t = 0)]
+    #[arg(long, default_value_t = 0, value_parser = crate::options::count_u64, allow_negative_numbers = true)]
     pub seed: u64,
     /// Worker threads (default: one per core).
-    #[arg(long)]
+    #[arg(long, value_parser = crate::options::positive_count, allow_negative_numbers = true)]
     pub threads: Option<usize>,
     /// Print the run as JSON (the record's keys, and the counterexamples).
     #[arg(long)]
@@ -74,7 +74,7 @@ pub struct Args {
     pub no_shrink: bool,
     /// At most this many candidate maps checked while shrinking one
     /// counterexample.
-    #[arg(long, default_value_t = 3000)]
+    #[arg(long, default_value_t = 3000, value_parser = crate::options::count, allow_negative_numbers = true)]
     pub shrink_tries: usize,
     /// Stop taking maps once a counterexample is found.
     #[arg(long)]
@@ -102,7 +102,7 @@ pub struct Args {
     pub target: Option<String>,
     /// With --target: stop after this many evaluations (default 2000
     /// without --budget).
-    #[arg(long, requires = "target")]
+    #[arg(long, requires = "target", value_parser = crate::options::count_u64, allow_negative_numbers = true)]
     pub evals: Option<u64>,
 }
 
@@ -337,17 +337,17 @@ pub fn run(args: &Args) -> Result<(), Failure> {
         if args.profile {
             all["profile"] = profile_json(&outcome);
         }
-        println!(
+        outln!(
             "{}",
             serde_json::to_string_pretty(&all).expect("plain JSON values")
         );
     } else {
-        print!(
+        out!(
             "{}",
             text_summary(args, &outcome, &record, threads, &stored)
         );
         if args.profile {
-            print!("{}", profile_text(&outcome));
+            out!("{}", profile_text(&outcome));
         }
     }
     let found = outcome.counterexamples().len();
@@ -526,7 +526,7 @@ fn replay(args: &Args, file: &Path) -> Result<(), Failure> {
     });
     let map = crate::input::load(file, crate::input::Format::Auto)?.map;
     let (report, open) = wai_hunt::store::replay(&checker, &map);
-    println!(
+    outln!(
         "wai check --replay {}: {claim}{} on {} (n = {}, r = {}): examined {}, violations {}, known failures {}",
         file.display(),
         planted.map_or(String::new(), |p| format!(" (planted bug {p})")),
@@ -538,10 +538,10 @@ fn replay(args: &Args, file: &Path) -> Result<(), Failure> {
         report.violations.len() - open
     );
     for v in checker.counterexamples(&report).take(5) {
-        println!("  VIOLATION: {}", v.what);
+        outln!("  VIOLATION: {}", v.what);
     }
     if open == 0 {
-        println!("  {claim} holds on this map");
+        outln!("  {claim} holds on this map");
         Ok(())
     } else {
         Err(Failure {

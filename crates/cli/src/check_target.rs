@@ -73,14 +73,14 @@ pub fn run(
         seed
     );
     let Some(best) = outcome.best.first() else {
-        println!(
+        outln!(
             "wai check --target {}: no map evaluated ({effort})",
             target.name()
         );
         return Ok(());
     };
     if best.eval.value == 0 {
-        println!(
+        outln!(
             "wai check --target {}: not hit. {effort}. Closest: {} (n = {}, from {}), {}",
             target.name(),
             best.eval.detail,
@@ -135,7 +135,7 @@ pub fn run(
         &meta,
     );
     std::fs::write(&path, text).map_err(|e| Failure::io(format!("{}: {e}", path.display())))?;
-    println!(
+    outln!(
         "wai check --target {}: hit, {} instance(s) on a map of n = {}, r = {}; {effort}\n  stored: {}\n  reproduce: {reproduce}",
         target.name(),
         best.eval.value,

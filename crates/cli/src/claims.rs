@@ -28,9 +28,9 @@ use wai_lemmas::{Claim, CLAIMS};
 
 use crate::Failure;
 
-/// The run record read when `--record` is not given: `lemmas/last-run.json`
-/// of the workspace this binary was built from.
-pub const DEFAULT_RECORD: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/../../lemmas/last-run.json");
+/// The run record read when `--record` is not given, under the root of the
+/// repository the command is run in ([`wai_hunt::repository`]).
+pub const DEFAULT_RECORD: &str = "lemmas/last-run.json";
 
 /// The line before the generated table in `README.md`.
 pub const TABLE_START: &str = "<!-- claims-table:start -->";
@@ -49,7 +49,8 @@ pub struct Args {
     /// "cases_never_hit", ...}]}.
     #[arg(long, conflicts_with = "markdown")]
     pub json: bool,
-    /// Read this run record instead of the workspace's lemmas/last-run.json.
+    /// Read this run record instead of lemmas/last-run.json of the
+    /// repository the command is run in.
     #[arg(long, value_name = "FILE")]
     pub record: Option<PathBuf>,
     /// Print the claims table as Markdown (the table of README.md).
@@ -457,10 +458,11 @@ fn replace_table(text: &str, table: &str) -> Result<String, String> {
 }
 
 pub fn run(args: &Args) -> Result<(), Failure> {
-    let path = args
-        .record
-        .clone()
-        .unwrap_or_else(|| PathBuf::from(DEFAULT_RECORD));
+    let path = match &args.record {
+        Some(path) => path.clone(),
+        None => wai_hunt::repository::path(DEFAULT_RECORD)
+            .map_err(|e| Failure::io(format!("no run record: {e}, or give --record FILE")))?,
+    };
     let record = RunRecord::read(&path).map_err(Failure::io)?;
     // Shown without the `crates/cli/../..` of the default.
     let path = std::fs::canonicalize(&path).unwrap_or(path);
@@ -476,14 +478,14 @@ pub fn run(args: &Args) -> Result<(), Failure> {
     let rows = rows(&record);
     if args.json {
         let v = to_json(&record, &path, &rows);
-        println!(
+        outln!(
             "{}",
             serde_json::to_string_pretty(&v).map_err(|e| Failure::io(e.to_string()))?
         );
     } else if args.markdown {
         let table = markdown(&record, &rows);
         match &args.write_readme {
-            None => print!("{table}"),
+            None => out!("{table}"),
             Some(readme) => {
                 let shown = readme.display();
                 let old = std::fs::read_to_string(readme)
@@ -500,7 +502,7 @@ pub fn run(args: &Args) -> Result<(), Failure> {
             }
         }
     } else {
-        print!("{}", text(&record, &path, &rows));
+        out!("{}", text(&record, &path, &rows));
     }
     Ok(())
 }

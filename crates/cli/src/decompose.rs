@@ -64,7 +64,7 @@ pub struct Args {
     #[arg(long)]
     pub svg: Option<PathBuf>,
     /// With --svg: highlight this class (an index printed by --json).
-    #[arg(long)]
+    #[arg(long, value_parser = crate::options::count, allow_negative_numbers = true)]
     pub class: Option<usize>,
     /// Skip the memory estimate made before the work starts.
     #[arg(long)]
@@ -122,35 +122,36 @@ pub fn run(args: &Args) -> Result<(), Failure> {
             "seconds": elapsed.as_secs_f64(),
             "peak_memory_bytes": peak_memory_bytes(),
         });
-        println!("{}", serde_json::to_string_pretty(&v).expect("plain JSON"));
+        outln!("{}", serde_json::to_string_pretty(&v).expect("plain JSON"));
     } else {
-        println!(
+        outln!(
             "map:                 {} (n = {}, r = {})",
             map.name().unwrap_or("-"),
             c.n,
             c.r
         );
-        println!("visibility rays:     {}", c.rays);
-        println!(
+        outln!("visibility rays:     {}", c.rays);
+        outln!(
             "arrangement:         {} vertices, {} edges",
-            c.vertices, c.edges
+            c.vertices,
+            c.edges
         );
-        println!("cells:               {} (2-cells)", c.cells);
-        println!(
+        outln!("cells:               {} (2-cells)", c.cells);
+        outln!(
             "1-cells, 0-cells:    {} and {} kept as cells of their own; {} and {} absorbed by a 2-cell",
             c.one_cells.kept, c.zero_cells.kept, c.one_cells.absorbed, c.zero_cells.absorbed
         );
-        println!("total complexity N:  {}", c.total_complexity);
-        println!("classes:             {}", c.classes);
-        println!("max |EC|:            {}", c.max_class_complexity);
-        println!("assignment conflicts:{:>4} (boundary pieces two rays assign to different sides; see `wai_cells::Conflict`)", c.conflicts);
-        println!("time:                {:.3} s", elapsed.as_secs_f64());
+        outln!("total complexity N:  {}", c.total_complexity);
+        outln!("classes:             {}", c.classes);
+        outln!("max |EC|:            {}", c.max_class_complexity);
+        outln!("assignment conflicts:{:>4} (boundary pieces two rays assign to different sides; see `wai_cells::Conflict`)", c.conflicts);
+        outln!("time:                {:.3} s", elapsed.as_secs_f64());
         match peak_memory_bytes() {
-            Some(b) => println!(
+            Some(b) => outln!(
                 "peak memory:         {} MiB (resident, whole process)",
                 b.div_ceil(1 << 20)
             ),
-            None => println!("peak memory:         unknown (no /proc/self/status)"),
+            None => outln!("peak memory:         unknown (no /proc/self/status)"),
         }
     }
     if let Some(out) = opts.svg.as_deref() {

@@ -28,8 +28,8 @@ pub fn run(args: &Args) -> Result<(), Failure> {
     let builtin = Path::new("<built-in office-floor>");
     note_normalisation(builtin, &loaded);
     let map = &loaded.map;
-    println!("The built-in default map (wai demo):\n");
-    print!("{}", crate::info::text(map));
+    outln!("The built-in default map (wai demo):\n");
+    out!("{}", crate::info::text(map));
     let json_path = out.join("office-floor.json");
     let svg_path = out.join("office-floor.svg");
     write_file(&json_path, &to_json(map))?;
@@ -48,7 +48,7 @@ pub fn run(args: &Args) -> Result<(), Failure> {
         .map_err(|e| Failure::invalid(format!("built-in map: skeleton: {e}")))?;
     let count = |k: wai_visibility::EdgeKind| vp.edges().iter().filter(|e| e.kind == k).count();
     use wai_visibility::EdgeKind::{Full, Half, Partial, Spurious};
-    println!(
+    outln!(
         "\nV_p of viewpoint (9, 2): {} vertices; edges {} full, {} half, {} partial, {} spurious",
         vp.len(),
         count(Full),
@@ -56,7 +56,7 @@ pub fn run(args: &Args) -> Result<(), Failure> {
         count(Partial),
         count(Spurious)
     );
-    println!(
+    outln!(
         "V*_p: origin v0 = {} (map vertex {}), {} vertices, {} artificial edges, kernel with {} vertices",
         sk.origin(),
         sk.map_vertices()[0],
@@ -67,7 +67,7 @@ pub fn run(args: &Args) -> Result<(), Failure> {
     // The visibility cell decomposition with its classes.
     let d = wai_cells::Decomposition::new(map);
     let c = d.counts();
-    println!(
+    outln!(
         "decomposition: {} visibility rays, {} 2-cells, N = {}, {} classes, max |EC| = {}; \
          1-cells {} kept / {} absorbed, 0-cells {} kept / {} absorbed",
         c.rays,
@@ -97,13 +97,13 @@ pub fn run(args: &Args) -> Result<(), Failure> {
             &caption,
         ),
     )?;
-    println!("wrote {}", cells_path.display());
+    outln!("wrote {}", cells_path.display());
     let vis_path = out.join("office-floor-vis.svg");
     write_file(
         &vis_path,
         &wai_render::visibility_svg(map, &vp, Some(&sk), &MapStyle::default()),
     )?;
-    println!(
+    outln!(
         "\nwrote {}, {} and {}",
         json_path.display(),
         svg_path.display(),
@@ -115,7 +115,7 @@ pub fn run(args: &Args) -> Result<(), Failure> {
     let loc = wai_localize::Localizer::from_decomposition(&d);
     let view = wai_localize::RobotView::from_visibility(&vp);
     let answer = loc.localize(&view);
-    println!(
+    outln!(
         "\nlocalize V_p of (9, 2) on this map: {} position(s): {}",
         answer.placements.len(),
         answer
@@ -138,7 +138,7 @@ pub fn run(args: &Args) -> Result<(), Failure> {
         &loc_path,
         &crate::localize::answers_svg(&corridor, &view, &answer),
     )?;
-    println!(
+    outln!(
         "localize the view from (5, -3.5) on corridor-niches k=6: {} positions: {}",
         answer.placements.len(),
         answer
@@ -148,7 +148,7 @@ pub fn run(args: &Args) -> Result<(), Failure> {
             .collect::<Vec<_>>()
             .join(", ")
     );
-    println!("wrote {}", loc_path.display());
-    println!("(`wai vis MAP --at x,y` for any viewpoint, `wai decompose MAP` for any map, `wai localize MAP --at x,y | --polygon V.json` for any view)");
+    outln!("wrote {}", loc_path.display());
+    outln!("(`wai vis MAP --at x,y` for any viewpoint, `wai decompose MAP` for any map, `wai localize MAP --at x,y | --polygon V.json` for any view)");
     Ok(())
 }

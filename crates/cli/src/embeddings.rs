@@ -19,7 +19,7 @@ pub struct Args {
     /// Map file (JSON map format or GeoJSON); `-` reads standard input.
     pub map: PathBuf,
     /// Only this class (an index printed by `wai decompose --json`).
-    #[arg(long)]
+    #[arg(long, value_parser = crate::options::count, allow_negative_numbers = true)]
     pub class: Option<usize>,
     /// Print JSON instead of text.
     #[arg(long)]
@@ -293,7 +293,7 @@ pub fn run(args: &Args) -> Result<(), Failure> {
             "r": map.r(),
             "classes": reports.iter().map(|r| json_class(map, d, r)).collect::<Vec<_>>(),
         });
-        println!("{}", serde_json::to_string_pretty(&v).expect("plain JSON"));
+        outln!("{}", serde_json::to_string_pretty(&v).expect("plain JSON"));
         return Ok(());
     }
     let total: usize = reports.iter().map(|r| r.embeddings.len()).sum();
@@ -315,13 +315,13 @@ pub fn run(args: &Args) -> Result<(), Failure> {
                 .count()
         })
         .sum();
-    println!(
+    outln!(
         "map: {} (n = {}, r = {}), {classes} classes",
         map.name().unwrap_or("-"),
         map.n(),
         map.r()
     );
-    println!(
+    outln!(
         "{} classes shown: {total} embeddings, {valid} valid; {pairs} overlapping valid pairs of one skeleton ({kernel_pairs} with overlapping kernels), {seen} with witnesses that see each other",
         reports.len()
     );
@@ -332,6 +332,6 @@ pub fn run(args: &Args) -> Result<(), Failure> {
             text_class(map, d, r, &mut out);
         }
     }
-    print!("{out}");
+    out!("{out}");
     Ok(())
 }

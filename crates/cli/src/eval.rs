@@ -27,9 +27,9 @@ pub struct Args {
     #[arg(required = true)]
     pub maps: Vec<String>,
     /// Seeded random poses per map (at least 0.2 m from every wall).
-    #[arg(long, default_value_t = 500)]
+    #[arg(long, default_value_t = 500, value_parser = crate::options::positive_count, allow_negative_numbers = true)]
     pub poses: usize,
-    #[arg(long, default_value_t = 1)]
+    #[arg(long, default_value_t = 1, value_parser = crate::options::count_u64, allow_negative_numbers = true)]
     pub seed: u64,
     /// Compass modes, comma-separated: `exact`, `none`, `noisy:ε` (ε in
     /// degrees; the reading is off by a seeded uniform error in [−ε, ε]).
@@ -46,7 +46,7 @@ pub struct Args {
     pub peer: Vec<String>,
     /// Queries per map and condition given to each peer (the first ones
     /// of ours; peers are slow).
-    #[arg(long, default_value_t = 100)]
+    #[arg(long, default_value_t = 100, value_parser = crate::options::count, allow_negative_numbers = true)]
     pub peer_poses: usize,
     /// The conditions the peers run under (as --conditions; `all` is
     /// every condition evaluated).
@@ -63,7 +63,7 @@ pub struct Args {
     pub json: bool,
     /// Exit 1 when our answer set holds the truth in fewer than this
     /// fraction of all queries (a regression gate for CI).
-    #[arg(long)]
+    #[arg(long, value_parser = crate::options::fraction, allow_negative_numbers = true)]
     pub require_answer_set: Option<f64>,
 }
 
@@ -523,9 +523,9 @@ pub fn run(args: &Args) -> Result<(), Failure> {
     let json_path = args.out.join("eval.json");
     crate::scan::write(&json_path, &text)?;
     if args.json {
-        print!("{text}");
+        out!("{text}");
     } else {
-        println!(
+        outln!(
             "\nall maps: {} queries, success {:.1} % (strict {:.1} %, loose {:.1} %), answer set holds the truth {:.1} %, median {:.2} ms",
             overall.queries,
             100.0 * overall.success_rate,
@@ -534,7 +534,7 @@ pub fn run(args: &Args) -> Result<(), Failure> {
             100.0 * overall.answer_set_contains_truth_rate,
             overall.median_ms
         );
-        println!(
+        outln!(
             "error CDF: {}; JSON: {}",
             cdf_all.display(),
             json_path.display()
@@ -559,7 +559,7 @@ fn print_table(
     summaries: &[Summary],
     cdf: &Path,
 ) {
-    println!(
+    outln!(
         "\n{} ({}, units {}): n = {}, {} cells, {} sites, preprocessed in {preprocess_s:.2} s; {} poses",
         m.name,
         m.kind,
@@ -569,7 +569,7 @@ fn print_table(
         loc.sites().len(),
         rows.first().map_or(0, |r| r.trials.len())
     );
-    println!(
+    outln!(
         "  {:<24} {:<14} {:>8} {:>8} {:>8} {:>8} {:>6} {:>9} {:>9}",
         "condition",
         "localizer",
@@ -582,7 +582,7 @@ fn print_table(
         "p90 ms"
     );
     let line = |cond: &str, who: &str, s: &Summary| {
-        println!(
+        outln!(
             "  {:<24} {:<14} {:>7.1}% {:>7.1}% {:>7.1}% {:>7.1}% {:>6.2} {:>9.2} {:>9.2}",
             cond,
             who,
@@ -612,7 +612,7 @@ fn print_table(
             );
         }
         if let Some(l) = &r.look_alikes {
-            println!(
+            outln!(
                 "  {:<24} look-alikes: {} of {} queries in a room answer the truth and all its look-alikes ({:.2} a query)",
                 "",
                 l["answer_set_holds_truth_and_all_look_alikes"],
@@ -621,5 +621,5 @@ fn print_table(
             );
         }
     }
-    println!("  error CDF: {}", cdf.display());
+    outln!("  error CDF: {}", cdf.display());
 }

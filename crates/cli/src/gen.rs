@@ -24,10 +24,10 @@ pub struct Args {
     #[arg(long)]
     pub layout: Option<String>,
     /// Vertex count target for random kinds.
-    #[arg(long, default_value_t = 20)]
+    #[arg(long, default_value_t = 20, value_parser = crate::options::count, allow_negative_numbers = true)]
     pub n: usize,
     /// Seed for random kinds and layouts (the same seed gives the same map).
-    #[arg(long, default_value_t = 0)]
+    #[arg(long, default_value_t = 0, value_parser = crate::options::count_u64, allow_negative_numbers = true)]
     pub seed: u64,
     /// Output file; standard output if absent.
     #[arg(long)]
@@ -39,7 +39,7 @@ pub struct Args {
 
 pub fn run(args: &Args) -> Result<(), Failure> {
     if args.list {
-        print!("{}", catalogue());
+        out!("{}", catalogue());
         return Ok(());
     }
     let map = match (&args.family, &args.random, &args.layout) {

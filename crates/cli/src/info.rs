@@ -24,9 +24,9 @@ pub struct Args {
 pub fn run(args: &Args) -> Result<(), Failure> {
     let loaded = load(&args.map, args.format.format)?;
     if args.json {
-        print!("{}", json(&loaded));
+        out!("{}", json(&loaded));
     } else {
-        print!("{}", text(&loaded.map));
+        out!("{}", text(&loaded.map));
     }
     Ok(())
 }

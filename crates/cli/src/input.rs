@@ -60,7 +60,7 @@ pub(crate) fn read_bytes(path: &Path) -> Result<Vec<u8>, Failure> {
 
 fn looks_like_geojson(bytes: &[u8]) -> bool {
     // Cheap sniff; the chosen parser reports any real problem.
-    serde_json::from_slice::<serde_json::Value>(bytes)
+    serde_json::from_slice::<serde_json::Value>(wai_map::json::strip_bom(bytes))
         .ok()
         .and_then(|v| v.get("type").cloned())
         .is_some()

@@ -201,18 +201,18 @@ pub fn run(args: &Args) -> Result<(), Failure> {
         if let Some(w) = &answer.nowhere {
             v["reason"] = Value::from(w.to_string());
         }
-        println!("{}", serde_json::to_string_pretty(&v).expect("plain JSON"));
+        outln!("{}", serde_json::to_string_pretty(&v).expect("plain JSON"));
     } else {
         match &answer.nowhere {
-            Some(w) => println!("no position: {w}"),
+            Some(w) => outln!("no position: {w}"),
             None => {
-                println!(
+                outln!(
                     "{} position(s), class {}:",
                     answer.placements.len(),
                     answer.class.expect("found")
                 );
                 for a in &answer.placements {
-                    println!(
+                    outln!(
                         "  {}  (v0 at map vertex {})",
                         show(map, &a.position),
                         a.origin_vertex

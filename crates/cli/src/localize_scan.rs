@@ -32,7 +32,7 @@ pub struct Args {
     #[arg(long, default_value = "exact")]
     pub compass: String,
     /// The compass reading in degrees (counter-clockwise from the x axis).
-    #[arg(long, allow_hyphen_values = true)]
+    #[arg(long, value_parser = crate::options::finite, allow_negative_numbers = true)]
     pub heading: Option<f64>,
     /// The map's units: `auto`, `m`, `lonlat` or `scale:K` (K metres per
     /// unit). Auto: longitude/latitude when the map spans less than 0.1°
@@ -66,6 +66,12 @@ pub fn run(args: &Args) -> Result<(), Failure> {
         (CompassMode::Exact, Some(h)) => Compass::Exact(h),
         (CompassMode::Noisy(eps), Some(h)) => Compass::Noisy { heading: h, eps },
     };
+    if let Err(why) = scan.localizable(matches!(compass, Compass::Exact(_))) {
+        return Err(Failure::invalid(format!(
+            "{}: not localizable: {why}",
+            args.scan.display()
+        )));
+    }
     let t = Instant::now();
     let loc = ScanLocalizer::new(
         &m.map,
@@ -96,13 +102,13 @@ pub fn run(args: &Args) -> Result<(), Failure> {
             "ranked": answer.ranked.iter().map(|r| json!({"cell": cell_of(r.site), "site": loc.sites()[r.site].at, "pcm": r.pcm, "heading_degrees": r.heading.to_degrees()})).collect::<Vec<_>>(),
             "pcm_evaluations": answer.evaluations,
         });
-        println!(
+        outln!(
             "{}",
             serde_json::to_string_pretty(&out).expect("plain JSON")
         );
         return Ok(());
     }
-    println!(
+    outln!(
         "{}: {} cells, {} sites, preprocessed in {preprocess_s:.2} s; query {ms:.1} ms ({} PCM evaluations)",
         m.name,
         loc.cells().len(),
@@ -110,8 +116,8 @@ pub fn run(args: &Args) -> Result<(), Failure> {
         answer.evaluations
     );
     match &answer.best {
-        None => println!("no pose found"),
-        Some(b) => println!(
+        None => outln!("no pose found"),
+        Some(b) => outln!(
             "best pose ({:.3}, {:.3}) heading {:.2}° in cell {}, score {:.5}",
             b.pose.x,
             b.pose.y,
@@ -120,12 +126,12 @@ pub fn run(args: &Args) -> Result<(), Failure> {
             b.score
         ),
     }
-    println!(
+    outln!(
         "answer set ({} poses as good as the best):",
         answer.answer_set.len()
     );
     for h in &answer.answer_set {
-        println!(
+        outln!(
             "  ({:.3}, {:.3}) {:.2}°  score {:.5}",
             h.pose.x,
             h.pose.y,

@@ -14,6 +14,11 @@
 //!
 //! Exit codes: 0 success; 1 the map is invalid; 2 bad usage; 3 the file
 //! could not be read or written. Errors say what and where, never panic.
+//! A closed pipe on standard output ends a command quietly with 141
+//! (`stdout`).
+
+#[macro_use]
+mod stdout;
 
 mod check;
 mod check_target;
@@ -28,6 +33,7 @@ mod info;
 mod input;
 mod localize;
 mod localize_scan;
+mod options;
 mod output;
 mod preprocess;
 mod render;

@@ -21,7 +21,7 @@ pub fn output(out: Option<&Path>, text: &str) -> Result<(), Failure> {
     match out {
         Some(path) => write_file(path, text),
         None => {
-            print!("{text}");
+            out!("{text}");
             Ok(())
         }
     }

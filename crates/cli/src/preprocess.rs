@@ -25,7 +25,7 @@ pub fn run(args: &Args) -> Result<(), Failure> {
     let text = wai_localize::file::to_json(&loc);
     std::fs::write(out, &text).map_err(|e| Failure::io(format!("{}: {e}", out.display())))?;
     let (cells, traps) = (loc.cells(), loc.trapezoids());
-    println!(
+    outln!(
         "{}: {} classes, {cells} cells of every dimension, {traps} trapezoids; {} bytes written to {}",
         path.display(),
         loc.classes(),

@@ -27,25 +27,26 @@ pub struct Args {
     #[arg(long, allow_hyphen_values = true)]
     pub at: String,
     /// Standard deviation of the Gaussian range noise, in the map's units.
-    #[arg(long, default_value_t = 0.0, allow_hyphen_values = true)]
+    #[arg(long, default_value_t = 0.0, value_parser = crate::options::non_negative, allow_negative_numbers = true)]
     pub noise: f64,
     /// Beams at equal angles.
-    #[arg(long, default_value_t = 720)]
+    #[arg(long, default_value_t = 720, value_parser = crate::options::positive_count, allow_negative_numbers = true)]
     pub beams: usize,
-    /// Field of view in degrees, centred on the heading (360 or 180).
-    #[arg(long, default_value_t = 360.0)]
+    /// Field of view in degrees, in (0, 360], centred on the heading (the
+    /// thesis's scanners see 360 or 180).
+    #[arg(long, default_value_t = 360.0, value_parser = crate::options::fov_degrees, allow_negative_numbers = true)]
     pub fov: f64,
     /// Returns beyond this range are lost (null in the scan).
-    #[arg(long)]
+    #[arg(long, value_parser = crate::options::positive, allow_negative_numbers = true)]
     pub max_range: Option<f64>,
     /// Unknown obstacles: this many boxes the map does not know.
-    #[arg(long, default_value_t = 0)]
+    #[arg(long, default_value_t = 0, value_parser = crate::options::count, allow_negative_numbers = true)]
     pub obstacles: usize,
     /// Side of each obstacle box, in the map's units.
-    #[arg(long, default_value_t = 0.5)]
+    #[arg(long, default_value_t = 0.5, value_parser = crate::options::positive, allow_negative_numbers = true)]
     pub obstacle_size: f64,
     /// Seed of the noise and the obstacles.
-    #[arg(long, default_value_t = 0)]
+    #[arg(long, default_value_t = 0, value_parser = crate::options::count_u64, allow_negative_numbers = true)]
     pub seed: u64,
     /// Write the scan here instead of standard output.
     #[arg(long)]
@@ -129,7 +130,7 @@ pub fn run(args: &Args) -> Result<(), Failure> {
     match &args.out {
         Some(path) => write(path, &text),
         None => {
-            print!("{text}");
+            out!("{text}");
             Ok(())
         }
     }

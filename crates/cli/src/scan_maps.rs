@@ -182,7 +182,7 @@ fn load_file(spec: &str, units: &str) -> Result<EvalMap, Failure> {
 pub(crate) fn read_scan(path: &Path) -> Result<(Scan, Option<f64>, Option<f64>), Failure> {
     let bytes = crate::input::read_bytes(path)?;
     let shown = path.display();
-    let v: Value = serde_json::from_slice(&bytes)
+    let v: Value = serde_json::from_slice(wai_map::json::strip_bom(&bytes))
         .map_err(|e| Failure::invalid(format!("{shown}: not JSON: {e}")))?;
     let numbers = |key: &str| -> Result<Vec<Option<f64>>, Failure> {
         v.get(key)
@@ -230,10 +230,15 @@ pub(crate) fn read_scan(path: &Path) -> Result<(Scan, Option<f64>, Option<f64>),
         .pointer("/sensor/max_range")
         .and_then(Value::as_f64)
         .filter(|r| r.is_finite() && *r > 0.0);
-    let heading = v
-        .pointer("/pose/heading_degrees")
-        .and_then(Value::as_f64)
-        .map(f64::to_radians);
+    let heading = match v.pointer("/pose/heading_degrees") {
+        None | Some(Value::Null) => None,
+        Some(h) => Some(h.as_f64().filter(|h| h.is_finite()).ok_or_else(|| {
+            Failure::invalid(format!(
+                "{shown}: pose.heading_degrees = {h} is not a finite number"
+            ))
+        })?),
+    }
+    .map(f64::to_radians);
     Ok((Scan { angles, ranges }, max_range, heading))
 }
 

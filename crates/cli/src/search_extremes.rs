@@ -48,10 +48,10 @@ pub struct Args {
     pub budget: Option<String>,
     /// Stop after this many evaluations, the starts included (a run is a
     /// function of seed and evaluation count: this reproduces it).
-    #[arg(long)]
+    #[arg(long, value_parser = crate::options::count_u64, allow_negative_numbers = true)]
     pub evals: Option<u64>,
     /// Seed of every random choice (random starts, mutations, restarts).
-    #[arg(long, default_value_t = 0)]
+    #[arg(long, default_value_t = 0, value_parser = crate::options::count_u64, allow_negative_numbers = true)]
     pub seed: u64,
     /// Start maps: random maps of every random kind, the thesis families,
     /// or both.
@@ -65,21 +65,21 @@ pub struct Args {
     #[arg(long, default_value = "counterexamples")]
     pub out: PathBuf,
     /// At most this many vertices per map (keeps each evaluation affordable).
-    #[arg(long, default_value_t = 40)]
+    #[arg(long, default_value_t = 40, value_parser = crate::options::count, allow_negative_numbers = true)]
     pub max_n: usize,
     /// Evaluate only maps with at least this many reflex vertices (the
     /// default 1 leaves out convex maps, whose one cell gives |EC| / n = 2).
-    #[arg(long, default_value_t = 1)]
+    #[arg(long, default_value_t = 1, value_parser = crate::options::count, allow_negative_numbers = true)]
     pub min_r: usize,
     /// Climbers in the pool.
-    #[arg(long, default_value_t = 8)]
+    #[arg(long, default_value_t = 8, value_parser = crate::options::positive_count, allow_negative_numbers = true)]
     pub pool: usize,
     /// How many of the best distinct maps to write.
-    #[arg(long, default_value_t = 1)]
+    #[arg(long, default_value_t = 1, value_parser = crate::options::positive_count, allow_negative_numbers = true)]
     pub keep: usize,
     /// Restart a climber after this many of its evaluations without an
     /// improvement.
-    #[arg(long, default_value_t = 200)]
+    #[arg(long, default_value_t = 200, value_parser = crate::options::count_u64, allow_negative_numbers = true)]
     pub stall: u64,
     /// Let orthogonal maps become non-orthogonal (by default they are
     /// mutated only by the operators that keep them orthogonal).
@@ -229,7 +229,7 @@ pub fn run(args: &Args) -> Result<(), Failure> {
     });
     progress.bar.finish_and_clear();
     let written = write_best(args, budget, &outcome)?;
-    print!("{}", summary(args, &outcome, &written));
+    out!("{}", summary(args, &outcome, &written));
     Ok(())
 }
 

@@ -216,7 +216,7 @@ pub fn run(args: &Args) -> Result<(), Failure> {
         let picture = visibility_svg(map, &vp, Some(&sk), &MapStyle::default());
         std::fs::write(out, picture).map_err(|e| Failure::io(format!("{}: {e}", out.display())))?;
     }
-    print!(
+    out!(
         "{}",
         if as_json {
             json(map, &vp, &sk)

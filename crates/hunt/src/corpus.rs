@@ -12,7 +12,8 @@
 pub fn corpus_maps() -> Result<Vec<wai_map::Map>, String> {
     // The figures and violations of `counterexamples/`: some chapter 4
     // configurations (Figs 4.1, 4.2, 4.31) occur in none of the others.
-    let stored = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../../counterexamples");
+    let repo = crate::repository::root()?;
+    let stored = repo.join("counterexamples");
     let mut maps = maps_in(&stored, "counterexamples", usize::MAX)?;
     for f in wai_gen::FAMILIES {
         let before = maps.len();
@@ -25,7 +26,7 @@ pub fn corpus_maps() -> Result<Vec<wai_map::Map>, String> {
             return Err(format!("family {} gave no map at parameters 1..=6", f.id));
         }
     }
-    let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../../../shared/datasets");
+    let root = repo.join("../shared/datasets");
     for (sub, max_n) in [
         ("r2v", usize::MAX),
         ("westport", usize::MAX),

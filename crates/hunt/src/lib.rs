@@ -23,6 +23,7 @@ pub mod counterexample;
 pub mod extremes;
 pub mod provenance;
 pub mod record;
+pub mod repository;
 pub mod search;
 pub mod shrink;
 pub mod store;

@@ -71,9 +71,16 @@ pub(crate) fn structure(path: &str, message: &str) -> MapError {
 
 /// Bytes to a JSON value, with an error for empty, non-UTF-8 and malformed
 /// input.
+/// `bytes` without a leading UTF-8 byte-order mark (EF BB BF), which some
+/// editors write and JSON readers may ignore (RFC 8259 sec. 8.1).
+pub fn strip_bom(bytes: &[u8]) -> &[u8] {
+    bytes.strip_prefix(b"\xEF\xBB\xBF").unwrap_or(bytes)
+}
+
 pub(crate) fn parse_value(bytes: &[u8]) -> Result<Value, MapError> {
-    let text = std::str::from_utf8(bytes).map_err(|e| MapError::NotUtf8 {
-        offset: e.valid_up_to(),
+    let body = strip_bom(bytes);
+    let text = std::str::from_utf8(body).map_err(|e| MapError::NotUtf8 {
+        offset: bytes.len() - body.len() + e.valid_up_to(),
     })?;
     if text.trim().is_empty() {
         return Err(MapError::Empty);

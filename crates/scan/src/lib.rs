@@ -171,6 +171,39 @@ impl Scan {
         json!({ "angles": self.angles, "ranges": self.ranges })
     }
 
+    /// The returns: beams with a range.
+    pub fn returns(&self) -> usize {
+        self.ranges.iter().filter(|r| r.is_some()).count()
+    }
+
+    /// Whether the scan can fix a pose at all, or why not: a pose has two
+    /// unknowns when the heading is known (`heading_known`: an exact
+    /// compass) and three when it is not, and each return is one equation,
+    /// so fewer returns than unknowns leave a continuum of poses that fit
+    /// exactly, and any ranking of them would be arbitrary.
+    pub fn localizable(&self, heading_known: bool) -> Result<(), String> {
+        let needed = if heading_known { 2 } else { 3 };
+        match self.returns() {
+            k if k >= needed => Ok(()),
+            0 => Err(format!(
+                "the scan has no returns (all {} beams are null: nothing within \
+                 range), so every pose fits it",
+                self.ranges.len()
+            )),
+            k => Err(format!(
+                "the scan has {k} return{} of {} beams; a pose has {needed} unknowns \
+                 {}, so it needs at least {needed}",
+                if k == 1 { "" } else { "s" },
+                self.ranges.len(),
+                if heading_known {
+                    "(x, y) with the heading known"
+                } else {
+                    "(x, y, heading) without an exact compass"
+                }
+            )),
+        }
+    }
+
     /// The scan points in the robot's frame (x ahead), one per return.
     pub fn points(&self) -> Vec<(f64, f64)> {
         self.angles

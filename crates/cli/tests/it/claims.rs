@@ -1,6 +1,6 @@
 //! `wai claims`: README.md's claims table is what the command generates
-//! from `lemmas/last-run.json` and the registry; `--json` has the keys of
-//! issue 11; `--help` answers at once; a missing or malformed record is a
+//! from `lemmas/last-run.json` and the registry; `--json` has the keys the
+//! dashboard reads; `--help` answers at once; a missing or malformed record is a
 //! clear error (exit 3).
 
 use super::{text, wai};
@@ -206,4 +206,36 @@ fn missing_or_malformed_records_are_clear_errors() {
     );
     std::fs::remove_file(&path).ok();
     assert!(!Path::new(&path).exists());
+}
+
+/// The record is found under the repository the command is run in, never
+/// through the path the binary was built at: outside any copy of the
+/// repository `wai claims` says so (exit 3) unless given `--record`, and
+/// from any folder inside it, it reads that copy's record.
+#[test]
+fn the_record_is_found_from_the_current_directory() {
+    let outside = tmp("outside");
+    std::fs::create_dir_all(&outside).unwrap();
+    let run_in = |dir: &Path, args: &[&str]| {
+        std::process::Command::new(env!("CARGO_BIN_EXE_wai"))
+            .args(args)
+            .current_dir(dir)
+            .output()
+            .expect("the wai binary runs")
+    };
+    let out = run_in(&outside, &["claims"]);
+    let err = text(&out.stderr);
+    assert_eq!(out.status.code(), Some(3), "{err}");
+    assert!(err.contains("not inside a copy of this repository") && err.contains("--record"));
+
+    let out = run_in(&outside, &["claims", "--record", RECORD]);
+    assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
+
+    let inside = Path::new(env!("CARGO_MANIFEST_DIR")).join("src");
+    let out = run_in(&inside, &["claims"]);
+    assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
+    let repo = Path::new(env!("CARGO_MANIFEST_DIR")).join("../..");
+    let record = repo.canonicalize().unwrap().join("lemmas/last-run.json");
+    assert!(text(&out.stdout).contains(&record.display().to_string()));
+    std::fs::remove_dir_all(&outside).ok();
 }

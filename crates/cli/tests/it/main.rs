@@ -456,3 +456,171 @@ mod extremes;
 mod localize;
 mod scan;
 mod scan_eval;
+
+/// Runs `wai args` with its standard output read for `keep` bytes and then
+/// closed, as `wai … | head -c keep` does; the exit status and standard
+/// error.
+fn with_closed_pipe(args: &[&str], keep: usize) -> (Option<i32>, String) {
+    use std::io::Read;
+    let mut child = Command::new(env!("CARGO_BIN_EXE_wai"))
+        .args(args)
+        .stdin(Stdio::null())
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .expect("the wai binary runs");
+    let mut stdout = child.stdout.take().unwrap();
+    let mut head = vec![0; keep];
+    stdout.read_exact(&mut head).unwrap();
+    drop(stdout);
+    let out = child.wait_with_output().unwrap();
+    (out.status.code(), text(&out.stderr))
+}
+
+/// A reader that closes the pipe ends the command quietly with 141 (as a
+/// shell reports SIGPIPE), never with a panic: output written in one piece
+/// (a map's JSON, far beyond the pipe's buffer) and line by line (`wai
+/// check`'s table, the pipe closed before its first line).
+#[test]
+fn a_closed_pipe_ends_a_command_quietly() {
+    let (code, err) = with_closed_pipe(
+        &[
+            "gen",
+            "--random",
+            "random-simple-star",
+            "--n",
+            "3000",
+            "--seed",
+            "1",
+        ],
+        10,
+    );
+    assert_eq!(code, Some(141), "stderr: {err}");
+    assert!(err.is_empty(), "nothing to say on a closed pipe: {err}");
+
+    let (code, err) = with_closed_pipe(
+        &["check", "T3.2", "--maps", "special-comb", "--count", "2"],
+        0,
+    );
+    assert_eq!(code, Some(141), "stderr: {err}");
+    assert!(!err.contains("panicked"), "{err}");
+}
+
+/// Every numeric option refuses NaN, infinities, negative counts and
+/// values outside its documented range when the command line is read: exit
+/// status 2, the option and the value named, no work started.
+#[test]
+fn bad_numeric_options_are_refused() {
+    let cases: &[(&[&str], &str)] = &[
+        (
+            &["localize-scan", "office:2", "s.json", "--heading", "NaN"],
+            "--heading",
+        ),
+        (
+            &["localize-scan", "office:2", "s.json", "--heading", "1e400"],
+            "not a finite number",
+        ),
+        (
+            &["scan", "office:2", "--at", "5,5", "--fov", "400"],
+            "(0, 360]",
+        ),
+        (&["scan", "office:2", "--at", "5,5", "--fov", "0"], "--fov"),
+        (
+            &["scan", "office:2", "--at", "5,5", "--max-range", "-3"],
+            "--max-range",
+        ),
+        (
+            &["scan", "office:2", "--at", "5,5", "--noise", "inf"],
+            "--noise",
+        ),
+        (&["scan", "office:2", "--at", "5,5", "--beams", "0"], "≥ 1"),
+        (
+            &["scan", "office:2", "--at", "5,5", "--obstacle-size", "0"],
+            "--obstacle-size",
+        ),
+        (&["eval", "office:2", "--poses", "-5"], "-5 is negative"),
+        (
+            &["eval", "office:2", "--require-answer-set", "1.5"],
+            "(0, 1]",
+        ),
+        (&["check", "--threads", "0"], "--threads"),
+        (&["check", "--count", "-1"], "negative"),
+        (
+            &["gen", "--random", "random-simple-star", "--n", "-4"],
+            "--n",
+        ),
+        (&["search-extremes", "--pool", "0"], "--pool"),
+        (&["decompose", "office:2", "--class", "-1"], "--class"),
+    ];
+    for (args, needle) in cases {
+        let out = wai(args, b"");
+        let err = text(&out.stderr);
+        assert_eq!(out.status.code(), Some(2), "{args:?}: {err}");
+        assert!(
+            err.contains(needle),
+            "{args:?}: missing {needle:?} in: {err}"
+        );
+        assert!(!err.contains("unexpected argument"), "{args:?}: {err}");
+        assert!(out.stdout.is_empty(), "{args:?}");
+    }
+}
+
+/// A map file that starts with a UTF-8 byte-order mark reads as without.
+#[test]
+fn a_byte_order_mark_is_ignored() {
+    let out = wai(
+        &["info", "-"],
+        b"\xEF\xBB\xBF{\"name\": \"sq\", \"outer\": [[0, 0], [1, 0], [1, 1], [0, 1]]}",
+    );
+    assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
+    assert!(text(&out.stdout).contains("vertices n:   4"));
+}
+
+/// A scan with too few returns to fix a pose is refused as not
+/// localizable, with the reason, instead of a dozen "equally good" poses.
+#[test]
+fn a_scan_without_enough_returns_is_not_localizable() {
+    let dir = std::env::temp_dir().join(format!("wai-returns-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let cases = [
+        (
+            r#"{"angles": [0, 1, 2], "ranges": [null, null, null]}"#,
+            "exact",
+            "no returns",
+        ),
+        (
+            r#"{"angles": [0], "ranges": [1.5]}"#,
+            "exact",
+            "1 return of 1 beams",
+        ),
+        (
+            r#"{"angles": [0, 1, 2], "ranges": [1.5, 2.0, null]}"#,
+            "none",
+            "at least 3",
+        ),
+    ];
+    for (i, (scan, compass, needle)) in cases.iter().enumerate() {
+        let path = dir.join(format!("scan-{i}.json"));
+        std::fs::write(&path, scan).unwrap();
+        let p = path.to_str().unwrap();
+        let out = wai(
+            &[
+                "localize-scan",
+                "office:2",
+                p,
+                "--compass",
+                compass,
+                "--heading",
+                "0",
+            ],
+            b"",
+        );
+        let err = text(&out.stderr);
+        assert_eq!(out.status.code(), Some(1), "{scan}: {err}");
+        assert!(
+            err.contains("not localizable") && err.contains(needle),
+            "{scan}: {err}"
+        );
+    }
+    std::fs::remove_dir_all(&dir).ok();
+}
