@@ -77,7 +77,7 @@ fn bad_poses_and_settings_are_refused() {
         (
             vec!["scan", f, "--at", "1,1", "--beams", "0"],
             2,
-            "at least one beam",
+            "expected a whole number ≥ 1",
         ),
         (vec!["scan", f, "--at", "1,1", "--noise", "-1"], 2, "noise"),
     ] {

@@ -208,7 +208,7 @@ fn bad_scans_compasses_and_maps_are_refused_with_a_message() {
             vec!["eval", "rooms:2", "--conditions", "fog"],
             "condition \"fog\"",
         ),
-        (vec!["eval", "rooms:2", "--poses", "0"], "at least 1"),
+        (vec!["eval", "rooms:2", "--poses", "0"], "≥ 1"),
         (vec!["eval", "rooms:2", "--peer", "nobody"], "nobody"),
         (vec!["eval", "rooms:2", "--units", "furlongs"], "furlongs"),
     ] {
