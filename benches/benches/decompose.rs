@@ -51,7 +51,7 @@ fn bench(c: &mut Criterion) {
             "decompose/{name}/{param}: n = {}, r = {}, cells = {}, N = {}",
             counts.n, counts.r, counts.cells, counts.total_complexity
         );
-        // Throughput in 2-cells per second (issue 7's measure).
+        // Throughput in 2-cells per second, the sweep's measure.
         g.throughput(Throughput::Elements(counts.cells as u64));
         g.bench_with_input(BenchmarkId::new(&name, &param), &map, |b, m| {
             b.iter(|| {

@@ -1,5 +1,5 @@
 //! The embeddings (Def 3.11) of every class's skeleton, with candidate
-//! edges and kernels, ids `embed/{map}/{param}` (issue 8: all embeddings
+//! edges and kernels, ids `embed/{map}/{param}` (the aim: all embeddings
 //! of all classes of the thesis-size map in ≤ 1 s). The decomposition is
 //! built once, outside the measurement.
 

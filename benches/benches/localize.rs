@@ -1,4 +1,4 @@
-//! The reference localizer (issue 9), ids `localize/{stage}/{map}`:
+//! The exact reference localizer (Algs 3.13–3.14), ids `localize/{stage}/{map}`:
 //! preprocessing (Alg 3.14: decomposition and one overlay per class),
 //! the query (Alg 3.13) over a fixed set of simulated views (alone, and
 //! with V's input check), and the brute-force and one-shot oracles on

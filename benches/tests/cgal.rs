@@ -370,7 +370,7 @@ fn skyline(k: usize, seed: u64) -> Map {
 
 fn agplib(path: &str) -> Option<Map> {
     let full = format!(
-        "{}/../../shared/datasets/agplib/{path}",
+        "{}/../data/datasets/agplib/{path}",
         env!("CARGO_MANIFEST_DIR")
     );
     match std::fs::read(&full) {

@@ -147,7 +147,7 @@ impl Claim {
 
 use Kind::{Bound, Exact, ExactTight, Example, Tight};
 
-/// Every claim of `shared/CLAIMS.md`, in its order. A test checks this table
+/// Every claim of `data/CLAIMS.md`, in its order. A test checks this table
 /// against the file, id by id and kind by kind.
 pub static CLAIMS: &[Claim] = &[
     // Chapter 3 — the Guibas–Motwani–Raghavan scheme.

@@ -21,7 +21,7 @@
 //!   values of their one parameter, whose figure viewpoints
 //!   [`wai_study::sample::viewpoints`] puts first;
 //! - every map of `agplib/{simple,ortho,vonkoch}` and `r2v` under the
-//!   datasets directory (`<repo>/../shared/datasets`, or `--datasets DIR`).
+//!   datasets directory (`<repo>/data/datasets`, or `--datasets DIR`).
 //!
 //! Viewpoints per map: 4 of [`wai_study::sample::viewpoints`] (midpoints of
 //! vertex pairs, meeting points of two lines through vertex pairs, points on
@@ -97,7 +97,7 @@ const USAGE: &str = concat!(
     "  --viewpoints K     viewpoints per map with n < 1000, 2/3 sampled, 1/3 random\n",
     "                     (default 6; n >= 1000: ceil(K/2))\n",
     "  --no-datasets      random maps only\n",
-    "  --datasets DIR     the shared datasets directory (default <repo>/../shared/datasets)\n",
+    "  --datasets DIR     the datasets directory (default <repo>/data/datasets)\n",
     "  --max-dataset-n N  skip AGPLIB maps with more than N vertices (default: none; --quick: 100)\n",
     "  --examples K       print the first K matches after C2 in full\n",
     "  --inject-fault K   self-test of the harness: drop a vertex from every K-th polygon of\n",
@@ -163,7 +163,7 @@ fn parse_args() -> Result<Args, String> {
             other => return Err(format!("unknown argument {other:?}")),
         }
     }
-    let default_dir = || Path::new(env!("CARGO_MANIFEST_DIR")).join("../../shared/datasets");
+    let default_dir = || Path::new(env!("CARGO_MANIFEST_DIR")).join("../data/datasets");
     Ok(Args {
         polygons: polygons.unwrap_or(if quick { 200 } else { 2016 }),
         datasets: if no_datasets {
@@ -222,7 +222,7 @@ fn dataset_files(
         let full = root.join(dir);
         let entries = std::fs::read_dir(&full).map_err(|e| {
             format!(
-                "cannot read {}: {e} (the run needs shared/datasets; --no-datasets skips them)",
+                "cannot read {}: {e} (the run needs data/datasets; --no-datasets skips them)",
                 full.display()
             )
         })?;

@@ -1,5 +1,4 @@
-//! The localizer against the brute-force oracle on many queries (issue 9's
-//! acceptance): over the stress corpus (polyominoes, families, datasets,
+//! The localizer against the brute-force oracle on many queries: over the stress corpus (polyominoes, families, datasets,
 //! counterexamples) and seeded random and chapter 4 layout maps, views from
 //! viewpoints in cells of every dimension (points on rays, 1- and 0-cells)
 //! and random points; each answer must equal the brute force's and the

@@ -11,7 +11,7 @@ use std::cmp::Ordering;
 use wai_exact::Vector;
 
 /// A boundary piece that two rays assign to different cells (reported,
-/// never hidden: issue 4, DESIGN "Degenerate cases").
+/// never hidden).
 #[derive(Clone, Debug, PartialEq, Eq, Hash)]
 pub enum Conflict {
     /// The rays covering `edge` disagree: `left` assign it to the face of

@@ -158,7 +158,8 @@ pub struct KeptAbsorbed {
     pub absorbed: usize,
 }
 
-/// The counts issue 4 snapshots and plots, from [`Decomposition::counts`].
+/// The counts the snapshots keep and the sweep plots, from
+/// [`Decomposition::counts`].
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct Counts {
     /// Map vertices.

@@ -342,6 +342,23 @@ fn text(record: &RunRecord, path: &Path, rows: &[Row<'_>]) -> String {
     out
 }
 
+/// The run's command without the options that only say where it wrote its
+/// files (`--record`, `--out`, `--largest`): what was examined, not the
+/// folders of the machine it ran on.
+fn what_was_run(command: &str) -> String {
+    const WHERE: [&str; 3] = ["--record", "--out", "--largest"];
+    let mut words = command.split_whitespace();
+    let mut kept = Vec::new();
+    while let Some(w) = words.next() {
+        if WHERE.contains(&w) {
+            words.next();
+        } else if !WHERE.iter().any(|o| w.starts_with(&format!("{o}="))) {
+            kept.push(w);
+        }
+    }
+    kept.join(" ")
+}
+
 /// A table cell's text with `|` escaped.
 fn cell(s: &str) -> String {
     s.replace('|', "\\|")
@@ -352,7 +369,7 @@ fn markdown(record: &RunRecord, rows: &[Row<'_>]) -> String {
     let code = |s: &str| format!("`{}`", s.replace('`', "'"));
     let mut out = format!(
         "Last recorded run: {} at commit {}, {}: {} maps{} in {} s.\n\n",
-        code(&record.command),
+        code(&what_was_run(&record.command)),
         code(&record.commit),
         record.date,
         record.maps,
@@ -510,6 +527,17 @@ pub fn run(args: &Args) -> Result<(), Failure> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn the_table_shows_what_was_run_not_where_it_wrote() {
+        assert_eq!(
+            what_was_run(
+                "wai check --maps all --record lemmas/last-run.json --out /tmp/a \
+                 --largest=/tmp/b --seed 1"
+            ),
+            "wai check --maps all --seed 1"
+        );
+    }
 
     #[test]
     fn the_table_is_replaced_between_the_markers_only() {

@@ -11,7 +11,7 @@ pub enum Format {
     /// GeoJSON if the file's top-level object has a "type", else the map format.
     #[default]
     Auto,
-    /// The map format of shared/datasets/README.md.
+    /// The map format of data/datasets/README.md.
     Json,
     /// A GeoJSON Polygon (or a Feature or FeatureCollection holding one).
     Geojson,
@@ -98,7 +98,7 @@ pub fn load_bytes(path: &Path, bytes: &[u8], format: Format) -> Result<Loaded, F
             }
         }
         if matches!(errors.first(), MapError::Syntax { .. }) && !geo && format == Format::Auto {
-            msg.push_str("\n  (expected the map format of shared/datasets/README.md or GeoJSON)");
+            msg.push_str("\n  (expected the map format of data/datasets/README.md or GeoJSON)");
         }
         Failure::invalid(msg)
     })?;

@@ -8,7 +8,7 @@ use std::fmt;
 /// The largest supported magnitude of an input coordinate, in bits:
 /// every coordinate `c` of a [`Point`] satisfies `|c| < 2^MAX_COORD_BITS`.
 ///
-/// It covers every map of `shared/datasets` (the largest, AGPLIB's dyadic
+/// It covers every map of `data/datasets` (the largest, AGPLIB's dyadic
 /// random simple polygons scaled to integers, need 70 bits) with room to
 /// spare, and keeps every coordinate difference inside an `i128`. Maps
 /// enforce it on input; the predicates stay exact for any `i128`.

@@ -1,7 +1,7 @@
 //! Maps from bytes, valid by construction, for the structure-aware fuzz
-//! targets (`fuzz/`, issue 11) and `wai check`'s map kind "bytes"
-//! (STYLE.md 8: fuzz targets build maps from bytes the way the generators
-//! do, instead of returning early on invalid input).
+//! targets (`fuzz/`) and `wai check`'s map kind "bytes": the targets
+//! build maps from bytes the way the generators do, instead of returning
+//! early on invalid input.
 //!
 //! [`map_from_bytes`] reads a [`Shape`] and its parameters from an
 //! [`arbitrary::Unstructured`] and builds the map with this crate's own

@@ -3,8 +3,8 @@
 //! 1 m wide, corridors 2 m wide.
 //!
 //! - [`repeated_rooms`]: k identical rooms off one corridor — the
-//!   symmetric building where every room has look-alikes (issue 12: the
-//!   answer set must hold them all).
+//!   symmetric building where every room has look-alikes (the scan
+//!   localizer's answer set must hold them all).
 //! - [`office`]: two rows of rooms of seeded widths and depths along a
 //!   corridor, seeded door positions, and a seeded niche in some back
 //!   walls — a floor of a few thousand visibility cells.

@@ -1,5 +1,5 @@
 //! Seeded mutations of maps, for the local search of `wai
-//! search-extremes` (issue 10, "Search for the worst case").
+//! search-extremes` and `wai check --target`.
 //!
 //! A [`Mutation`] proposes a new ring from a map's vertices: move a vertex,
 //! shift an edge along its normal, insert a displaced vertex on an edge,

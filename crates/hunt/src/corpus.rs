@@ -1,7 +1,7 @@
 //! The fixed corpus of maps that `wai check --maps corpus` runs: the maps
 //! of `counterexamples/` (the figures of the example claims, the stored
 //! violations), every thesis family at parameters 1 to 6, the maps of
-//! `shared/datasets` that the cells tests decompose (R2V, Westport, AGPLIB
+//! `data/datasets` that the cells tests decompose (R2V, Westport, AGPLIB
 //! up to 60 vertices) and every free polyomino of up to 8 cells — in that
 //! order, so that a run cut short by a budget has seen the rarest first.
 
@@ -26,7 +26,7 @@ pub fn corpus_maps() -> Result<Vec<wai_map::Map>, String> {
             return Err(format!("family {} gave no map at parameters 1..=6", f.id));
         }
     }
-    let root = repo.join("../shared/datasets");
+    let root = repo.join("data/datasets");
     for (sub, max_n) in [
         ("r2v", usize::MAX),
         ("westport", usize::MAX),
@@ -37,7 +37,7 @@ pub fn corpus_maps() -> Result<Vec<wai_map::Map>, String> {
         let dir = root.join(sub);
         if !dir.is_dir() {
             return Err(format!(
-                "{}: no such directory (the corpus needs shared/ beside the checkout)",
+                "{}: no such directory (the corpus reads the repository's data/datasets)",
                 dir.display()
             ));
         }

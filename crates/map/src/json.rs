@@ -1,4 +1,4 @@
-//! The map file format of `shared/datasets/README.md`, read and written
+//! The map file format of `data/datasets/README.md`, read and written
 //! exactly.
 //!
 //! ```json

@@ -10,7 +10,7 @@
 //! Every bad input is a typed [`MapError`] that says what is wrong and
 //! where; [`validate_all`] collects every problem of a ring, not only the
 //! first. [`json`] reads and writes the map format of
-//! `shared/datasets/README.md`; [`geojson`] imports a GeoJSON Polygon.
+//! `data/datasets/README.md`; [`geojson`] imports a GeoJSON Polygon.
 //!
 //! # Invariant
 //! No floating point is read: numbers are parsed from their text.

@@ -1,4 +1,4 @@
-//! The evaluation protocol of issue 12: seeded random poses in a map, a
+//! The scan localizer's evaluation protocol: seeded random poses in a map, a
 //! simulated scan at each, the localizer's answer compared with the truth.
 //!
 //! Success is a position error below 0.5 m and a heading error below 10°
@@ -86,8 +86,8 @@ pub fn random_poses(
 }
 
 /// One condition of the protocol: the sensor and the unknown obstacles
-/// (issue 12: the base scanner, 5 boxes, a 180° field of view and a
-/// 10 m range cutoff each get their own row).
+/// (the base scanner, 5 boxes, a 180° field of view and a 10 m range
+/// cutoff each get their own row).
 #[derive(Debug, Clone, PartialEq)]
 pub struct Condition {
     pub name: &'static str,
@@ -344,7 +344,7 @@ pub fn summarise(trials: &[Trial], outcomes: &[Outcome]) -> Summary {
 }
 
 impl Summary {
-    /// The JSON of `wai eval`: the issue's keys and a few more.
+    /// The JSON of `wai eval`.
     pub fn to_json(&self) -> serde_json::Value {
         let finite = |v: f64| {
             if v.is_finite() {

@@ -9,8 +9,8 @@
 //! units (metres for the datasets).
 //!
 //! # Number model
-//! This crate is where floating point is allowed to decide (DESIGN.md,
-//! issue 12): sensor data is approximate by nature. The map stays exact;
+//! This crate is where floating point is allowed to decide: sensor data
+//! is approximate by nature. The map stays exact;
 //! its vertices are read as `f64` (vertex / scale) for ray casting. Only
 //! one decision is exact: whether the pose lies inside the map, decided on
 //! the pose's exact binary value ([`Pose::check_inside`]), so a pose on a
@@ -24,7 +24,7 @@
 //! - Noise never makes a range negative: a noisy range is clamped at 0.
 #![allow(
     clippy::float_arithmetic,
-    reason = "sensor data is approximate; issue 12 allows floats here (STYLE.md 1)"
+    reason = "sensor data is approximate: the scan localizer is where floats may decide"
 )]
 
 pub mod coarsen;

@@ -1,6 +1,5 @@
 //! Maps in metres, so that one σ, one range limit and one success radius
-//! mean the same on every map of an evaluation (issue 12: "scaled to
-//! metres").
+//! mean the same on every map of an evaluation.
 //!
 //! The result is an exact map again: each vertex rounded to the
 //! millimetre (scale 1000), then validated like any input — a rounding

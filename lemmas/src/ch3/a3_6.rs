@@ -6,7 +6,7 @@
 //! The thesis states the rule just before Thm 3.3 and the theorem's part
 //! (2) relies on it. It is **known to be false** in two configurations,
 //! which is why T3.3b was restated for cells of every dimension
-//! (`shared/CLAIMS.md`, DESIGN "Degenerate cases that matter"):
+//! (`data/CLAIMS.md`):
 //! - opposite collinear rays covering one segment (a doorway between
 //!   collinear walls, `counterexamples/T3.3b-doorway-1d-cell.json`): the
 //!   segment's points see neither anchor's hidden vertex, so their skeleton

@@ -1,6 +1,6 @@
 //! Every map of `counterexamples/` loads, and its extra fields are sound.
 //!
-//! The format is the map format of `shared/datasets/README.md` plus the
+//! The format is the map format of `data/datasets/README.md` plus the
 //! top-level fields `claim`, `kind`, `note` and optional `viewpoints`
 //! (`counterexamples/README.md`).
 

@@ -1,4 +1,6 @@
-//! The `CLAIMS` table against `shared/CLAIMS.md` (STYLE.md 15).
+//! The `CLAIMS` table against the catalogue `data/CLAIMS.md` and the
+//! statements of the thesis (`data/thesis-statements.txt`); both copies
+//! against the team's sources while those sit beside the checkout.
 
 use std::collections::{BTreeMap, BTreeSet};
 
@@ -17,7 +19,7 @@ const WITH_CHECKER: &[&str] = &[
 /// The (id, kind) of every row of every table of `CLAIMS.md` whose header's
 /// first cell is `id`, in file order.
 fn catalogue() -> Vec<(String, String)> {
-    let text = crate::read_shared("CLAIMS.md");
+    let text = crate::read_repo("data/CLAIMS.md");
     let mut rows = Vec::new();
     let mut in_claims_table = false;
     for line in text.lines() {
@@ -125,7 +127,10 @@ fn registry_follows_the_order_of_claims_md() {
 /// contains the id's number, and that statement exists in the thesis.
 #[test]
 fn references_match_the_ids_and_the_thesis() {
-    let thesis = crate::read_shared("thesis.md");
+    let statements: BTreeSet<String> = crate::read_repo("data/thesis-statements.txt")
+        .lines()
+        .map(str::to_owned)
+        .collect();
     for c in CLAIMS {
         assert!(!c.statement.trim().is_empty(), "{}: empty statement", c.id);
         let number: String = c.id[1..]
@@ -156,18 +161,15 @@ fn references_match_the_ids_and_the_thesis() {
         );
         if word == "Section" {
             // A rule of a section (A3.6): the section's heading exists.
-            let heading = format!("# {number} ");
             assert!(
-                thesis
-                    .lines()
-                    .any(|l| l.starts_with('#') && l.contains(&heading[1..])),
+                statements.contains(&format!("Section {number}")),
                 "{}: the thesis has no section {number}",
                 c.id
             );
         } else if word != "Fig" {
-            let heading = format!("**{word} {number}");
+            let heading = format!("{word} {number}");
             assert!(
-                thesis.contains(&heading),
+                statements.contains(&heading),
                 "{}: the thesis has no {heading:?}",
                 c.id
             );
@@ -339,4 +341,73 @@ fn every_checker_is_in_one_chapter() {
     assert_eq!(wai_lemmas::chapter_of("T5.17t"), Some(5));
     assert_eq!(wai_lemmas::chapter_of("x"), None);
     assert!(ids(6).is_empty());
+}
+
+/// The numbered statements of the thesis: every `**Lemma 3.1`,
+/// `**Theorem 4.2`, … (bold, as the thesis states them) as `Lemma 3.1`,
+/// and every numbered section heading `# 3.6 …` as `Section 3.6`, sorted.
+fn statements_of(thesis: &str) -> BTreeSet<String> {
+    const WORDS: [&str; 6] = [
+        "Lemma",
+        "Theorem",
+        "Corollary",
+        "Definition",
+        "Remark",
+        "Observation",
+    ];
+    let number = |s: &str| -> String {
+        s.chars()
+            .take_while(|c| c.is_ascii_digit() || *c == '.')
+            .collect::<String>()
+            .trim_end_matches('.')
+            .to_owned()
+    };
+    let mut out = BTreeSet::new();
+    for word in WORDS {
+        let bold = format!("**{word} ");
+        for (i, _) in thesis.match_indices(&bold) {
+            let n = number(&thesis[i + bold.len()..]);
+            if !n.is_empty() {
+                out.insert(format!("{word} {n}"));
+            }
+        }
+    }
+    for line in thesis.lines() {
+        if let Some(rest) = line.strip_prefix('#') {
+            let n = number(rest.trim_start_matches('#').trim_start());
+            if n.contains('.') {
+                out.insert(format!("Section {n}"));
+            }
+        }
+    }
+    out
+}
+
+/// `data/CLAIMS.md` is the team's catalogue, unchanged.
+#[test]
+fn the_catalogue_is_the_teams() {
+    let Some(theirs) = crate::read_team_source("CLAIMS.md") else {
+        return;
+    };
+    assert!(
+        crate::read_repo("data/CLAIMS.md") == theirs,
+        "data/CLAIMS.md differs from ../shared/CLAIMS.md: copy it again \
+         (cp ../shared/CLAIMS.md data/CLAIMS.md)"
+    );
+}
+
+/// `data/thesis-statements.txt` lists the thesis's numbered statements.
+#[test]
+fn the_statements_are_the_theses() {
+    let Some(thesis) = crate::read_team_source("thesis.md") else {
+        return;
+    };
+    let want: Vec<String> = statements_of(&thesis).into_iter().collect();
+    let have = crate::read_repo("data/thesis-statements.txt");
+    assert!(
+        have.lines().eq(want.iter().map(String::as_str)),
+        "data/thesis-statements.txt is not the list of the thesis's statements; \
+         it should read:\n{}",
+        want.join("\n")
+    );
 }

@@ -1,4 +1,4 @@
-//! Every map of `shared/datasets/r2v` and `westport`, and the AGPLIB maps of
+//! Every map of `data/datasets/r2v` and `westport`, and the AGPLIB maps of
 //! up to 60 vertices (dyadic and rational coordinates: the exact path),
 //! decompose exactly: the arrangement passes its sanity checks, every
 //! cell has a skeleton, and the skeletons the walk gives (sec. 3.9.2) are
@@ -9,11 +9,11 @@ use wai_cells::Decomposition;
 
 fn maps_in(sub: &str, max_n: usize) -> Vec<(String, wai_map::Map)> {
     let dir = PathBuf::from(env!("CARGO_MANIFEST_DIR"))
-        .join("../../../shared/datasets")
+        .join("../../data/datasets")
         .join(sub);
     assert!(
         dir.is_dir(),
-        "{} is missing: the tests need shared/ beside the checkout",
+        "{} is missing: the tests read the repository's data/datasets",
         dir.display()
     );
     let mut files: Vec<PathBuf> = std::fs::read_dir(&dir)

@@ -2,7 +2,7 @@
 //! complexity N, classes, max |EC|, assignment conflicts and the 1- and
 //! 0-cells kept/absorbed for each thesis
 //! family at small parameters, seeded random and orthogonal maps, and maps
-//! of `shared/datasets` (AGPLIB's dyadic coordinates exercise the GMP path).
+//! of `data/datasets` (AGPLIB's dyadic coordinates exercise the GMP path).
 //! A change in a count must be explained in the commit that changes the
 //! snapshot.
 
@@ -64,11 +64,10 @@ fn random_counts() {
 
 #[test]
 fn dataset_counts() {
-    let root =
-        std::path::PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../../../shared/datasets");
+    let root = std::path::PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../../data/datasets");
     assert!(
         root.is_dir(),
-        "{} is missing: the tests need shared/ beside the checkout",
+        "{} is missing: the tests read the repository's data/datasets",
         root.display()
     );
     let mut out = String::new();

@@ -280,8 +280,17 @@ fn an_evaluation_reports_every_key_row_plot_and_look_alike() {
 
 #[test]
 fn karto_runs_side_by_side_on_the_same_scans() {
-    // Needs scripts/install-karto (the bootstrap runs it): fails, not
-    // skips, without it.
+    // Needs scripts/install-karto (the bootstrap tries it): says SKIPPED
+    // without it, but fails in CI (WAI_CI), which requires the peer.
+    let python = wai_scan::peer::KartoPeer::default_python();
+    if !python.exists() && std::env::var_os("WAI_CI").is_none() {
+        eprintln!(
+            "SKIPPED: the karto peer is not installed ({} is missing); \
+             scripts/install-karto installs it, and CI requires it",
+            python.display()
+        );
+        return;
+    }
     let dir = tmp("karto");
     let out = wai(
         &[

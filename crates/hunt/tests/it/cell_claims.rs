@@ -15,7 +15,7 @@ use wai_hunt::{run, FoundViolation};
 use wai_lemmas::ch3::{a3_6, t3_3a, t3_3b, t3_9a};
 use wai_map::Map;
 
-const R2V: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/../../../shared/datasets/r2v");
+const R2V: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/../../data/datasets/r2v");
 
 /// R2V maps in the sample: every `R2V_STEP`-th file in name order (1: all
 /// 300; the whole set runs in a few seconds).
@@ -50,7 +50,7 @@ fn families() -> Vec<Map> {
 
 fn r2v_sample() -> Vec<Map> {
     let mut files: Vec<PathBuf> = std::fs::read_dir(R2V)
-        .unwrap_or_else(|e| panic!("cannot read {R2V} ({e}): the run needs shared/datasets"))
+        .unwrap_or_else(|e| panic!("cannot read {R2V} ({e}): the run needs data/datasets"))
         .map(|e| e.expect("directory entry").path())
         .filter(|p| p.extension().is_some_and(|x| x == "json") && !p.ends_with("index.json"))
         .collect();

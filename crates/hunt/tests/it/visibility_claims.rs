@@ -32,7 +32,7 @@ fn sampled(
     report
 }
 
-const R2V: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/../../../shared/datasets/r2v");
+const R2V: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/../../data/datasets/r2v");
 
 fn generated() -> Vec<Map> {
     let mut maps = Vec::new();
@@ -67,7 +67,7 @@ fn families() -> Vec<Map> {
 
 fn r2v() -> Vec<Map> {
     let mut files: Vec<PathBuf> = std::fs::read_dir(R2V)
-        .unwrap_or_else(|e| panic!("cannot read {R2V} ({e}): the run needs shared/datasets"))
+        .unwrap_or_else(|e| panic!("cannot read {R2V} ({e}): the run needs data/datasets"))
         .map(|e| e.expect("directory entry").path())
         .filter(|p| p.extension().is_some_and(|x| x == "json") && !p.ends_with("index.json"))
         .collect();

@@ -1,4 +1,4 @@
-//! Every map of `shared/datasets` that has no holes is read exactly; the
+//! Every map of `data/datasets` that has no holes is read exactly; the
 //! families with holes give the clear "not supported yet" error.
 
 use rug::{Integer, Rational};
@@ -9,11 +9,11 @@ use wai_map::{parse_exact, MapError};
 
 fn dataset_dir(sub: &str) -> PathBuf {
     let dir = PathBuf::from(env!("CARGO_MANIFEST_DIR"))
-        .join("../../../shared/datasets")
+        .join("../../data/datasets")
         .join(sub);
     assert!(
         dir.is_dir(),
-        "dataset folder {} is missing: the tests need shared/ beside the checkout",
+        "dataset folder {} is missing: the tests read the repository's data/datasets",
         dir.display()
     );
     dir

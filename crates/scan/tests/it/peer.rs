@@ -3,8 +3,9 @@
 //! message gets an error answer and the process goes on serving, and a
 //! missing interpreter is reported as "not installed".
 //!
-//! These tests fail, not skip, when the peer is missing: run
-//! `scripts/install-karto` (scripts/bootstrap does).
+//! Where the peer is not installed (`scripts/install-karto`, which
+//! `scripts/bootstrap` tries), these tests say SKIPPED and check nothing;
+//! in CI (`WAI_CI`, set by `.ci/run`) they fail instead.
 
 use wai_exact::Point;
 use wai_map::Map;
@@ -21,9 +22,15 @@ fn l_room() -> Map {
         .0
 }
 
-fn peer(map: &Map) -> KartoPeer {
+/// The peer holding `map`, or `None` (said loudly) where it is not
+/// installed outside CI.
+fn peer(map: &Map) -> Option<KartoPeer> {
     match KartoPeer::spawn(&map_walls(map), &KartoConfig::default()) {
-        Ok(p) => p,
+        Ok(p) => Some(p),
+        Err(e @ PeerError::NotInstalled { .. }) if std::env::var_os("WAI_CI").is_none() => {
+            eprintln!("SKIPPED: {e} (CI requires the peer)");
+            None
+        }
         Err(e) => panic!(
             "the karto peer did not start: {e}\n(install it with scripts/install-karto, \
              which scripts/bootstrap runs)"
@@ -42,7 +49,9 @@ fn scan_360(map: &Map, pose: &Pose) -> wai_scan::Scan {
 #[test]
 fn karto_finds_the_pose_of_a_noiseless_scan_in_an_l_room() {
     let map = l_room();
-    let mut karto = peer(&map);
+    let Some(mut karto) = peer(&map) else {
+        return;
+    };
     for truth in [
         Pose {
             x: 1.3,
@@ -72,7 +81,9 @@ fn karto_finds_the_pose_of_a_noiseless_scan_in_an_l_room() {
 #[test]
 fn a_bad_message_gets_an_error_answer_and_the_peer_keeps_serving() {
     let map = l_room();
-    let mut karto = peer(&map);
+    let Some(mut karto) = peer(&map) else {
+        return;
+    };
     assert!(karto.build_ms() >= 0.0);
     assert!(karto.settings()["search_size"].as_f64().is_some());
     for bad in [
