@@ -46,6 +46,11 @@ pub struct Args {
     /// Print JSON instead of text.
     #[arg(long)]
     pub json: bool,
+    /// The memory the sites may take (e.g. 512M, 2G): the lattice of sites
+    /// in big cells is widened to fit, and a map whose cells alone do not
+    /// fit is refused with the estimate.
+    #[arg(long, default_value = "1G", value_parser = crate::options::bytes)]
+    pub max_memory: u64,
     /// Draw the map, the scan at the best pose and the answer set here.
     #[arg(long)]
     pub svg: Option<PathBuf>,
@@ -73,13 +78,24 @@ pub fn run(args: &Args) -> Result<(), Failure> {
         )));
     }
     let t = Instant::now();
-    let loc = ScanLocalizer::new(
+    let loc = ScanLocalizer::try_new(
         &m.map,
         Options {
             max_range,
+            max_memory: args.max_memory,
             ..Options::default()
         },
-    );
+    )
+    .map_err(|e| Failure::invalid(format!("{}: refused: {e}", m.name)))?;
+    let default_spacing = Options::default().lattice;
+    let lattice = match (loc.lattice_spacing(), default_spacing) {
+        (Some(g), Some(d)) if g > d => format!(
+            "; lattice widened from {d} to {g:.2} units to fit --max-memory {} MiB",
+            args.max_memory >> 20
+        ),
+        (Some(g), _) => format!("; lattice {g} units"),
+        (None, _) => String::new(),
+    };
     let preprocess_s = t.elapsed().as_secs_f64();
     let near = args.near.as_deref().map(parse_near).transpose()?;
     let (answer, ms) = loc.localize_timed(&scan, &compass, near);
@@ -95,6 +111,7 @@ pub fn run(args: &Args) -> Result<(), Failure> {
             "compass": args.compass,
             "cells": loc.cells().len(),
             "sites": loc.sites().len(),
+            "lattice_spacing": loc.lattice_spacing(),
             "preprocess_s": preprocess_s,
             "ms": ms,
             "best": answer.best.as_ref().map(|h| json!({"pose": pose_json(&h.pose), "score": h.score, "cell": cell_of(h.from_site)})),
@@ -109,7 +126,7 @@ pub fn run(args: &Args) -> Result<(), Failure> {
         return Ok(());
     }
     outln!(
-        "{}: {} cells, {} sites, preprocessed in {preprocess_s:.2} s; query {ms:.1} ms ({} PCM evaluations)",
+        "{}: {} cells, {} sites{lattice}, preprocessed in {preprocess_s:.2} s; query {ms:.1} ms ({} PCM evaluations)",
         m.name,
         loc.cells().len(),
         loc.sites().len(),

@@ -105,6 +105,32 @@ pub fn count_u64(s: &str) -> Result<u64, String> {
         .map_err(|_| format!("{s:?} is not a whole number ≥ 0 below 2^64"))
 }
 
+/// A size in bytes: a whole number with an optional binary suffix `K`,
+/// `M`, `G` or `T` (KiB … TiB), e.g. `512M`, `2G`.
+pub fn bytes(s: &str) -> Result<u64, String> {
+    let t = s.trim();
+    let (digits, shift) = match t.char_indices().last() {
+        Some((i, c)) if c.is_ascii_alphabetic() => {
+            let shift = match c.to_ascii_uppercase() {
+                'K' => 10,
+                'M' => 20,
+                'G' => 30,
+                'T' => 40,
+                _ => return Err(format!("{s:?}: expected a size such as 512M or 2G")),
+            };
+            (&t[..i], shift)
+        }
+        _ => (t, 0),
+    };
+    let n: u64 = digits
+        .parse()
+        .map_err(|_| format!("{s:?}: expected a size such as 512M or 2G"))?;
+    match n.checked_mul(1 << shift) {
+        Some(0) | None => Err(format!("{s}: expected a size above 0 and below 2^64 bytes")),
+        Some(b) => Ok(b),
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -129,5 +155,9 @@ mod tests {
             .unwrap_err()
             .contains("negative; expected a whole number ≥ 1"));
         assert_eq!(positive_count("7"), Ok(7));
+        assert_eq!(bytes("512M"), Ok(512 << 20));
+        assert_eq!(bytes("2g"), Ok(2 << 30));
+        assert_eq!(bytes("4096"), Ok(4096));
+        assert!(bytes("-1G").is_err() && bytes("1X").is_err() && bytes("0").is_err());
     }
 }

@@ -43,7 +43,10 @@ pub mod sites;
 pub mod units;
 pub mod walls;
 
-pub use localizer::{Hypothesis, Near, Options, RankedCell, ScanAnswer, ScanLocalizer};
+pub use localizer::{
+    site_bytes, Hypothesis, Near, Options, RankedCell, ScanAnswer, ScanLocalizer, TooLarge,
+    DEFAULT_MAX_MEMORY,
+};
 pub use obstacles::{random_obstacles, Obstacle};
 pub use signature::Compass;
 

@@ -65,6 +65,11 @@ pub struct Options {
     /// centres' PCFs lie within this PCM of a group's representative are
     /// one cell (the representative's centre stands for them all).
     pub coarsen: Option<f64>,
+    /// The memory the sites' signatures may take, in bytes. The lattice is
+    /// widened until its sites fit (a plan in millimetres read as metres
+    /// must not take the machine down); if one site per cell does not fit,
+    /// [`ScanLocalizer::try_new`] refuses with the estimate.
+    pub max_memory: u64,
 }
 
 impl Default for Options {
@@ -79,7 +84,53 @@ impl Default for Options {
             answer_slack: 4e-4,
             icp: IcpOptions::default(),
             coarsen: None,
+            max_memory: DEFAULT_MAX_MEMORY,
         }
+    }
+}
+
+/// [`Options::max_memory`] by default: 1 GiB, about 70,000 sites of 720
+/// samples.
+pub const DEFAULT_MAX_MEMORY: u64 = 1 << 30;
+
+/// The bytes one site costs: its signature (the samples as `f32`, two
+/// spectra of complex `f32`, the low magnitudes as `f64`), the site and
+/// its share of the tree, rounded up.
+pub fn site_bytes(samples: usize) -> u64 {
+    let samples = samples as u64;
+    let signature = samples * 4 + 2 * samples * 8 + 25 * 8 + 4 * 24 + 8;
+    signature + std::mem::size_of::<Site>() as u64 + 64
+}
+
+/// Why [`ScanLocalizer::try_new`] refuses a map.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+#[error(
+    "the map has {cells} cells, and one site per cell needs about {needed_mib} MiB for \
+     the signatures, over the limit of {limit_mib} MiB (raise it with --max-memory)"
+)]
+pub struct TooLarge {
+    pub cells: usize,
+    pub needed_mib: u64,
+    pub limit_mib: u64,
+}
+
+/// The lattice spacing that keeps the sites within `budget`: `spacing`,
+/// or wider when the cells larger than a lattice square would get more
+/// lattice points than the budget leaves after one site per cell. A cell
+/// of area A gets about A / g² points at spacing g.
+fn fitted_spacing(cells: &[CellSite], spacing: f64, budget: u64) -> f64 {
+    let room = budget.saturating_sub(cells.len() as u64).max(1) as f64;
+    let big: f64 = cells
+        .iter()
+        .filter(|c| c.area > spacing * spacing)
+        .map(|c| c.area)
+        .sum();
+    if big / (spacing * spacing) <= room {
+        spacing
+    } else {
+        // The lattice points of a convex cell at spacing g are at most
+        // A / g² plus its perimeter's share; 10 % more spacing covers it.
+        (big / room).sqrt() * 1.1
     }
 }
 
@@ -99,6 +150,7 @@ pub struct ScanLocalizer {
     plans: Plans,
     cap: f64,
     opts: Options,
+    spacing: Option<f64>,
 }
 
 /// A point the localizer stands at: a cell's centre of gravity or a
@@ -159,15 +211,36 @@ impl ScanLocalizer {
         ScanLocalizer::from_decomposition(&Decomposition::new(map), opts)
     }
 
-    /// Preprocesses a decomposed map: one signature per 2-cell.
+    /// [`ScanLocalizer::new`], refusing a map whose cells alone need more
+    /// than [`Options::max_memory`].
+    pub fn try_new(map: &Map, opts: Options) -> Result<ScanLocalizer, TooLarge> {
+        let d = Decomposition::new(map);
+        let per_site = site_bytes(opts.samples);
+        let cells = d.cells().len();
+        let needed = cells as u64 * per_site;
+        if needed > opts.max_memory {
+            return Err(TooLarge {
+                cells,
+                needed_mib: needed.div_ceil(1 << 20),
+                limit_mib: opts.max_memory >> 20,
+            });
+        }
+        Ok(ScanLocalizer::from_decomposition(&d, opts))
+    }
+
+    /// Preprocesses a decomposed map: one signature per 2-cell, and the
+    /// lattice points of the big cells, the lattice widened to fit
+    /// [`Options::max_memory`] ([`ScanLocalizer::lattice_spacing`]).
     pub fn from_decomposition(d: &Decomposition<'_>, opts: Options) -> ScanLocalizer {
         use rayon::prelude::*;
         let walls = Walls::new(crate::walls(d.map()));
         let (cells, neighbours) = cell_sites(d);
+        let budget = opts.max_memory / site_bytes(opts.samples);
+        let spacing = opts.lattice.map(|g| fitted_spacing(&cells, g, budget));
         let mut sites = Vec::with_capacity(cells.len());
         let mut cell_list = Vec::with_capacity(cells.len());
         for c in cells {
-            let extra = match opts.lattice {
+            let extra = match spacing {
                 Some(g) if c.area > g * g => lattice_points(&c.polygon, g, 0.05),
                 _ => Vec::new(),
             };
@@ -232,7 +305,15 @@ impl ScanLocalizer {
             plans,
             cap,
             opts,
+            spacing,
         }
+    }
+
+    /// The lattice spacing used: [`Options::lattice`], or wider where its
+    /// sites would not fit [`Options::max_memory`]; `None` without a
+    /// lattice.
+    pub fn lattice_spacing(&self) -> Option<f64> {
+        self.spacing
     }
 
     /// The number of cells before and after the coarsening step.

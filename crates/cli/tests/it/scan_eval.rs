@@ -330,3 +330,68 @@ fn karto_runs_side_by_side_on_the_same_scans() {
         assert_eq!(p["ours_on_the_same_queries"]["queries"], 1);
     }
 }
+
+/// Sites have a memory budget (`--max-memory`): a 1 km square, where a
+/// fixed lattice of 0.5 m would stand at four million sites, is answered
+/// with the lattice widened to fit, and a map whose cells alone do not fit
+/// is refused with the estimate and the option that raises the limit.
+#[test]
+fn sites_fit_the_memory_budget() {
+    let dir = tmp("budget");
+    std::fs::create_dir_all(&dir).unwrap();
+    let map = dir.join("km.json");
+    std::fs::write(
+        &map,
+        r#"{"name": "km", "outer": [[0, 0], [1000, 0], [1000, 1000], [0, 1000]]}"#,
+    )
+    .unwrap();
+    let scan = dir.join("scan.json");
+    let (m, s) = (map.to_str().unwrap(), scan.to_str().unwrap());
+    let out = wai(
+        &[
+            "scan",
+            m,
+            "--units",
+            "m",
+            "--at",
+            "300,400,10",
+            "--beams",
+            "90",
+            "--out",
+            s,
+        ],
+        b"",
+    );
+    assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
+    let out = wai(
+        &[
+            "localize-scan",
+            m,
+            s,
+            "--units",
+            "m",
+            "--max-memory",
+            "16M",
+            "--json",
+        ],
+        b"",
+    );
+    assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
+    let v: serde_json::Value = serde_json::from_slice(&out.stdout).expect("JSON");
+    let budget = (16u64 << 20) / wai_scan::site_bytes(720);
+    let sites = v["sites"].as_u64().unwrap();
+    assert!(
+        sites <= budget && sites > 100,
+        "{sites} sites, budget {budget}"
+    );
+    assert!(v["lattice_spacing"].as_f64().unwrap() > 0.5, "{v}");
+
+    let out = wai(&["localize-scan", "office:2", s, "--max-memory", "1M"], b"");
+    let err = text(&out.stderr);
+    assert_eq!(out.status.code(), Some(1), "{err}");
+    assert!(
+        err.contains("refused") && err.contains("MiB") && err.contains("--max-memory"),
+        "{err}"
+    );
+    std::fs::remove_dir_all(&dir).ok();
+}
