@@ -352,10 +352,16 @@ impl Drop for KartoPeer {
     }
 }
 
-/// The repository root, two levels above this crate's manifest.
+/// The root of the repository the command is run in: the nearest ancestor
+/// of the current directory holding the peer's script, never the path this
+/// binary was built at (a binary installed elsewhere uses the peer of the
+/// repository the user is in). Outside any, the current directory: the
+/// paths under it do not exist and the peer reports itself not installed.
 fn repo_root() -> PathBuf {
-    let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("../..");
-    root.canonicalize().unwrap_or(root)
+    let here = std::env::current_dir().unwrap_or_else(|_| PathBuf::from("."));
+    here.ancestors()
+        .find(|dir| dir.join("peers/karto/karto_peer.py").is_file())
+        .map_or(here.clone(), Path::to_path_buf)
 }
 
 fn error_text(answer: &Value) -> Option<String> {
