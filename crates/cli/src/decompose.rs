@@ -79,14 +79,29 @@ pub fn run(args: &Args) -> Result<(), Failure> {
     let map = &loaded.map;
     // The time covers the whole decomposition, rays included.
     let start = std::time::Instant::now();
+    // The stages before the walk have no count to show: a spinner names
+    // the stage and the time it has taken, until the walk's bar starts.
+    let stage = stage_spinner("visibility rays");
     let rays = visibility_rays(map);
     check_memory(map, &rays, opts.force)?;
-    let bar = counted_bar("skeletons of cells", "cells of every dimension");
+    stage.set_message(format!(
+        "arrangement of {} rays and the map's {} edges",
+        rays.len(),
+        map.n()
+    ));
+    let mut bar: Option<indicatif::ProgressBar> = None;
     let d = Decomposition::from_rays(map, rays, &mut |done, total| {
+        let bar = bar.get_or_insert_with(|| {
+            stage.finish_and_clear();
+            counted_bar("skeletons of cells", "cells of every dimension")
+        });
         bar.set_length(total as u64);
         bar.set_position(done as u64);
     });
-    bar.finish_and_clear();
+    stage.finish_and_clear();
+    if let Some(bar) = bar {
+        bar.finish_and_clear();
+    }
     let elapsed = start.elapsed();
     let c = d.counts();
     if let Some(k) = opts.class {
@@ -215,4 +230,17 @@ fn peak_memory_bytes() -> Option<u64> {
     let line = status.lines().find(|l| l.starts_with("VmHWM:"))?;
     let kib: u64 = line.split_whitespace().nth(1)?.parse().ok()?;
     Some(kib * 1024)
+}
+
+/// A spinner on standard error with `what` and the time spent on it,
+/// ticking on its own while a stage runs.
+fn stage_spinner(what: &str) -> indicatif::ProgressBar {
+    let spinner = indicatif::ProgressBar::new_spinner();
+    spinner.set_style(
+        indicatif::ProgressStyle::with_template("{spinner} {msg} ({elapsed})")
+            .unwrap_or_else(|_| indicatif::ProgressStyle::default_spinner()),
+    );
+    spinner.set_message(what.to_owned());
+    spinner.enable_steady_tick(std::time::Duration::from_millis(200));
+    spinner
 }
