@@ -3,20 +3,29 @@
 //! localizes many times. The file holds the map itself (scaled integer
 //! vertices and the scale), each class's skeleton key, and each class's
 //! overlay with its slabs, so loading does no geometry beyond validating
-//! the map.
+//! the map and the structure.
+//!
+//! # Invariant
+//! A file that was edited or damaged is refused, never read as if it were
+//! whole: it carries SHA-256 digests of its map (`digest.map`: the scale and
+//! the vertices) and of its whole content (`digest.content`: every field
+//! but the digests, as written), and loading recomputes both; then it
+//! checks the structure against the map — every index in range, each
+//! class's skeleton embedded at each item's origin onto map vertices, every
+//! item's points in the closed map.
 
 use crate::overlay::{CellSite, ClassOverlay, Item, Line, Shape, Slab};
 use crate::Localizer;
 use rug::{Integer, Rational};
 use serde::{Deserialize, Serialize};
-use wai_exact::{Point, RatPoint};
+use wai_exact::{locate_rat, Containment, Point, RatPoint};
 use wai_map::Map;
 use wai_visibility::{LineLabel, SkeletonKey};
 
 /// The `format` field of every file.
 pub const FORMAT: &str = "wai-localizer";
-/// The version this build writes and reads.
-pub const VERSION: u32 = 1;
+/// The version this build writes and reads (2: with digests).
+pub const VERSION: u32 = 2;
 
 /// Why a file could not be read back.
 #[derive(Debug, thiserror::Error)]
@@ -35,16 +44,65 @@ pub enum FileError {
     Map(String),
     #[error("the stored structure is inconsistent: {0}")]
     Structure(String),
+    #[error(
+        "the {what} digest does not match (stored {stored}, computed {computed}): the file was \
+         edited or damaged after `wai preprocess` wrote it; preprocess the map again"
+    )]
+    Digest {
+        what: &'static str,
+        stored: String,
+        computed: String,
+    },
 }
 
 #[derive(Serialize, Deserialize)]
 struct FileDto {
     format: String,
     version: u32,
+    digest: Digests,
+    #[serde(flatten)]
+    body: Body,
+}
+
+#[derive(Serialize, Deserialize)]
+struct Digests {
+    map: String,
+    content: String,
+}
+
+/// What the content digest covers: every field but the header.
+#[derive(Serialize, Deserialize)]
+struct Body {
     name: Option<String>,
     scale: String,
     vertices: Vec<[String; 2]>,
     classes: Vec<ClassDto>,
+}
+
+/// `sha256:` and the hex digest of `bytes`.
+fn sha256(bytes: &[u8]) -> String {
+    use sha2::{Digest, Sha256};
+    let d = Sha256::digest(bytes);
+    let hex: String = d.iter().map(|b| format!("{b:02x}")).collect();
+    format!("sha256:{hex}")
+}
+
+/// The map's digest: its scale and vertices, one per line.
+fn map_digest(scale: &str, vertices: &[[String; 2]]) -> String {
+    let mut text = format!("{scale}\n");
+    for [x, y] in vertices {
+        text.push_str(&format!("{x} {y}\n"));
+    }
+    sha256(text.as_bytes())
+}
+
+/// The content's digest: the body as this build writes it.
+fn content_digest(body: &Body) -> String {
+    sha256(
+        serde_json::to_string(body)
+            .expect("plain data serializes")
+            .as_bytes(),
+    )
 }
 
 #[derive(Serialize, Deserialize)]
@@ -156,9 +214,7 @@ pub fn to_json(loc: &Localizer) -> String {
                 .collect(),
         })
         .collect();
-    let dto = FileDto {
-        format: FORMAT.to_string(),
-        version: VERSION,
+    let body = Body {
         name: loc.map.name().map(str::to_string),
         scale: loc.map.scale().to_string(),
         vertices: loc
@@ -168,6 +224,15 @@ pub fn to_json(loc: &Localizer) -> String {
             .map(|p| [p.x.to_string(), p.y.to_string()])
             .collect(),
         classes,
+    };
+    let dto = FileDto {
+        format: FORMAT.to_string(),
+        version: VERSION,
+        digest: Digests {
+            map: map_digest(&body.scale, &body.vertices),
+            content: content_digest(&body),
+        },
+        body,
     };
     serde_json::to_string(&dto).expect("plain data serializes")
 }
@@ -186,7 +251,21 @@ pub fn from_json(bytes: &[u8]) -> Result<Localizer, FileError> {
     if version != u64::from(VERSION) {
         return Err(FileError::Version(version as u32));
     }
-    let dto: FileDto = serde_json::from_value(head)?;
+    let FileDto { digest, body, .. } = serde_json::from_value(head)?;
+    let check = |what: &'static str, stored: &str, computed: String| {
+        if stored == computed {
+            Ok(())
+        } else {
+            Err(FileError::Digest {
+                what,
+                stored: stored.to_owned(),
+                computed,
+            })
+        }
+    };
+    check("map", &digest.map, map_digest(&body.scale, &body.vertices))?;
+    check("content", &digest.content, content_digest(&body))?;
+    let dto = body;
     let ring: Vec<Point> = dto
         .vertices
         .iter()
@@ -232,9 +311,25 @@ pub fn from_json(bytes: &[u8]) -> Result<Localizer, FileError> {
             return Err(bad("offsets and labels differ in length"));
         }
         let mut items = Vec::with_capacity(c.items.len());
+        let v = map.vertices();
+        let is_vertex = |p: Point| v.contains(&p);
         for it in &c.items {
             if it.origin >= n {
                 return Err(bad("an item's origin is not a map vertex"));
+            }
+            // The class's skeleton embedded at the item's origin: every
+            // skeleton vertex lands on a map vertex.
+            let o = v[it.origin];
+            let lands = |dx: i128, dy: i128| match (o.x.checked_add(dx), o.y.checked_add(dy)) {
+                (Some(x), Some(y)) => is_vertex(Point::new(x, y)),
+                _ => false,
+            };
+            if let Some((dx, dy)) = offsets.iter().find(|&&(dx, dy)| !lands(dx, dy)) {
+                return Err(bad(&format!(
+                    "its skeleton at origin {} puts the vertex at offset ({dx}, {dy}) on no \
+                     map vertex",
+                    it.origin
+                )));
             }
             let idx: usize = it.site[1..].parse().map_err(|_| bad("bad site"))?;
             let site = match &it.site[..1] {
@@ -243,6 +338,25 @@ pub fn from_json(bytes: &[u8]) -> Result<Localizer, FileError> {
                 _ => return Err(bad("bad site")),
             };
             let pts = it.points.iter().map(unpt).collect::<Result<Vec<_>, _>>()?;
+            // Shapes are stored translated by minus their origin vertex:
+            // moved back, every point lies in the closed map.
+            let placed = |p: &RatPoint| {
+                RatPoint::new(
+                    p.hx() + Integer::from(o.x) * p.hw(),
+                    p.hy() + Integer::from(o.y) * p.hw(),
+                    p.hw().clone(),
+                )
+                .expect("w > 0")
+            };
+            if let Some(p) = pts
+                .iter()
+                .find(|p| locate_rat(v, &placed(p)) == Containment::Outside)
+            {
+                return Err(bad(&format!(
+                    "an item's point {p}, at origin {}, lies outside the map",
+                    it.origin
+                )));
+            }
             let shape = match (it.kind.as_str(), pts.len()) {
                 ("polygon", m) if m >= 3 => Shape::Polygon(pts),
                 ("segment", 2) => {
@@ -296,4 +410,63 @@ pub fn from_json(bytes: &[u8]) -> Result<Localizer, FileError> {
         overlays.push(ClassOverlay::from_parts(items, xs, lines, slabs));
     }
     Ok(Localizer::assemble(map, keys, overlays))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// `text` edited by `edit`, with both digests recomputed, as a tool that
+    /// rewrites the file would: the structural checks must refuse it.
+    fn resealed(text: &str, edit: impl FnOnce(&mut Body)) -> String {
+        let mut dto: FileDto = serde_json::from_str(text).unwrap();
+        edit(&mut dto.body);
+        dto.digest = Digests {
+            map: map_digest(&dto.body.scale, &dto.body.vertices),
+            content: content_digest(&dto.body),
+        };
+        serde_json::to_string(&dto).unwrap()
+    }
+
+    fn refused(text: &str) -> String {
+        from_json(text.as_bytes()).unwrap_err().to_string()
+    }
+
+    #[test]
+    fn resealed_edits_fail_the_structural_checks() {
+        let loc = Localizer::new(&wai_gen::family("corridor-niches", &[2]).unwrap());
+        let text = to_json(&loc);
+        // Resealing the untouched file gives it back: the digests are
+        // recomputed as the writer computes them.
+        assert_eq!(resealed(&text, |_| {}), text);
+
+        let e = refused(&resealed(&text, |b| {
+            let c = b
+                .classes
+                .iter_mut()
+                .find(|c| !c.offsets.is_empty())
+                .unwrap();
+            let last = c.offsets.len() - 1;
+            c.offsets[last][0] = "100000".into();
+        }));
+        assert!(e.contains("on no map vertex"), "{e}");
+
+        let e = refused(&resealed(&text, |b| {
+            let c = b.classes.iter_mut().find(|c| !c.items.is_empty()).unwrap();
+            c.items[0].points[0] = ["-100000".into(), "0".into(), "1".into()];
+        }));
+        assert!(e.contains("lies outside the map"), "{e}");
+
+        let e = refused(&resealed(&text, |b| {
+            let c = b.classes.iter_mut().find(|c| !c.slabs.is_empty()).unwrap();
+            c.slabs[0].labels[0] = vec![999_999];
+        }));
+        assert!(e.contains("out of range"), "{e}");
+
+        let e = refused(&resealed(&text, |b| {
+            b.vertices[1] = ["-5".into(), "7".into()];
+            b.vertices[2] = ["5".into(), "-7".into()];
+        }));
+        assert!(e.contains("map"), "{e}");
+    }
 }

@@ -23,26 +23,71 @@ fn damaged_files_are_refused_with_the_reason() {
     let text = file::to_json(&loc);
     let err = |t: &str| file::from_json(t.as_bytes()).unwrap_err().to_string();
     assert!(err("{}").contains("format"));
-    assert!(err(&text.replacen("\"version\":1", "\"version\":2", 1)).contains("version 2"));
+    assert!(err(&text.replacen("\"version\":2", "\"version\":1", 1)).contains("version 1"));
     assert!(err(&text[..text.len() / 2]).contains("not JSON"));
-    // A label pointing past the items.
+}
+
+/// Every kind of edit is refused, saying which digest no longer matches:
+/// one vertex moved by one unit, one class offset, one slab label, the
+/// name, and a digest itself. (With the digests recomputed, the structural
+/// checks refuse the same edits: `file`'s unit tests.)
+#[test]
+fn edited_files_are_refused() {
+    let loc = Localizer::new(&wai_gen::family("corridor-niches", &[2]).unwrap());
+    let text = file::to_json(&loc);
     let v: serde_json::Value = serde_json::from_str(&text).unwrap();
-    let mut bad = v.clone();
-    let class = bad["classes"]
-        .as_array_mut()
-        .unwrap()
-        .iter_mut()
-        .find(|c| !c["slabs"].as_array().unwrap().is_empty())
-        .unwrap();
-    class["slabs"][0]["labels"][0] = serde_json::json!([999999]);
-    assert!(err(&bad.to_string()).contains("out of range"));
-    // A map that is not simple.
-    let mut bad = v;
-    bad["vertices"][1] = serde_json::json!(["-5", "7"]);
-    bad["vertices"][2] = serde_json::json!(["5", "-7"]);
-    assert!(
-        err(&bad.to_string()).contains("map"),
-        "{}",
-        err(&bad.to_string())
+    let refused = |edit: &dyn Fn(&mut serde_json::Value), needle: &str| {
+        let mut bad = v.clone();
+        edit(&mut bad);
+        let e = file::from_json(bad.to_string().as_bytes())
+            .expect_err("an edited file is refused")
+            .to_string();
+        assert!(e.contains(needle), "{needle}: {e}");
+        assert!(e.contains("edited or damaged"), "{e}");
+    };
+    let bump = |s: &serde_json::Value| {
+        let n: i128 = s.as_str().unwrap().parse().unwrap();
+        serde_json::json!((n + 1).to_string())
+    };
+    refused(
+        &|f| {
+            let x = bump(&f["vertices"][3][0]);
+            f["vertices"][3][0] = x;
+        },
+        "map digest",
+    );
+    refused(
+        &|f| {
+            let class = f["classes"]
+                .as_array_mut()
+                .unwrap()
+                .iter_mut()
+                .find(|c| !c["offsets"].as_array().unwrap().is_empty())
+                .unwrap();
+            let last = class["offsets"].as_array().unwrap().len() - 1;
+            let x = bump(&class["offsets"][last][0]);
+            class["offsets"][last][0] = x;
+        },
+        "content digest",
+    );
+    refused(
+        &|f| {
+            let class = f["classes"]
+                .as_array_mut()
+                .unwrap()
+                .iter_mut()
+                .find(|c| !c["slabs"].as_array().unwrap().is_empty())
+                .unwrap();
+            class["slabs"][0]["labels"][0] = serde_json::json!([0]);
+        },
+        "content digest",
+    );
+    refused(
+        &|f| f["name"] = serde_json::json!("another"),
+        "content digest",
+    );
+    refused(
+        &|f| f["digest"]["content"] = serde_json::json!("sha256:00"),
+        "content digest",
     );
 }
