@@ -27,6 +27,16 @@ fn damaged_files_are_refused_with_the_reason() {
     assert!(err(&text[..text.len() / 2]).contains("not JSON"));
 }
 
+/// The first class of file `f` whose array `key` is not empty.
+fn first_with<'a>(f: &'a mut serde_json::Value, key: &str) -> &'a mut serde_json::Value {
+    f["classes"]
+        .as_array_mut()
+        .unwrap()
+        .iter_mut()
+        .find(|c| !c[key].as_array().unwrap().is_empty())
+        .unwrap()
+}
+
 /// Every kind of edit is refused, saying which digest no longer matches:
 /// one vertex moved by one unit, one class offset, one slab label, the
 /// name, and a digest itself. (With the digests recomputed, the structural
@@ -58,12 +68,7 @@ fn edited_files_are_refused() {
     );
     refused(
         &|f| {
-            let class = f["classes"]
-                .as_array_mut()
-                .unwrap()
-                .iter_mut()
-                .find(|c| !c["offsets"].as_array().unwrap().is_empty())
-                .unwrap();
+            let class = first_with(f, "offsets");
             let last = class["offsets"].as_array().unwrap().len() - 1;
             let x = bump(&class["offsets"][last][0]);
             class["offsets"][last][0] = x;
@@ -72,12 +77,7 @@ fn edited_files_are_refused() {
     );
     refused(
         &|f| {
-            let class = f["classes"]
-                .as_array_mut()
-                .unwrap()
-                .iter_mut()
-                .find(|c| !c["slabs"].as_array().unwrap().is_empty())
-                .unwrap();
+            let class = first_with(f, "slabs");
             class["slabs"][0]["labels"][0] = serde_json::json!([0]);
         },
         "content digest",
