@@ -18,10 +18,10 @@ use wai_hunt::FoundViolation;
 use wai_lemmas::{planted, Checker};
 use wai_map::Map;
 
-/// mimalloc for Rust's allocations, and (its `override` feature, set in the
-/// root workspace's manifest) for GMP's, which otherwise go through glibc's
-/// malloc: a `RatPoint` holds four GMP integers, and the claims' exact
-/// arithmetic spends a fifth of its time allocating them.
+/// mimalloc for Rust's allocations, and (its `override` feature, set in
+/// `fuzz/Cargo.toml`) for GMP's, which otherwise go through glibc's
+/// malloc: a `RatPoint` holds three GMP integers, and the claims' exact
+/// arithmetic spent a fifth of its time allocating them.
 #[global_allocator]
 static ALLOCATOR: mimalloc::MiMalloc = mimalloc::MiMalloc;
 

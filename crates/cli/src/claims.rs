@@ -481,7 +481,7 @@ pub fn run(args: &Args) -> Result<(), Failure> {
             .map_err(|e| Failure::io(format!("no run record: {e}, or give --record FILE")))?,
     };
     let record = RunRecord::read(&path).map_err(Failure::io)?;
-    // Shown without the `crates/cli/../..` of the default.
+    // Shown as an absolute path, whatever `--record` was given as.
     let path = std::fs::canonicalize(&path).unwrap_or(path);
     for c in &record.claims {
         if wai_lemmas::claim(&c.id).is_none() {

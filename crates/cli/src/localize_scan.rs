@@ -78,17 +78,15 @@ pub fn run(args: &Args) -> Result<(), Failure> {
         )));
     }
     let t = Instant::now();
-    let loc = ScanLocalizer::try_new(
-        &m.map,
-        Options {
-            max_range,
-            max_memory: args.max_memory,
-            ..Options::default()
-        },
-    )
-    .map_err(|e| Failure::invalid(format!("{}: refused: {e}", m.name)))?;
-    let default_spacing = Options::default().lattice;
-    let lattice = match (loc.lattice_spacing(), default_spacing) {
+    let opts = Options {
+        max_range,
+        max_memory: args.max_memory,
+        ..Options::default()
+    };
+    let asked = opts.lattice;
+    let loc = ScanLocalizer::try_new(&m.map, opts)
+        .map_err(|e| Failure::invalid(format!("{}: refused: {e}", m.name)))?;
+    let lattice = match (loc.lattice_spacing(), asked) {
         (Some(g), Some(d)) if g > d => format!(
             "; lattice widened from {d} to {g:.2} units to fit --max-memory {} MiB",
             args.max_memory >> 20

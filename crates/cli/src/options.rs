@@ -77,8 +77,11 @@ pub fn positive_count(s: &str) -> Result<usize, String> {
     whole(s, 1)
 }
 
-/// A whole number ≥ `min`.
-fn whole(s: &str, min: usize) -> Result<usize, String> {
+/// A whole number ≥ `min`, of the option's integer type.
+fn whole<T>(s: &str, min: T) -> Result<T, String>
+where
+    T: std::str::FromStr + PartialOrd + std::fmt::Display,
+{
     let t = s.trim();
     let expected = format!("expected a whole number ≥ {min}");
     if t.strip_prefix('-')
@@ -86,7 +89,7 @@ fn whole(s: &str, min: usize) -> Result<usize, String> {
     {
         return Err(format!("{s} is negative; {expected}"));
     }
-    match t.parse::<usize>() {
+    match t.parse::<T>() {
         Ok(n) if n >= min => Ok(n),
         Ok(n) => Err(format!("{n} is too small; {expected}")),
         Err(_) => Err(format!("{s:?} is not a whole number; {expected}")),
@@ -95,14 +98,7 @@ fn whole(s: &str, min: usize) -> Result<usize, String> {
 
 /// A whole number ≥ 0, as a `u64` (seeds, counts of maps).
 pub fn count_u64(s: &str) -> Result<u64, String> {
-    let t = s.trim();
-    if t.strip_prefix('-')
-        .is_some_and(|rest| rest.parse::<u128>().is_ok())
-    {
-        return Err(format!("{s} is negative; expected a whole number ≥ 0"));
-    }
-    t.parse()
-        .map_err(|_| format!("{s:?} is not a whole number ≥ 0 below 2^64"))
+    whole(s, 0)
 }
 
 /// A size in bytes: a whole number with an optional binary suffix `K`,

@@ -132,6 +132,8 @@ pub fn search(
         Limit::Budget(b) => Some(b),
         Limit::Count(_) => None,
     };
+    // How many maps the run can take at most (`None`: endless lanes).
+    let at_most: Option<u64> = lanes.iter().map(|l| l.len).sum();
     let state = Mutex::new(Lanes {
         next: vec![0; lanes.len()],
         used: vec![Duration::ZERO; lanes.len()],
@@ -151,10 +153,7 @@ pub fn search(
     // (kind, maps, the stream index of its first map).
     let mut per_kind: Vec<(String, u64, u64)> = Vec::new();
     let workers = rayon::current_num_threads().max(1);
-    let few_maps = match limit {
-        Limit::Count(n) => stream.len().map_or(n, |len| n.min(len)) <= workers as u64,
-        Limit::Budget(_) => stream.len().is_some_and(|len| len <= workers as u64),
-    };
+    let few_maps = at_most.is_some_and(|n| n <= workers as u64);
     let (tx, rx) = mpsc::channel::<(u64, String, Summary, Profile)>();
     // Plain threads, not rayon tasks: the loop below blocks on the
     // channel, and inside a rayon scope it would hold one of the pool's

@@ -79,6 +79,16 @@ struct Body {
     classes: Vec<ClassDto>,
 }
 
+impl Digests {
+    /// The digests of `body`, as the writer seals it.
+    fn of(body: &Body) -> Digests {
+        Digests {
+            map: map_digest(&body.scale, &body.vertices),
+            content: content_digest(body),
+        }
+    }
+}
+
 /// `sha256:` and the hex digest of `bytes`.
 fn sha256(bytes: &[u8]) -> String {
     use sha2::{Digest, Sha256};
@@ -228,10 +238,7 @@ pub fn to_json(loc: &Localizer) -> String {
     let dto = FileDto {
         format: FORMAT.to_string(),
         version: VERSION,
-        digest: Digests {
-            map: map_digest(&body.scale, &body.vertices),
-            content: content_digest(&body),
-        },
+        digest: Digests::of(&body),
         body,
     };
     serde_json::to_string(&dto).expect("plain data serializes")
@@ -263,8 +270,9 @@ pub fn from_json(bytes: &[u8]) -> Result<Localizer, FileError> {
             })
         }
     };
-    check("map", &digest.map, map_digest(&body.scale, &body.vertices))?;
-    check("content", &digest.content, content_digest(&body))?;
+    let computed = Digests::of(&body);
+    check("map", &digest.map, computed.map)?;
+    check("content", &digest.content, computed.content)?;
     let dto = body;
     let ring: Vec<Point> = dto
         .vertices
@@ -286,6 +294,9 @@ pub fn from_json(bytes: &[u8]) -> Result<Localizer, FileError> {
         map = map.with_name(name);
     }
     let n = map.n();
+    let v = map.vertices();
+    let vertex_set: rustc_hash::FxHashSet<Point> = v.iter().copied().collect();
+    let is_vertex = |p: Point| vertex_set.contains(&p);
     let mut keys = Vec::with_capacity(dto.classes.len());
     let mut overlays = Vec::with_capacity(dto.classes.len());
     for (k, c) in dto.classes.into_iter().enumerate() {
@@ -311,8 +322,6 @@ pub fn from_json(bytes: &[u8]) -> Result<Localizer, FileError> {
             return Err(bad("offsets and labels differ in length"));
         }
         let mut items = Vec::with_capacity(c.items.len());
-        let v = map.vertices();
-        let is_vertex = |p: Point| v.contains(&p);
         for it in &c.items {
             if it.origin >= n {
                 return Err(bad("an item's origin is not a map vertex"));
@@ -340,17 +349,9 @@ pub fn from_json(bytes: &[u8]) -> Result<Localizer, FileError> {
             let pts = it.points.iter().map(unpt).collect::<Result<Vec<_>, _>>()?;
             // Shapes are stored translated by minus their origin vertex:
             // moved back, every point lies in the closed map.
-            let placed = |p: &RatPoint| {
-                RatPoint::new(
-                    p.hx() + Integer::from(o.x) * p.hw(),
-                    p.hy() + Integer::from(o.y) * p.hw(),
-                    p.hw().clone(),
-                )
-                .expect("w > 0")
-            };
             if let Some(p) = pts
                 .iter()
-                .find(|p| locate_rat(v, &placed(p)) == Containment::Outside)
+                .find(|p| locate_rat(v, &crate::shifted(p, o, 1)) == Containment::Outside)
             {
                 return Err(bad(&format!(
                     "an item's point {p}, at origin {}, lies outside the map",
@@ -421,10 +422,7 @@ mod tests {
     fn resealed(text: &str, edit: impl FnOnce(&mut Body)) -> String {
         let mut dto: FileDto = serde_json::from_str(text).unwrap();
         edit(&mut dto.body);
-        dto.digest = Digests {
-            map: map_digest(&dto.body.scale, &dto.body.vertices),
-            content: content_digest(&dto.body),
-        };
+        dto.digest = Digests::of(&dto.body);
         serde_json::to_string(&dto).unwrap()
     }
 

@@ -102,6 +102,11 @@ pub fn site_bytes(samples: usize) -> u64 {
     signature + std::mem::size_of::<Site>() as u64 + 64
 }
 
+/// How many sites fit [`Options::max_memory`].
+fn site_budget(opts: &Options) -> u64 {
+    opts.max_memory / site_bytes(opts.samples)
+}
+
 /// Why [`ScanLocalizer::try_new`] refuses a map.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 #[error(
@@ -215,13 +220,11 @@ impl ScanLocalizer {
     /// than [`Options::max_memory`].
     pub fn try_new(map: &Map, opts: Options) -> Result<ScanLocalizer, TooLarge> {
         let d = Decomposition::new(map);
-        let per_site = site_bytes(opts.samples);
         let cells = d.cells().len();
-        let needed = cells as u64 * per_site;
-        if needed > opts.max_memory {
+        if cells as u64 > site_budget(&opts) {
             return Err(TooLarge {
                 cells,
-                needed_mib: needed.div_ceil(1 << 20),
+                needed_mib: (cells as u64 * site_bytes(opts.samples)).div_ceil(1 << 20),
                 limit_mib: opts.max_memory >> 20,
             });
         }
@@ -235,8 +238,9 @@ impl ScanLocalizer {
         use rayon::prelude::*;
         let walls = Walls::new(crate::walls(d.map()));
         let (cells, neighbours) = cell_sites(d);
-        let budget = opts.max_memory / site_bytes(opts.samples);
-        let spacing = opts.lattice.map(|g| fitted_spacing(&cells, g, budget));
+        let spacing = opts
+            .lattice
+            .map(|g| fitted_spacing(&cells, g, site_budget(&opts)));
         let mut sites = Vec::with_capacity(cells.len());
         let mut cell_list = Vec::with_capacity(cells.len());
         for c in cells {

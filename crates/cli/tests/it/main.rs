@@ -4,14 +4,19 @@
 use std::io::Write;
 use std::process::{Command, Output, Stdio};
 
-fn wai(args: &[&str], stdin: &[u8]) -> Output {
-    let mut child = Command::new(env!("CARGO_BIN_EXE_wai"))
+/// `wai args` started with its standard output and error piped.
+fn spawn(args: &[&str], stdin: Stdio) -> std::process::Child {
+    Command::new(env!("CARGO_BIN_EXE_wai"))
         .args(args)
-        .stdin(Stdio::piped())
+        .stdin(stdin)
         .stdout(Stdio::piped())
         .stderr(Stdio::piped())
         .spawn()
-        .expect("the wai binary runs");
+        .expect("the wai binary runs")
+}
+
+fn wai(args: &[&str], stdin: &[u8]) -> Output {
+    let mut child = spawn(args, Stdio::piped());
     child.stdin.take().unwrap().write_all(stdin).unwrap();
     child.wait_with_output().unwrap()
 }
@@ -462,13 +467,7 @@ mod scan_eval;
 /// error.
 fn with_closed_pipe(args: &[&str], keep: usize) -> (Option<i32>, String) {
     use std::io::Read;
-    let mut child = Command::new(env!("CARGO_BIN_EXE_wai"))
-        .args(args)
-        .stdin(Stdio::null())
-        .stdout(Stdio::piped())
-        .stderr(Stdio::piped())
-        .spawn()
-        .expect("the wai binary runs");
+    let mut child = spawn(args, Stdio::null());
     let mut stdout = child.stdout.take().unwrap();
     let mut head = vec![0; keep];
     stdout.read_exact(&mut head).unwrap();
