@@ -397,14 +397,10 @@ impl<'a> Geo<'a> {
 }
 
 /// The orientation of three points `[x, y, w]` (w > 0): the sign of the
-/// 3×3 determinant of their rows, in checked `i128`; `None` on overflow.
+/// 3×3 determinant of their rows (`wai_exact::det3_sign_i128`: unchecked
+/// below its proven bound, checked above); `None` on overflow.
 fn orientation_small(a: [i128; 3], b: [i128; 3], c: [i128; 3]) -> Option<Orientation> {
-    let m = |u: i128, v: i128| u.checked_mul(v);
-    let minor = |i: usize, j: usize| m(b[i], c[j])?.checked_sub(m(b[j], c[i])?);
-    let det = m(a[0], minor(1, 2)?)?
-        .checked_sub(m(a[1], minor(0, 2)?)?)?
-        .checked_add(m(a[2], minor(0, 1)?)?)?;
-    Some(match det.cmp(&0) {
+    Some(match wai_exact::det3_sign_i128(a, b, c)? {
         Ordering::Greater => Orientation::CounterClockwise,
         Ordering::Less => Orientation::Clockwise,
         Ordering::Equal => Orientation::Collinear,

@@ -47,6 +47,7 @@ pub use predicates::{
 };
 pub use segment::{classify_segments, Segment, SegmentIntersection};
 pub use vector::{
-    convex_hull, turn, BigVector, QPoint, Vector, HOMOGENEOUS_FAST_BITS, VECTOR_FAST_BITS,
+    convex_hull, det3_sign_i128, turn, BigVector, QPoint, Vector, HOMOGENEOUS_FAST_BITS,
+    VECTOR_FAST_BITS,
 };
 pub use visibility::{sees, Sight};

@@ -142,14 +142,22 @@ impl Vector {
     #[inline]
     pub(crate) fn cross_fast(self, o: Vector) -> i128 {
         debug_assert!(narrow(self.x, self.y) && narrow(o.x, o.y));
-        self.x * o.y - self.y * o.x
+        // Below the bound nothing wraps (products < 2^126, difference
+        // < 2^127); the wrapping operations only spare the overflow checks
+        // of fuzzing builds, which the bound makes redundant.
+        self.x
+            .wrapping_mul(o.y)
+            .wrapping_sub(self.y.wrapping_mul(o.x))
     }
 
     /// [`Vector::dot`] without the check, as [`Vector::cross_fast`].
     #[inline]
     pub(crate) fn dot_fast(self, o: Vector) -> i128 {
         debug_assert!(narrow(self.x, self.y) && narrow(o.x, o.y));
-        self.x * o.x + self.y * o.y
+        // As in `cross_fast`: exact below the bound.
+        self.x
+            .wrapping_mul(o.x)
+            .wrapping_add(self.y.wrapping_mul(o.y))
     }
 
     /// The sign of `self × o` (`Greater`: `o` is counter-clockwise from
@@ -659,10 +667,32 @@ fn homogeneous_small(p: &QPoint) -> Option<[i128; 3]> {
 /// below `2^HOMOGENEOUS_FAST_BITS` (see there for the bound).
 #[inline]
 pub(crate) fn det3_sign_small(a: [i128; 3], b: [i128; 3], c: [i128; 3]) -> Ordering {
-    let m0 = b[1] * c[2] - b[2] * c[1];
-    let m1 = b[0] * c[2] - b[2] * c[0];
-    let m2 = b[0] * c[1] - b[1] * c[0];
-    (a[0] * m0 - a[1] * m1 + a[2] * m2).cmp(&0)
+    debug_assert!(a.iter().chain(&b).chain(&c).all(|&v| homogeneous_fits(v)));
+    // Exact below the bound (minors < 2^83, terms < 2^124, sum < 2^126):
+    // wrapping operations only spare fuzzing builds' redundant checks.
+    let (m, s) = (i128::wrapping_mul, i128::wrapping_sub);
+    let m0 = s(m(b[1], c[2]), m(b[2], c[1]));
+    let m1 = s(m(b[0], c[2]), m(b[2], c[0]));
+    let m2 = s(m(b[0], c[1]), m(b[1], c[0]));
+    s(m(a[0], m0), m(a[1], m1))
+        .wrapping_add(m(a[2], m2))
+        .cmp(&0)
+}
+
+/// The sign of the determinant of three homogeneous rows `[x, y, w]` in
+/// `i128`: through [`det3_sign_small`] when every entry is below
+/// `2^HOMOGENEOUS_FAST_BITS`, else in checked arithmetic; `None` if that
+/// overflows.
+pub fn det3_sign_i128(a: [i128; 3], b: [i128; 3], c: [i128; 3]) -> Option<Ordering> {
+    if a.iter().chain(&b).chain(&c).all(|&v| homogeneous_fits(v)) {
+        return Some(det3_sign_small(a, b, c));
+    }
+    let m = |u: i128, v: i128| u.checked_mul(v);
+    let minor = |i: usize, j: usize| m(b[i], c[j])?.checked_sub(m(b[j], c[i])?);
+    let det = m(a[0], minor(1, 2)?)?
+        .checked_sub(m(a[1], minor(0, 2)?)?)?
+        .checked_add(m(a[2], minor(0, 1)?)?)?;
+    Some(det.cmp(&0))
 }
 
 /// The homogeneous rows `(X, Y, W)` of a [`RatPoint`] in `i128`, if each

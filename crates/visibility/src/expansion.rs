@@ -79,8 +79,11 @@ impl<'a> Frame<'a> {
         match self {
             Frame::Fast { x, y, w, v } => {
                 // Directions below 2^62 (the note above): the differences
-                // fit, and the cross sign takes its i128 path.
-                let d = |k: usize| Vector::new(w * v[k].x - x, w * v[k].y - y);
+                // fit, and the cross sign takes its i128 path. Nothing
+                // wraps below the bound; the wrapping operations spare
+                // fuzzing builds' redundant overflow checks.
+                let c = |a: i128, b: i128| w.wrapping_mul(a).wrapping_sub(b);
+                let d = |k: usize| Vector::new(c(v[k].x, *x), c(v[k].y, *y));
                 d(i).cross_sign(d(j))
             }
             Frame::Exact { x, y, w, v } => {

@@ -63,7 +63,7 @@ fn check_study(study: &Study<'_>) -> Report {
         if !pair.same_skeleton() {
             report.count("different skeletons", r.examined);
         }
-        r.tag("pair", json!([pair.first, pair.second]));
+        r.tag("pair", || json!([pair.first, pair.second]));
         report.absorb(r);
     }
     report

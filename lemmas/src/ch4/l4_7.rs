@@ -59,7 +59,7 @@ fn check_study(study: &Study<'_>) -> Report {
     let mut report = Report::new(ID);
     for (pair, x, types) in classified_pairs(study) {
         let mut r = check_types(x, types);
-        r.tag("pair", json!([pair.first, pair.second]));
+        r.tag("pair", || json!([pair.first, pair.second]));
         report.absorb(r);
     }
     report

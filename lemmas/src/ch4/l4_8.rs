@@ -53,7 +53,7 @@ fn check_study(study: &Study<'_>) -> Report {
             let (p, q) = (&rings[one.0][one.1], &rings[other.0][other.1]);
             let witnesses = study.witnesses()[one.0][one.1].pieces();
             let mut r = check(p, q, &witnesses);
-            r.tag("pair", json!([one, other]));
+            r.tag("pair", || json!([one, other]));
             report.absorb(r);
         }
     }

@@ -86,7 +86,7 @@ fn check_study(study: &Study<'_>) -> Report {
         for w in &ws {
             for w2 in &ws2 {
                 let mut r = check_meeting(p, q, &meeting, w, w2);
-                r.tag("pair", json!([pair.first, pair.second]));
+                r.tag("pair", || json!([pair.first, pair.second]));
                 report.absorb(r);
             }
         }

@@ -108,12 +108,11 @@ fn check_study(study: &Study<'_>) -> Report {
             };
             let mut one = check_pair(&js, g, meet);
             if !one.violations.is_empty() {
-                one.tag("class", json!(class));
-                one.tag("edges", json!([e, f]));
-                one.tag(
-                    "embeddings",
-                    json!(js.iter().map(|&j| c.embeddings[j]).collect::<Vec<_>>()),
-                );
+                one.tag("class", || json!(class));
+                one.tag("edges", || json!([e, f]));
+                one.tag("embeddings", || {
+                    json!(js.iter().map(|&j| c.embeddings[j]).collect::<Vec<_>>())
+                });
             }
             report.absorb(one);
         }

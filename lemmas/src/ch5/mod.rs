@@ -38,8 +38,8 @@ pub fn over_gap_classes(
     for (class, (g, c)) in classes.enumerate() {
         let mut one = check(g, c);
         if !one.violations.is_empty() {
-            one.tag("class", serde_json::json!(class));
-            one.tag("embeddings", serde_json::json!(c.embeddings));
+            one.tag("class", || serde_json::json!(class));
+            one.tag("embeddings", || serde_json::json!(c.embeddings));
         }
         report.absorb(one);
     }

@@ -77,7 +77,7 @@ fn check_study(study: &Study<'_>) -> Report {
     let classes = study.candidate_sets().iter().zip(study.edge_pairs());
     for (class, (c, pairs)) in classes.enumerate() {
         let (mut one, k) = check_pairs(c, pairs, BOUND);
-        one.tag("class", json!(class));
+        one.tag("class", || json!(class));
         report.absorb(one);
         largest = largest.max(k);
     }

@@ -164,8 +164,15 @@ impl Report {
 
     /// Adds `key: value` to the data of every violation found so far (the
     /// instance they belong to: a pair of embeddings, a class…), and to
-    /// where the largest ratio was reached.
-    pub fn tag(&mut self, key: &str, value: serde_json::Value) {
+    /// where the largest ratio was reached. `value` is built only if there
+    /// is such a place: most instances have none, and they are many.
+    pub fn tag(&mut self, key: &str, value: impl FnOnce() -> serde_json::Value) {
+        let wanted =
+            !self.violations.is_empty() || self.largest.as_ref().is_some_and(|l| l.at.is_object());
+        if !wanted {
+            return;
+        }
+        let value = value();
         for v in &mut self.violations {
             v.data[key] = value.clone();
         }

@@ -27,7 +27,9 @@
 //!
 //! Everything stays below `2^127`; `fast_bits_bound_holds` recomputes the
 //! worst case, and the differential tests compare every result with the
-//! rational path.
+//! rational path. Products are taken with [`mul`] (wrapping, so exact
+//! below the bound): fuzzing builds check every `i128` product for
+//! overflow through a library call, which the bound makes redundant.
 
 use super::{BoundaryEdge, Intersection};
 use rug::Rational;
@@ -65,12 +67,29 @@ fn sub(a: I, b: I) -> [i128; 2] {
     ]
 }
 
+/// `a·b`, exact below the module's bound.
+#[inline]
+fn mul(a: i128, b: i128) -> i128 {
+    a.wrapping_mul(b)
+}
+
 fn cross(u: [i128; 2], v: [i128; 2]) -> i128 {
-    u[0] * v[1] - u[1] * v[0]
+    mul(u[0], v[1]) - mul(u[1], v[0])
 }
 
 fn dot(u: [i128; 2], v: [i128; 2]) -> i128 {
-    u[0] * v[0] + u[1] * v[1]
+    mul(u[0], v[0]) + mul(u[1], v[1])
+}
+
+/// The index after `j` around a ring of `n` (no division: this runs
+/// once per edge pair).
+#[inline]
+fn next(j: usize, n: usize) -> usize {
+    if j + 1 == n {
+        0
+    } else {
+        j + 1
+    }
 }
 
 /// The sign of `(b − a) × (c − a)`.
@@ -140,7 +159,7 @@ impl Frac {
     const ONE: Frac = Frac { n: 1, d: 1 };
 
     fn cmp(self, o: Frac) -> Ordering {
-        (self.n * o.d).cmp(&(o.n * self.d))
+        mul(self.n, o.d).cmp(&mul(o.n, self.d))
     }
 
     /// Strictly between `self` and `o` (`self < o`).
@@ -183,9 +202,10 @@ fn segment_cuts(a: I, b: I, c: I, e: I, out: &mut Vec<Frac>) {
 /// The cuts of `a → b` by the boundary of `q`, with 0 and 1, sorted,
 /// without repeats.
 fn cuts(a: I, b: I, q: &[I]) -> Vec<Frac> {
-    let mut cuts = vec![Frac::ZERO, Frac::ONE];
+    let mut cuts = Vec::with_capacity(8);
+    cuts.extend([Frac::ZERO, Frac::ONE]);
     for j in 0..q.len() {
-        segment_cuts(a, b, q[j], q[(j + 1) % q.len()], &mut cuts);
+        segment_cuts(a, b, q[j], q[next(j, q.len())], &mut cuts);
     }
     cuts.sort_by(|x, y| x.cmp(*y));
     cuts.dedup_by(|x, y| x.cmp(*y) == Ordering::Equal);
@@ -196,18 +216,22 @@ fn cuts(a: I, b: I, q: &[I]) -> Vec<Frac> {
 fn at(a: I, b: I, t: Frac) -> [i128; 3] {
     let d = sub(b, a);
     [
-        i128::from(a[0]) * t.d + t.n * d[0],
-        i128::from(a[1]) * t.d + t.n * d[1],
+        mul(i128::from(a[0]), t.d) + mul(t.n, d[0]),
+        mul(i128::from(a[1]), t.d) + mul(t.n, d[1]),
         t.d,
     ]
 }
 
 /// The same point reduced: coprime entries, `W > 0`.
 fn reduced(p: [i128; 3]) -> [i128; 3] {
-    let g = gcd(
-        gcd(p[0].unsigned_abs(), p[1].unsigned_abs()),
-        p[2].unsigned_abs(),
-    );
+    if p[2] == 1 {
+        return p; // an end of the edge: already coprime
+    }
+    // W first: it is the smallest entry, and often coprime to X already.
+    let mut g = gcd(p[2].unsigned_abs(), p[0].unsigned_abs());
+    if g > 1 {
+        g = gcd(g, p[1].unsigned_abs());
+    }
     let g = g.max(1) as i128;
     [p[0] / g, p[1] / g, p[2] / g]
 }
@@ -238,21 +262,24 @@ fn locate(q: &[I], x: [i128; 3]) -> Locus {
     let w = x[2];
     let mut inside = false;
     for j in 0..n {
-        let (a, b) = (q[j], q[(j + 1) % n]);
+        let (a, b) = (q[j], q[next(j, q.len())]);
         // Signs of a_y − x_y and b_y − x_y, scaled by W > 0.
-        let ay = (i128::from(a[1]) * w - x[1]).cmp(&0);
-        let by = (i128::from(b[1]) * w - x[1]).cmp(&0);
+        let ay = (mul(i128::from(a[1]), w) - x[1]).cmp(&0);
+        let by = (mul(i128::from(b[1]), w) - x[1]).cmp(&0);
         if (ay == Ordering::Less && by == Ordering::Less)
             || (ay == Ordering::Greater && by == Ordering::Greater)
         {
             continue;
         }
         let e = sub(b, a);
-        let r = [x[0] - i128::from(a[0]) * w, x[1] - i128::from(a[1]) * w];
+        let r = [
+            x[0] - mul(i128::from(a[0]), w),
+            x[1] - mul(i128::from(a[1]), w),
+        ];
         let t = cross(e, r).cmp(&0);
         let within = |k: usize| {
             let (lo, hi) = (a[k].min(b[k]), a[k].max(b[k]));
-            i128::from(lo) * w <= x[k] && x[k] <= i128::from(hi) * w
+            mul(i128::from(lo), w) <= x[k] && x[k] <= mul(i128::from(hi), w)
         };
         if t == Ordering::Equal && within(0) && within(1) {
             return Locus::OnEdge(j);
@@ -271,6 +298,31 @@ fn locate(q: &[I], x: [i128; 3]) -> Locus {
     }
 }
 
+/// The bounding box of a ring.
+struct Bounds {
+    lo: I,
+    hi: I,
+}
+
+impl Bounds {
+    fn of(q: &[I]) -> Bounds {
+        let (mut lo, mut hi) = ([i64::MAX; 2], [i64::MIN; 2]);
+        for v in q {
+            for k in 0..2 {
+                lo[k] = lo[k].min(v[k]);
+                hi[k] = hi[k].max(v[k]);
+            }
+        }
+        Bounds { lo, hi }
+    }
+
+    /// Whether the closed segment `ab` lies strictly outside the box on
+    /// one side (so it has no point in or on the ring).
+    fn misses(&self, a: I, b: I) -> bool {
+        (0..2).any(|k| a[k].max(b[k]) < self.lo[k] || a[k].min(b[k]) > self.hi[k])
+    }
+}
+
 /// A directed boundary piece: reduced ends, the direction of its edge.
 #[derive(Clone, Debug)]
 struct Stretch {
@@ -283,8 +335,12 @@ struct Stretch {
 
 /// [`super`]'s `boundary_pieces` on small rings.
 fn boundary_pieces(p: &[I], q: &[I], p_is_first: bool, shared: bool, out: &mut Vec<Stretch>) {
+    let bounds = Bounds::of(q);
     for i in 0..p.len() {
-        let (a, b) = (p[i], p[(i + 1) % p.len()]);
+        let (a, b) = (p[i], p[next(i, p.len())]);
+        if bounds.misses(a, b) {
+            continue; // outside q's box: every piece would be outside q
+        }
         let d = sub(b, a);
         let cuts = cuts(a, b, q);
         for w in cuts.windows(2) {
@@ -292,7 +348,7 @@ fn boundary_pieces(p: &[I], q: &[I], p_is_first: bool, shared: bool, out: &mut V
                 Locus::Inside => None,
                 Locus::Outside => continue,
                 Locus::OnEdge(j) => {
-                    let f = sub(q[(j + 1) % q.len()], q[j]);
+                    let f = sub(q[next(j, q.len())], q[j]);
                     if !shared || dot(d, f) <= 0 {
                         continue;
                     }
@@ -373,16 +429,10 @@ pub(crate) fn intersection(p: &[I], q: &[I]) -> Intersection {
 /// [`crate::witness::interiors_overlap`]'s test of the edges of `p`
 /// against `q` on small rings.
 pub(crate) fn one_side_overlaps(p: &[I], q: &[I]) -> bool {
-    let (mut lo, mut hi) = ([i64::MAX; 2], [i64::MIN; 2]);
-    for v in q {
-        for k in 0..2 {
-            lo[k] = lo[k].min(v[k]);
-            hi[k] = hi[k].max(v[k]);
-        }
-    }
+    let bounds = Bounds::of(q);
     for i in 0..p.len() {
-        let (a, b) = (p[i], p[(i + 1) % p.len()]);
-        if (0..2).any(|k| a[k].max(b[k]) < lo[k] || a[k].min(b[k]) > hi[k]) {
+        let (a, b) = (p[i], p[next(i, p.len())]);
+        if bounds.misses(a, b) {
             continue;
         }
         let d = sub(b, a);
@@ -391,7 +441,7 @@ pub(crate) fn one_side_overlaps(p: &[I], q: &[I]) -> bool {
                 Locus::Inside => return true,
                 Locus::Outside => {}
                 Locus::OnEdge(j) => {
-                    if dot(d, sub(q[(j + 1) % q.len()], q[j])) > 0 {
+                    if dot(d, sub(q[next(j, q.len())], q[j])) > 0 {
                         return true;
                     }
                 }

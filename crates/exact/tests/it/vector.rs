@@ -7,8 +7,8 @@ use proptest::prelude::*;
 use rug::{Integer, Rational};
 use std::cmp::Ordering;
 use wai_exact::{
-    convex_hull, orientation, orientation_rat, turn, BigVector, Orientation, Point, QPoint,
-    RatPoint, Vector, HOMOGENEOUS_FAST_BITS, VECTOR_FAST_BITS,
+    convex_hull, det3_sign_i128, orientation, orientation_rat, turn, BigVector, Orientation, Point,
+    QPoint, RatPoint, Vector, HOMOGENEOUS_FAST_BITS, VECTOR_FAST_BITS,
 };
 
 // ---------------------------------------------------------------------------
@@ -110,6 +110,27 @@ fn ratpoint() -> impl Strategy<Value = RatPoint> {
 
 const H: u32 = HOMOGENEOUS_FAST_BITS;
 
+/// The determinant of three rows in GMP integers.
+fn big_det3(a: [i128; 3], b: [i128; 3], c: [i128; 3]) -> Integer {
+    let z = |v: i128| Integer::from(v);
+    let minor = |i: usize, j: usize| z(b[i]) * c[j] - z(b[j]) * c[i];
+    z(a[0]) * minor(1, 2) - z(a[1]) * minor(0, 2) + z(a[2]) * minor(0, 1)
+}
+
+/// An entry of a homogeneous row: small, at the unchecked path's bound
+/// (`2^H − 1`, `2^H`) or far beyond it, either sign.
+fn entry() -> impl Strategy<Value = i128> {
+    let edge = (1i128 << H) - 1;
+    prop_oneof![
+        3 => -50i128..=50,
+        2 => Just(edge),
+        2 => Just(-edge),
+        1 => Just(edge + 1),
+        2 => -(1i128 << H)..=1i128 << H,
+        1 => -(1i128 << 62)..=1i128 << 62,
+    ]
+}
+
 fn check_turn(a: &QPoint, b: &QPoint, c: &QPoint) {
     let t = turn(a, b, c);
     assert_eq!(t, rational_turn(a, b, c), "{a} {b} {c}");
@@ -138,6 +159,20 @@ proptest! {
         if narrow(u) && narrow(v) {
             prop_assert_eq!(Integer::from(u.cross(v)), big_cross(p, q));
             prop_assert_eq!(Integer::from(u.dot(v)), big_dot(p, q));
+        }
+    }
+
+    #[test]
+    fn det3_signs_equal_gmp(
+        a in prop::array::uniform3(entry()),
+        b in prop::array::uniform3(entry()),
+        c in prop::array::uniform3(entry()),
+    ) {
+        // Unchecked below the bound, checked above: either the GMP sign or
+        // `None` (an overflow), never a wrong sign.
+        match det3_sign_i128(a, b, c) {
+            Some(s) => prop_assert_eq!(s, big_det3(a, b, c).cmp0()),
+            None => prop_assert!(a.iter().chain(&b).chain(&c).any(|v| v.unsigned_abs() >= 1 << H)),
         }
     }
 
