@@ -55,7 +55,7 @@ fn gib(bytes: u64) -> f64 {
 
 #[derive(clap::Args, Debug)]
 pub struct Args {
-    /// Map file (JSON map format or GeoJSON); `-` reads standard input.
+    #[arg(help = crate::input::MAP_HELP)]
     pub map: PathBuf,
     /// Print JSON instead of text.
     #[arg(long)]

@@ -16,7 +16,7 @@ use wai_study::{Embedded, OverlappingPair, Study};
 
 #[derive(clap::Args, Debug)]
 pub struct Args {
-    /// Map file (JSON map format or GeoJSON); `-` reads standard input.
+    #[arg(help = crate::input::MAP_HELP)]
     pub map: PathBuf,
     /// Only this class (an index printed by `wai decompose --json`).
     #[arg(long, value_parser = crate::options::count, allow_negative_numbers = true)]

@@ -12,7 +12,7 @@ use crate::output::unit;
 
 #[derive(clap::Args, Debug)]
 pub struct Args {
-    /// Map file (JSON map format or GeoJSON); `-` reads standard input.
+    #[arg(help = crate::input::MAP_HELP)]
     pub map: PathBuf,
     /// Print JSON instead of text.
     #[arg(long)]

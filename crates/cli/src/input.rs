@@ -66,10 +66,35 @@ fn looks_like_geojson(bytes: &[u8]) -> bool {
         .is_some()
 }
 
-/// Read and validate a map, printing normalisation notes on stderr.
+/// Read and validate a map, printing normalisation notes on stderr; or
+/// build the generated map `path` names (`rooms:K`, `office:K[:SEED]`,
+/// `family:ID:P1,…`, when no file has that name).
 pub fn load(path: &Path, format: Format) -> Result<Loaded, Failure> {
+    if let Some(map) = generated(path)? {
+        return Ok(Loaded {
+            map,
+            normalisation: Default::default(),
+        });
+    }
     load_bytes(path, &read_bytes(path)?, format)
 }
+
+/// The generated map `path` names, if it names one rather than a file.
+pub(crate) fn generated(path: &Path) -> Result<Option<wai_map::Map>, Failure> {
+    match path.to_str() {
+        Some(spec) if crate::scan_maps::is_generated(spec) => {
+            let map = crate::scan_maps::generate(spec)?.map;
+            Ok(Some(match map.name() {
+                Some(_) => map,
+                None => map.with_name(spec),
+            }))
+        }
+        _ => Ok(None),
+    }
+}
+
+/// The help line of a map argument.
+pub(crate) const MAP_HELP: &str = "Map file (JSON map format or GeoJSON; `-` reads standard input), or a generated map: `rooms:K`, `office:K[:SEED]`, `family:ID:P1,P2,…` (in metres)";
 
 /// [`load`] for bytes already read from `path` (named in messages).
 pub fn load_bytes(path: &Path, bytes: &[u8], format: Format) -> Result<Loaded, Failure> {

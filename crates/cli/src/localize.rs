@@ -24,6 +24,9 @@ fn is_preprocessed(bytes: &[u8]) -> bool {
 /// A localizer from a map file (preprocessed now) or a preprocessed file,
 /// read once (standard input too).
 fn localizer(path: &Path, format: Format) -> Result<Localizer, Failure> {
+    if let Some(map) = crate::input::generated(path)? {
+        return Ok(preprocessed(path, &map));
+    }
     let bytes = read_bytes(path)?;
     if is_preprocessed(&bytes) {
         return wai_localize::file::from_json(&bytes)
@@ -141,7 +144,8 @@ pub(crate) fn answers_svg(map: &Map, view: &RobotView, answer: &wai_localize::An
 
 #[derive(clap::Args, Debug)]
 pub struct Args {
-    /// A map file (preprocessed now) or a file written by `wai preprocess`.
+    /// A map file (preprocessed now), a file written by `wai preprocess`,
+    /// or a generated map: `rooms:K`, `office:K[:SEED]`, `family:ID:P1,…`.
     pub map: PathBuf,
     /// Simulate the view at `x,y` (exact numbers in the map's units).
     #[arg(long, allow_hyphen_values = true)]

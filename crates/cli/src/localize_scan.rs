@@ -37,6 +37,10 @@ pub struct Args {
     /// The map's units: `auto`, `m`, `lonlat` or `scale:K` (K metres per
     /// unit). Auto: longitude/latitude when the map spans less than 0.1°
     /// within ±180/±90, 0.025 m per pixel for an R2V file, else metres.
+    /// Every map is localized in metres; a longitude/latitude map in a
+    /// local frame (x east, y north from its south-west corner, printed
+    /// with the answer), and its poses are given in longitude, latitude
+    /// too.
     #[arg(long, default_value = "auto")]
     pub units: String,
     /// A local query (sec. 6.10.4): only cells whose site lies within R
@@ -88,10 +92,10 @@ pub fn run(args: &Args) -> Result<(), Failure> {
         .map_err(|e| Failure::invalid(format!("{}: refused: {e}", m.name)))?;
     let lattice = match (loc.lattice_spacing(), asked) {
         (Some(g), Some(d)) if g > d => format!(
-            "; lattice widened from {d} to {g:.2} units to fit --max-memory {} MiB",
+            "; lattice widened from {d} to {g:.2} m to fit --max-memory {} MiB",
             args.max_memory >> 20
         ),
-        (Some(g), _) => format!("; lattice {g} units"),
+        (Some(g), _) => format!("; lattice {g} m"),
         (None, _) => String::new(),
     };
     let preprocess_s = t.elapsed().as_secs_f64();
@@ -102,6 +106,16 @@ pub fn run(args: &Args) -> Result<(), Failure> {
         crate::scan::write(path, &svg)?;
     }
     let cell_of = |site: usize| loc.sites()[site].cell;
+    let frame = m.frame;
+    let pose_out = |p: &wai_scan::Pose| {
+        let mut v = pose_json(p);
+        if let Some(f) = &frame {
+            let (lon, lat) = f.to_lonlat(p.x, p.y);
+            v["lon"] = json!(lon);
+            v["lat"] = json!(lat);
+        }
+        v
+    };
     if args.json {
         let out = json!({
             "map": m.name,
@@ -112,8 +126,15 @@ pub fn run(args: &Args) -> Result<(), Failure> {
             "lattice_spacing": loc.lattice_spacing(),
             "preprocess_s": preprocess_s,
             "ms": ms,
-            "best": answer.best.as_ref().map(|h| json!({"pose": pose_json(&h.pose), "score": h.score, "cell": cell_of(h.from_site)})),
-            "answer_set": answer.answer_set.iter().map(|h| json!({"pose": pose_json(&h.pose), "score": h.score, "cell": cell_of(h.from_site)})).collect::<Vec<_>>(),
+            "frame": frame.map(|f| json!({
+                "description": f.describe(),
+                "lon0": f.lon0,
+                "lat0": f.lat0,
+                "east_metres_per_degree": f.east_per_degree,
+                "north_metres_per_degree": f.north_per_degree,
+            })),
+            "best": answer.best.as_ref().map(|h| json!({"pose": pose_out(&h.pose), "score": h.score, "cell": cell_of(h.from_site)})),
+            "answer_set": answer.answer_set.iter().map(|h| json!({"pose": pose_out(&h.pose), "score": h.score, "cell": cell_of(h.from_site)})).collect::<Vec<_>>(),
             "ranked": answer.ranked.iter().map(|r| json!({"cell": cell_of(r.site), "site": loc.sites()[r.site].at, "pcm": r.pcm, "heading_degrees": r.heading.to_degrees()})).collect::<Vec<_>>(),
             "pcm_evaluations": answer.evaluations,
         });
@@ -130,12 +151,24 @@ pub fn run(args: &Args) -> Result<(), Failure> {
         loc.sites().len(),
         answer.evaluations
     );
+    outln!("units: {}; poses in metres", m.units);
+    if let Some(f) = &frame {
+        outln!("frame: {}", f.describe());
+    }
+    let lonlat = |p: &wai_scan::Pose| match &frame {
+        Some(f) => {
+            let (lon, lat) = f.to_lonlat(p.x, p.y);
+            format!(" = lon {lon:.7}, lat {lat:.7}")
+        }
+        None => String::new(),
+    };
     match &answer.best {
         None => outln!("no pose found"),
         Some(b) => outln!(
-            "best pose ({:.3}, {:.3}) heading {:.2}° in cell {}, score {:.5}",
+            "best pose ({:.3}, {:.3}){} heading {:.2}° in cell {}, score {:.5}",
             b.pose.x,
             b.pose.y,
+            lonlat(&b.pose),
             b.pose.heading.to_degrees(),
             cell_of(b.from_site),
             b.score
@@ -147,9 +180,10 @@ pub fn run(args: &Args) -> Result<(), Failure> {
     );
     for h in &answer.answer_set {
         outln!(
-            "  ({:.3}, {:.3}) {:.2}°  score {:.5}",
+            "  ({:.3}, {:.3}){} {:.2}°  score {:.5}",
             h.pose.x,
             h.pose.y,
+            lonlat(&h.pose),
             h.pose.heading.to_degrees(),
             h.score
         );

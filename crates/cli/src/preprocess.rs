@@ -9,7 +9,7 @@ use crate::localize::preprocessed;
 
 #[derive(clap::Args, Debug)]
 pub struct Args {
-    /// Map file (JSON map format or GeoJSON); `-` reads standard input.
+    #[arg(help = crate::input::MAP_HELP)]
     pub map: PathBuf,
     /// Output file.
     #[arg(short, long)]

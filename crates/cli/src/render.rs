@@ -10,7 +10,7 @@ use crate::output::output;
 
 #[derive(clap::Args, Debug)]
 pub struct Args {
-    /// Map file (JSON map format or GeoJSON); `-` reads standard input.
+    #[arg(help = crate::input::MAP_HELP)]
     pub map: PathBuf,
     /// Output SVG file; standard output if absent.
     #[arg(long)]

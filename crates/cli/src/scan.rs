@@ -22,11 +22,13 @@ pub struct Args {
     /// localize-scan --help`); the scan is in metres.
     #[arg(long, default_value = "auto")]
     pub units: String,
-    /// The pose `x,y` or `x,y,θ`: position in the map's units, heading θ in
-    /// degrees counter-clockwise from the x axis (default 0).
+    /// The pose `x,y` or `x,y,θ`: position in metres (the map converted by
+    /// --units; a longitude/latitude map in its local frame, x east and y
+    /// north from its south-west corner), heading θ in degrees
+    /// counter-clockwise from the x axis (default 0).
     #[arg(long, allow_hyphen_values = true)]
     pub at: String,
-    /// Standard deviation of the Gaussian range noise, in the map's units.
+    /// Standard deviation of the Gaussian range noise, in metres.
     #[arg(long, default_value_t = 0.0, value_parser = crate::options::non_negative, allow_negative_numbers = true)]
     pub noise: f64,
     /// Beams at equal angles.
@@ -42,7 +44,7 @@ pub struct Args {
     /// Unknown obstacles: this many boxes the map does not know.
     #[arg(long, default_value_t = 0, value_parser = crate::options::count, allow_negative_numbers = true)]
     pub obstacles: usize,
-    /// Side of each obstacle box, in the map's units.
+    /// Side of each obstacle box, in metres.
     #[arg(long, default_value_t = 0.5, value_parser = crate::options::positive, allow_negative_numbers = true)]
     pub obstacle_size: f64,
     /// Seed of the noise and the obstacles.

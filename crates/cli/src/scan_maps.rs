@@ -10,7 +10,7 @@ use std::path::Path;
 
 use serde_json::{json, Value};
 use wai_map::Map;
-use wai_scan::units::{to_metres, Units};
+use wai_scan::units::{to_metres, LonLatFrame, Units};
 use wai_scan::{Pose, Scan};
 
 use crate::input::{load, Format};
@@ -25,6 +25,8 @@ pub(crate) struct EvalMap {
     /// For `rooms:K`: K rooms, 5 m apart, the first from x = 1 m, floors
     /// at y = 2.2 m (see [`wai_gen::repeated_rooms`]).
     pub(crate) rooms: Option<usize>,
+    /// For a longitude/latitude map: the metric frame it is localized in.
+    pub(crate) frame: Option<LonLatFrame>,
 }
 
 pub(crate) fn parse_units(text: &str) -> Result<Option<Units>, Failure> {
@@ -88,33 +90,46 @@ pub(crate) fn is_generated(spec: &str) -> bool {
         && !Path::new(spec).exists()
 }
 
-/// `map`, read from `path`, in metres by `units` (`auto` guesses), and the
-/// units used.
-pub(crate) fn in_metres(path: &str, map: Map, units: &str) -> Result<(Map, String), Failure> {
+/// `map`, read from `path`, in metres by `units` (`auto` guesses), the
+/// units used, and for a longitude/latitude map the frame.
+pub(crate) fn in_metres(
+    path: &str,
+    map: Map,
+    units: &str,
+) -> Result<(Map, String, Option<LonLatFrame>), Failure> {
     let u = parse_units(units)?.unwrap_or_else(|| auto_units(path, &map));
     if u == Units::Metres {
-        return Ok((map, units_label(u)));
+        return Ok((map, units_label(u), None));
     }
+    let frame = (u == Units::LonLatDegrees).then(|| LonLatFrame::of(&map));
     let metres = to_metres(&map, u).map_err(|e| {
         Failure::invalid(format!(
             "{path}: in metres ({}) the map is no longer valid: {e}",
             units_label(u)
         ))
     })?;
-    Ok((metres, units_label(u)))
+    Ok((metres, units_label(u), frame))
 }
 
 pub(crate) fn load_map(spec: &str, units: &str) -> Result<EvalMap, Failure> {
+    if is_generated(spec) {
+        generate(spec)
+    } else {
+        load_file(spec, units)
+    }
+}
+
+/// The generated map `spec` names (`rooms:K`, `office:K[:SEED]`,
+/// `family:ID:P1,P2,…`), in metres.
+pub(crate) fn generate(spec: &str) -> Result<EvalMap, Failure> {
     let generated = |kind, map: Map, rooms| EvalMap {
         name: spec.to_owned(),
         kind,
         map,
         units: "m".into(),
         rooms,
+        frame: None,
     };
-    if !is_generated(spec) {
-        return load_file(spec, units);
-    }
     if let Some(k) = spec.strip_prefix("rooms:") {
         let k = parse_u32(spec, k)?;
         if !(1..=200).contains(&k) {
@@ -162,7 +177,7 @@ fn load_file(spec: &str, units: &str) -> Result<EvalMap, Failure> {
     };
     let map = load(Path::new(path), Format::Auto)?.map;
     let name = map.name().map_or_else(|| path.to_owned(), str::to_owned);
-    let (metres, u) = in_metres(path, map, units)?;
+    let (metres, u, frame) = in_metres(path, map, units)?;
     let kind = if path.contains("westport") {
         "westport"
     } else if path.contains("r2v") {
@@ -176,6 +191,7 @@ fn load_file(spec: &str, units: &str) -> Result<EvalMap, Failure> {
         map: metres,
         units: u,
         rooms: None,
+        frame,
     })
 }
 

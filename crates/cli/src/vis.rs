@@ -182,7 +182,7 @@ fn json(map: &Map, vp: &VisibilityPolygon, sk: &Skeleton) -> String {
 
 #[derive(clap::Args, Debug)]
 pub struct Args {
-    /// Map file (JSON map format or GeoJSON); `-` reads standard input.
+    #[arg(help = crate::input::MAP_HELP)]
     pub map: PathBuf,
     /// The viewpoint `x,y`, exact numbers in the map's units (e.g. `3/2,0.25`).
     #[arg(long, allow_hyphen_values = true)]

@@ -25,10 +25,63 @@ pub enum Units {
 /// The mean Earth radius (IUGG), metres.
 const EARTH_RADIUS: f64 = 6_371_008.8;
 
-/// `map` in metres, vertices rounded to the millimetre.
-pub fn to_metres(map: &Map, units: Units) -> Result<Map, MapErrors> {
-    let pts: Vec<(f64, f64)> = map
-        .vertices()
+/// The metric frame a longitude/latitude map is localized in: x east and
+/// y north in metres from the map's south-west corner (its least
+/// longitude and least latitude), by the equirectangular projection at
+/// that corner's latitude.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct LonLatFrame {
+    /// The origin's longitude and latitude, degrees.
+    pub lon0: f64,
+    pub lat0: f64,
+    /// Metres per degree of longitude (at `lat0`) and of latitude.
+    pub east_per_degree: f64,
+    pub north_per_degree: f64,
+}
+
+impl LonLatFrame {
+    /// The frame of a map whose coordinates are longitude, latitude.
+    pub fn of(map: &Map) -> LonLatFrame {
+        let pts = degrees(map);
+        let lon0 = pts.iter().map(|p| p.0).fold(f64::INFINITY, f64::min);
+        let lat0 = pts.iter().map(|p| p.1).fold(f64::INFINITY, f64::min);
+        let k = EARTH_RADIUS * std::f64::consts::PI / 180.0;
+        LonLatFrame {
+            lon0,
+            lat0,
+            east_per_degree: k * lat0.to_radians().cos(),
+            north_per_degree: k,
+        }
+    }
+
+    /// A point of the frame (metres) as longitude, latitude.
+    pub fn to_lonlat(&self, x: f64, y: f64) -> (f64, f64) {
+        (
+            self.lon0 + x / self.east_per_degree,
+            self.lat0 + y / self.north_per_degree,
+        )
+    }
+
+    /// Longitude, latitude as a point of the frame (metres).
+    pub fn to_metres(&self, lon: f64, lat: f64) -> (f64, f64) {
+        (
+            (lon - self.lon0) * self.east_per_degree,
+            (lat - self.lat0) * self.north_per_degree,
+        )
+    }
+
+    /// One line saying what the frame is.
+    pub fn describe(&self) -> String {
+        format!(
+            "x east, y north in metres from lon {:.7}, lat {:.7} (the map's south-west corner; equirectangular at that latitude)",
+            self.lon0, self.lat0
+        )
+    }
+}
+
+/// The map's vertices in its own units, as floating point.
+fn degrees(map: &Map) -> Vec<(f64, f64)> {
+    map.vertices()
         .iter()
         .map(|p| {
             (
@@ -36,17 +89,20 @@ pub fn to_metres(map: &Map, units: Units) -> Result<Map, MapErrors> {
                 Rational::from((Integer::from(p.y), map.scale().clone())).to_f64(),
             )
         })
-        .collect();
+        .collect()
+}
+
+/// `map` in metres, vertices rounded to the millimetre; a longitude,
+/// latitude map in its [`LonLatFrame`].
+pub fn to_metres(map: &Map, units: Units) -> Result<Map, MapErrors> {
+    let pts = degrees(map);
     let metres: Vec<(f64, f64)> = match units {
         Units::Metres => pts,
         Units::Scale(k) => pts.iter().map(|&(x, y)| (x * k, y * k)).collect(),
         Units::LonLatDegrees => {
-            let lon0 = pts.iter().map(|p| p.0).fold(f64::INFINITY, f64::min);
-            let lat0 = pts.iter().map(|p| p.1).fold(f64::INFINITY, f64::min);
-            let k = EARTH_RADIUS * std::f64::consts::PI / 180.0;
-            let kx = k * lat0.to_radians().cos();
+            let frame = LonLatFrame::of(map);
             pts.iter()
-                .map(|&(lon, lat)| ((lon - lon0) * kx, (lat - lat0) * k))
+                .map(|&(lon, lat)| frame.to_metres(lon, lat))
                 .collect()
         }
     };

@@ -623,3 +623,38 @@ fn a_scan_without_enough_returns_is_not_localizable() {
     }
     std::fs::remove_dir_all(&dir).ok();
 }
+
+#[test]
+fn every_map_command_accepts_a_generated_map() {
+    let dir = std::env::temp_dir().join(format!("wai-generated-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let pre = dir.join("rooms.json");
+    let pre = pre.to_str().unwrap();
+    let commands: &[&[&str]] = &[
+        &["info", "rooms:2"],
+        &["vis", "rooms:2", "--at", "3,1"],
+        &["decompose", "rooms:2"],
+        &["render", "office:2"],
+        &["embeddings", "family:corridor-niches:2"],
+        &["preprocess", "rooms:2", "--out", pre],
+        &["localize", "rooms:2", "--at", "3,1"],
+        &["localize", pre, "--at", "3,1"],
+    ];
+    for args in commands {
+        let out = wai(args, b"");
+        let err = text(&out.stderr);
+        assert_eq!(out.status.code(), Some(0), "{args:?}: {err}");
+        assert!(!out.stdout.is_empty(), "{args:?}: no output");
+    }
+    // The generated map is named by its spec.
+    let info = text(&wai(&["info", "office:2"], b"").stdout);
+    assert!(info.contains("office:2"), "{info}");
+    // A malformed spec is a usage error naming it, not "no such file".
+    for (spec, needle) in [("rooms:x", "not a count"), ("family:nope:1", "nope")] {
+        let out = wai(&["decompose", spec], b"");
+        let err = text(&out.stderr);
+        assert_eq!(out.status.code(), Some(2), "{spec}: {err}");
+        assert!(err.contains(needle), "{spec}: {err}");
+    }
+    std::fs::remove_dir_all(&dir).ok();
+}

@@ -89,3 +89,52 @@ fn bad_poses_and_settings_are_refused() {
     }
     std::fs::remove_file(&file).ok();
 }
+
+/// An L-shaped room of about 23 × 17 m, in longitude and latitude.
+const LONLAT_L: &str = r#"{"outer": [["8", "47"], ["8.0003", "47"], ["8.0003", "47.0001"],
+    ["8.00015", "47.0001"], ["8.00015", "47.00015"], ["8", "47.00015"]]}"#;
+
+#[test]
+fn a_lonlat_map_is_localized_in_a_stated_frame_and_answered_in_lonlat() {
+    let dir = std::env::temp_dir().join(format!("wai-lonlat-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let map = dir.join("l.json");
+    std::fs::write(&map, LONLAT_L).unwrap();
+    let map = map.to_str().unwrap();
+    // The pose is in metres of the frame: 5 m east, 4 m north of the corner.
+    let scan = wai(&["scan", map, "--at", "5,4,30", "--beams", "360"], b"");
+    assert_eq!(scan.status.code(), Some(0), "{}", text(&scan.stderr));
+    let scan_file = dir.join("s.json");
+    std::fs::write(&scan_file, &scan.stdout).unwrap();
+    let s = scan_file.to_str().unwrap();
+    let out = wai(&["localize-scan", map, s, "--json"], b"");
+    assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
+    let v: serde_json::Value = serde_json::from_slice(&out.stdout).expect("JSON");
+    assert_eq!(v["units"], "lonlat");
+    let frame = &v["frame"];
+    assert_eq!(
+        (frame["lon0"].as_f64(), frame["lat0"].as_f64()),
+        (Some(8.0), Some(47.0))
+    );
+    assert!(frame["description"]
+        .as_str()
+        .unwrap()
+        .contains("south-west"));
+    let best = &v["best"]["pose"];
+    let (x, y) = (best["x"].as_f64().unwrap(), best["y"].as_f64().unwrap());
+    assert!((x - 5.0).abs() < 0.1 && (y - 4.0).abs() < 0.1, "{best}");
+    // The same pose in degrees: a metre is about 1.3e-5° of longitude and
+    // 9.0e-6° of latitude at 47° N.
+    let (lon, lat) = (best["lon"].as_f64().unwrap(), best["lat"].as_f64().unwrap());
+    let east = frame["east_metres_per_degree"].as_f64().unwrap();
+    let north = frame["north_metres_per_degree"].as_f64().unwrap();
+    assert!((75_000.0..76_500.0).contains(&east), "{east}");
+    assert!((111_000.0..111_400.0).contains(&north), "{north}");
+    assert!((lon - (8.0 + x / east)).abs() < 1e-9, "{lon}");
+    assert!((lat - (47.0 + y / north)).abs() < 1e-9, "{lat}");
+    // The text answer says the frame and gives the pose in degrees too.
+    let out = text(&wai(&["localize-scan", map, s], b"").stdout);
+    assert!(out.contains("frame: x east, y north in metres"), "{out}");
+    assert!(out.contains("lon 8.0000"), "{out}");
+    std::fs::remove_dir_all(&dir).ok();
+}
