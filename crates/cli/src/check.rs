@@ -516,6 +516,8 @@ fn replay(args: &Args, file: &Path) -> Result<(), Failure> {
     let bytes = std::fs::read(file).map_err(|e| Failure::io(format!("{}: {e}", file.display())))?;
     let value: Value = serde_json::from_slice(&bytes)
         .map_err(|e| Failure::invalid(format!("{}: not JSON: {e}", file.display())))?;
+    wai_hunt::counterexample::verify(&bytes)
+        .map_err(|e| Failure::invalid(format!("{}: refused: {e}", file.display())))?;
     let checker = wai_hunt::store::replay_checker(&value, args.plant.as_deref())
         .map_err(|e| Failure::invalid(format!("{}: {e}", file.display())))?;
     let claim = checker.id;

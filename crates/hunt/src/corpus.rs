@@ -78,9 +78,12 @@ pub fn maps_in(
     Ok(maps)
 }
 
-/// The map of a file in the JSON map format; errors name the file.
+/// The map of a file in the JSON map format; errors name the file. A
+/// sealed counterexample file must still match its digest
+/// ([`crate::counterexample::verify`]).
 pub fn read_map(f: &std::path::Path) -> Result<wai_map::Map, String> {
     let bytes = std::fs::read(f).map_err(|e| format!("{}: {e}", f.display()))?;
+    crate::counterexample::verify(&bytes).map_err(|e| format!("{}: {e}", f.display()))?;
     wai_map::json::from_json(&bytes)
         .map(|loaded| loaded.map)
         .map_err(|e| format!("{}: {e}", f.display()))

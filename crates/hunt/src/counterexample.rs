@@ -4,12 +4,34 @@
 
 use rug::Rational;
 use serde_json::Value;
+use wai_map::digest::sha256;
 use wai_map::Map;
 
 /// The text of a counterexample file for `map`: coordinates as exact
 /// strings in the map's units, the fields in a fixed order, `meta`
-/// indented, a final newline.
+/// indented, a final newline, and last a `digest` that seals it: the
+/// map's ([`Map::digest`]) and the SHA-256 of the text before it. Reading
+/// it back ([`verify`]) refuses a file edited since.
 pub fn file_text(
+    map: &Map,
+    name: &str,
+    source: &str,
+    claim: &str,
+    kind: &str,
+    note: &str,
+    meta: &Value,
+) -> String {
+    let body = body_text(map, name, source, claim, kind, note, meta);
+    format!(
+        "{},\n  \"digest\": {{\"map\": \"{}\", \"content\": \"{}\"}}\n}}\n",
+        body.trim_end().trim_end_matches('}').trim_end(),
+        map.digest(),
+        sha256(body.as_bytes())
+    )
+}
+
+/// The file's text without its digest.
+fn body_text(
     map: &Map,
     name: &str,
     source: &str,
@@ -44,6 +66,56 @@ pub fn file_text(
     )
 }
 
+/// Whether a counterexample file read back is as it was written: if it
+/// carries a `digest` (every file `wai check`, `wai search-extremes` and
+/// the fuzz targets write), its map and its content must still match it.
+/// A file without one (a figure drawn by hand) is taken as it is: `Ok(false)`.
+pub fn verify(bytes: &[u8]) -> Result<bool, String> {
+    let v: Value = serde_json::from_slice(wai_map::json::strip_bom(bytes))
+        .map_err(|e| format!("not JSON: {e}"))?;
+    let Some(digest) = v.get("digest") else {
+        return Ok(false);
+    };
+    let stored = |key: &str| -> Result<&str, String> {
+        digest
+            .get(key)
+            .and_then(Value::as_str)
+            .ok_or_else(|| format!("digest.{key}: expected a string"))
+    };
+    let map = wai_map::json::from_json(bytes)
+        .map_err(|e| format!("{e}"))?
+        .map;
+    if map.digest() != stored("map")? {
+        return Err(format!(
+            "digest.map: the map was changed after the file was written (the file says {}, its map has {}); the counterexample no longer describes this map",
+            stored("map")?,
+            map.digest()
+        ));
+    }
+    let text = |key: &str| -> Result<&str, String> {
+        v.get(key)
+            .and_then(Value::as_str)
+            .ok_or_else(|| format!("{key}: expected a string in a sealed counterexample file"))
+    };
+    let body = body_text(
+        &map,
+        text("name")?,
+        text("source")?,
+        text("claim")?,
+        text("kind")?,
+        text("note")?,
+        v.get("meta").unwrap_or(&Value::Null),
+    );
+    let content = sha256(body.as_bytes());
+    if content != stored("content")? {
+        return Err(format!(
+            "digest.content: the file was changed after it was written (the file says {}, its content has {content})",
+            stored("content")?
+        ));
+    }
+    Ok(true)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -70,5 +142,42 @@ mod tests {
             (Some("T4.2"), Some("violation"))
         );
         assert_eq!(v["meta"], meta);
+        assert_eq!(verify(text.as_bytes()), Ok(true));
+    }
+
+    #[test]
+    fn edited_files_are_refused() {
+        let map = wai_gen::family("corridor-niches", &[1]).expect("family");
+        let meta = serde_json::json!({ "check": { "seed": 7 } });
+        let text = file_text(&map, "m", "wai check", "T4.2", "violation", "", &meta);
+        // Layout is free: the same fields reformatted still verify.
+        let v: Value = serde_json::from_str(&text).unwrap();
+        let compact = serde_json::to_string(&v).unwrap();
+        assert_eq!(verify(compact.as_bytes()), Ok(true));
+        // A vertex moved (the map is still valid).
+        let first = map.vertices()[0];
+        let moved = text.replacen(
+            &format!("[\"{}\", \"{}\"]", first.x, first.y),
+            &format!("[\"{}\", \"{}\"]", first.x, first.y - 1),
+            1,
+        );
+        assert_ne!(moved, text);
+        let err = verify(moved.as_bytes()).unwrap_err();
+        assert!(err.starts_with("digest.map:"), "{err}");
+        // The claim, the kind or the meta changed.
+        for (from, to) in [
+            ("\"T4.2\"", "\"T4.3\""),
+            ("\"violation\"", "\"figure\""),
+            ("\"seed\": 7", "\"seed\": 8"),
+        ] {
+            let edited = text.replacen(from, to, 1);
+            assert_ne!(edited, text, "{from}");
+            let err = verify(edited.as_bytes()).unwrap_err();
+            assert!(err.starts_with("digest.content:"), "{from}: {err}");
+        }
+        // Without a digest: a hand-made figure, taken as it is.
+        let mut bare = v.clone();
+        bare.as_object_mut().unwrap().remove("digest");
+        assert_eq!(verify(bare.to_string().as_bytes()), Ok(false));
     }
 }

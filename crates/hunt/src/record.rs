@@ -32,7 +32,9 @@
 //!
 //! `max_ratio` is exact (a rational as a string, `null` when the claim
 //! measures no ratio); `max_ratio_approx` is written beside it for readers
-//! and ignored when read back.
+//! and ignored when read back. `digest` (not shown above) seals the
+//! record: the SHA-256 of its other fields as written; a record whose
+//! content no longer matches it (edited by hand) is refused.
 //!
 //! # Edge cases
 //!
@@ -49,8 +51,9 @@
 //!   "seconds": 1, "maps": 0, "map_kinds": [],
 //!   "claims": [{"id": "T5.17", "examined": 0, "violations": 0, "known_failures": 0,
 //!               "max_ratio": null, "max_ratio_map": null, "cases": {}, "counts": {}}]}"#;
-//! let record = RunRecord::from_json(&serde_json::from_str(text).unwrap()).unwrap();
-//! assert_eq!(record.claim("T5.17").map(|c| c.examined), Some(0));
+//! // Not written by `wai check`: no digest.
+//! let err = RunRecord::from_json(&serde_json::from_str(text).unwrap()).unwrap_err();
+//! assert!(err.starts_with("digest: missing"), "{err}");
 //! let bad = text.replace(r#""examined": 0"#, r#""examined": -1"#);
 //! let err = RunRecord::from_json(&serde_json::from_str(&bad).unwrap()).unwrap_err();
 //! assert!(err.contains("claims[0].examined"), "{err}");
@@ -161,8 +164,16 @@ impl RunRecord {
         self.claims.iter().find(|c| c.id == id)
     }
 
-    /// The record as JSON (the format of the module doc).
+    /// The record as JSON (the format of the module doc), sealed with its
+    /// `digest`.
     pub fn to_json(&self) -> Value {
+        let mut v = self.body();
+        v["digest"] = json!(digest_of(&v));
+        v
+    }
+
+    /// The record without its digest.
+    fn body(&self) -> Value {
         let kinds: Vec<Value> = self
             .map_kinds
             .iter()
@@ -182,8 +193,34 @@ impl RunRecord {
     }
 
     /// Reads a record written by [`RunRecord::to_json`]; the error names the
-    /// field (`claims[3].examined`) and what is wrong with it.
+    /// field (`claims[3].examined`) and what is wrong with it. The record
+    /// read must have the `digest` it was written with: a record edited
+    /// by hand is refused.
     pub fn from_json(v: &Value) -> Result<RunRecord, String> {
+        let record = RunRecord::from_json_unsealed(v)?;
+        let stored = match object(v, "the record")?.get("digest") {
+            Some(Value::String(d)) => d.clone(),
+            Some(other) => return Err(format!("digest: expected a string, found {}", kind_of(other))),
+            None => {
+                return Err(
+                    "digest: missing; a run record is written by `wai check --record`, sealed with the digest of its content"
+                        .to_string(),
+                )
+            }
+        };
+        let expected = digest_of(&record.body());
+        if stored != expected {
+            return Err(format!(
+                "digest: the content was changed after `wai check` wrote it (the file says {stored}, its content has {expected}); re-run the recorded command to get a true record"
+            ));
+        }
+        Ok(record)
+    }
+
+    /// [`RunRecord::from_json`] without the digest check: for records made
+    /// by hand (tests, examples), which [`RunRecord::to_json`] then seals;
+    /// never for a stored record.
+    pub fn from_json_unsealed(v: &Value) -> Result<RunRecord, String> {
         let top = object(v, "the record")?;
         let version = uint(top, "version", "")?;
         if version != FORMAT_VERSION {
@@ -328,6 +365,13 @@ fn named_counts(
             .collect(),
         other => Err(format!("{at}{key}: expected an object, found {other}")),
     }
+}
+
+/// The digest of a record's body: of its compact JSON as this build
+/// writes it from what it read (so layout and the ignored
+/// `max_ratio_approx` do not count; every field that is read does).
+fn digest_of(body: &Value) -> String {
+    wai_map::digest::sha256(body.to_string().as_bytes())
 }
 
 /// The ratio as a JSON number, for readers only (`null` beyond `f64`).
@@ -482,6 +526,37 @@ mod tests {
         edit(&mut v);
         let err = RunRecord::from_json(&v).expect_err("malformed record accepted");
         assert!(err.contains(needle), "{needle:?} missing from: {err}");
+    }
+
+    #[test]
+    fn edited_records_are_refused() {
+        let sealed = sample().to_json();
+        assert!(RunRecord::from_json(&sealed).is_ok());
+        // A count raised by hand, still consistent in itself.
+        let mut more = sealed.clone();
+        let examined = more["claims"][0]["examined"].as_u64().unwrap();
+        more["claims"][0]["examined"] = json!(examined + 1000);
+        let err = RunRecord::from_json(&more).unwrap_err();
+        assert!(err.starts_with("digest: the content was changed"), "{err}");
+        // Another command line, or the digest gone.
+        let mut other = sealed.clone();
+        other["command"] = json!("wai check --budget 10h");
+        assert!(RunRecord::from_json(&other)
+            .unwrap_err()
+            .starts_with("digest:"));
+        let mut bare = sealed.clone();
+        bare.as_object_mut().unwrap().remove("digest");
+        let err = RunRecord::from_json(&bare).unwrap_err();
+        assert!(err.starts_with("digest: missing"), "{err}");
+        // Only what is read counts: the approximation beside a ratio and
+        // the layout may change.
+        let mut approx = sealed.clone();
+        for c in approx["claims"].as_array_mut().unwrap() {
+            if c["max_ratio_approx"].is_number() {
+                c["max_ratio_approx"] = json!(0.5);
+            }
+        }
+        assert!(RunRecord::from_json(&approx).is_ok());
     }
 
     #[test]

@@ -19,6 +19,7 @@ use crate::Localizer;
 use rug::{Integer, Rational};
 use serde::{Deserialize, Serialize};
 use wai_exact::{locate_rat, Containment, Point, RatPoint};
+use wai_map::digest::sha256;
 use wai_map::Map;
 use wai_visibility::{LineLabel, SkeletonKey};
 
@@ -87,14 +88,6 @@ impl Digests {
             content: content_digest(body),
         }
     }
-}
-
-/// `sha256:` and the hex digest of `bytes`.
-fn sha256(bytes: &[u8]) -> String {
-    use sha2::{Digest, Sha256};
-    let d = Sha256::digest(bytes);
-    let hex: String = d.iter().map(|b| format!("{b:02x}")).collect();
-    format!("sha256:{hex}")
 }
 
 /// The map's digest: its scale and vertices, one per line.

@@ -15,6 +15,7 @@
 //! # Invariant
 //! No floating point is read: numbers are parsed from their text.
 
+pub mod digest;
 mod error;
 pub mod geojson;
 pub mod json;

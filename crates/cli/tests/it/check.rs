@@ -108,10 +108,20 @@ fn the_planted_bug_is_found_shrunk_stored_and_replayed() {
     let replay = wai(&["check", "--replay", file.to_str().unwrap()], b"");
     assert_eq!(replay.status.code(), Some(1), "{}", text(&replay.stdout));
     assert!(text(&replay.stdout).contains("planted bug shifted-labels"));
-    // Without the planted bug, the real T3.2 checker holds there.
+    // The file is sealed: with its planted bug edited out it is refused…
     let mut real = stored.clone();
     real["meta"]["check"]["planted"] = serde_json::Value::Null;
     let real_file = dir.join("real.json");
+    std::fs::write(&real_file, real.to_string()).unwrap();
+    let replay = wai(&["check", "--replay", real_file.to_str().unwrap()], b"");
+    assert_eq!(replay.status.code(), Some(1), "{}", text(&replay.stderr));
+    assert!(
+        text(&replay.stderr).contains("refused: digest.content"),
+        "{}",
+        text(&replay.stderr)
+    );
+    // …and as a hand-made copy (no digest) the real T3.2 checker holds there.
+    real.as_object_mut().unwrap().remove("digest");
     std::fs::write(&real_file, real.to_string()).unwrap();
     let replay = wai(&["check", "--replay", real_file.to_str().unwrap()], b"");
     assert_eq!(replay.status.code(), Some(0), "{}", text(&replay.stdout));

@@ -130,8 +130,7 @@ fn json_has_every_claim_with_its_keys() {
 #[test]
 fn untested_and_unrun_claims_are_named() {
     let path = tmp("partial.json");
-    std::fs::write(
-        &path,
+    let hand_made: serde_json::Value = serde_json::from_str(
         r#"{"version": 2, "command": "hand-made", "commit": "abc", "date": "2025-01-31",
             "seconds": 1, "maps": 1, "map_kinds": [{"kind": "square", "maps": 1}],
             "claims": [
@@ -141,6 +140,11 @@ fn untested_and_unrun_claims_are_named() {
                "max_ratio": null, "max_ratio_map": null, "cases": {}, "counts": {}}]}"#,
     )
     .unwrap();
+    // Sealed as `wai check --record` seals what it writes.
+    let sealed = wai_hunt::record::RunRecord::from_json_unsealed(&hand_made)
+        .unwrap()
+        .to_json();
+    std::fs::write(&path, sealed.to_string()).unwrap();
     let out = wai(&["claims", "--record", path.to_str().unwrap()], b"");
     assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
     let s = text(&out.stdout);
@@ -203,6 +207,16 @@ fn missing_or_malformed_records_are_clear_errors() {
     check_fails(
         &["claims", "--json", "--record", p],
         &[p, "claims[0].examined: expected a non-negative integer"],
+    );
+    // A count raised by hand, consistent in itself, breaks the seal.
+    let edited = good.replacen("\"examined\": ", "\"examined\": 1", 1);
+    std::fs::write(&path, edited).unwrap();
+    check_fails(
+        &["claims", "--record", p],
+        &[
+            p,
+            "digest: the content was changed after `wai check` wrote it",
+        ],
     );
     std::fs::remove_file(&path).ok();
     assert!(!Path::new(&path).exists());
