@@ -270,6 +270,27 @@ fn fit(points: &[(f64, f64)]) -> Option<(f64, f64)> {
     Some((sy / m - s * sx / m, s))
 }
 
+/// The ticks of a log axis from `lo` to `hi`: 1, 2 and 5 × 10^k on an
+/// axis of few decades, powers of ten on a longer one, every second power
+/// on a very long one; so that labels never crowd and a short axis still
+/// has several.
+fn log_ticks(lo: f64, hi: f64) -> Vec<f64> {
+    let (k0, k1) = (lo.log10().floor() as i32, hi.log10().ceil() as i32);
+    let within = |v: &f64| *v >= lo * (1.0 - 1e-9) && *v <= hi * (1.0 + 1e-9);
+    let all: Vec<f64> = (k0..=k1)
+        .flat_map(|k| [1.0, 2.0, 5.0].map(|m| m * 10f64.powi(k)))
+        .filter(within)
+        .collect();
+    if all.len() <= 10 {
+        return all;
+    }
+    let powers: Vec<f64> = (k0..=k1).map(|k| 10f64.powi(k)).filter(within).collect();
+    if powers.len() <= 8 {
+        return powers;
+    }
+    powers.into_iter().step_by(2).collect()
+}
+
 /// A tick label of a log axis: plain up to 10⁴ (decimals below 1), then
 /// 2·10⁵ style.
 fn tick_label(v: f64) -> String {
@@ -357,8 +378,12 @@ fn plot(
         .x_label_area_size(56)
         .y_label_area_size(84)
         .build_cartesian_2d(
-            (x0 * 0.8..x1 * 1.25).log_scale(),
-            (y0 * 0.8..y1 * 1.25).log_scale(),
+            (x0 * 0.8..x1 * 1.25)
+                .log_scale()
+                .with_key_points(log_ticks(x0 * 0.8, x1 * 1.25)),
+            (y0 * 0.8..y1 * 1.25)
+                .log_scale()
+                .with_key_points(log_ticks(y0 * 0.8, y1 * 1.25)),
         )
         .map_err(|e| e.to_string())?;
     let label = |v: &f64| tick_label(*v);
@@ -368,8 +393,6 @@ fn plot(
         .y_desc(format!("{yl}, log scale"))
         .axis_desc_style(("sans-serif", 15))
         .label_style(("sans-serif", 13))
-        .x_labels(8)
-        .y_labels(8)
         .x_label_formatter(&label)
         .y_label_formatter(&label)
         .light_line_style(WHITE.mix(0.0))
