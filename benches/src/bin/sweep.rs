@@ -256,8 +256,89 @@ fn stamp() -> String {
     )
 }
 
-/// A log–log scatter plot, one colour per series, with each series' slope in
-/// the legend.
+/// The least-squares line of log y against log x over the positive points:
+/// (intercept, slope).
+fn fit(points: &[(f64, f64)]) -> Option<(f64, f64)> {
+    let s = slope(points)?;
+    let pts: Vec<(f64, f64)> = points
+        .iter()
+        .filter(|(x, y)| *x > 0.0 && *y > 0.0)
+        .map(|(x, y)| (x.ln(), y.ln()))
+        .collect();
+    let m = pts.len() as f64;
+    let (sx, sy) = pts.iter().fold((0.0, 0.0), |(a, b), (x, y)| (a + x, b + y));
+    Some((sy / m - s * sx / m, s))
+}
+
+/// The ticks of a log axis from `lo` to `hi`: 1, 2 and 5 × 10^k on an
+/// axis of few decades, powers of ten on a longer one, every second power
+/// on a very long one; so that labels never crowd and a short axis still
+/// has several.
+fn log_ticks(lo: f64, hi: f64) -> Vec<f64> {
+    let (k0, k1) = (lo.log10().floor() as i32, hi.log10().ceil() as i32);
+    let within = |v: &f64| *v >= lo * (1.0 - 1e-9) && *v <= hi * (1.0 + 1e-9);
+    let all: Vec<f64> = (k0..=k1)
+        .flat_map(|k| [1.0, 2.0, 5.0].map(|m| m * 10f64.powi(k)))
+        .filter(within)
+        .collect();
+    if all.len() <= 10 {
+        return all;
+    }
+    let powers: Vec<f64> = (k0..=k1).map(|k| 10f64.powi(k)).filter(within).collect();
+    if powers.len() <= 8 {
+        return powers;
+    }
+    powers.into_iter().step_by(2).collect()
+}
+
+/// A tick label of a log axis: plain up to 10⁴ (decimals below 1), then
+/// 2·10⁵ style.
+fn tick_label(v: f64) -> String {
+    if v <= 0.0 || !v.is_finite() {
+        return String::new();
+    }
+    let e = v.log10().floor();
+    let m = v / 10f64.powf(e);
+    if (1e-3..1e4).contains(&v) {
+        let decimals = (-e).max(0.0) as usize;
+        format!("{v:.decimals$}")
+    } else if (m - 1.0).abs() < 1e-6 {
+        format!("10{}", superscript(e as i32))
+    } else {
+        format!("{m:.0}·10{}", superscript(e as i32))
+    }
+}
+
+/// `k` in superscript digits.
+fn superscript(k: i32) -> String {
+    k.to_string()
+        .chars()
+        .map(|c| match c {
+            '-' => '⁻',
+            d => ['⁰', '¹', '²', '³', '⁴', '⁵', '⁶', '⁷', '⁸', '⁹']
+                [d.to_digit(10).unwrap_or(0) as usize],
+        })
+        .collect()
+}
+
+/// The series' colours (Tableau 10, dark enough on white).
+const COLOURS: [(u8, u8, u8); 10] = [
+    (31, 119, 180),
+    (214, 39, 40),
+    (44, 160, 44),
+    (148, 103, 189),
+    (255, 127, 14),
+    (140, 86, 75),
+    (23, 190, 207),
+    (227, 119, 194),
+    (127, 127, 127),
+    (188, 189, 34),
+];
+
+/// A log–log scatter plot, one colour and marker per series, each with
+/// its least-squares line (dashed, same colour); the legend (series and
+/// fitted slopes) in a band to the right of the plot, never over the
+/// data; axis descriptions with units and "log scale".
 fn plot(
     path: &PathBuf,
     title: &str,
@@ -280,9 +361,9 @@ fn plot(
     let (y0, y1) = all.iter().fold((f64::MAX, f64::MIN), |(a, b), (_, y)| {
         (a.min(*y), b.max(*y))
     });
-    let root = SVGBackend::new(path, (900, 640)).into_drawing_area();
+    let root = SVGBackend::new(path, (1180, 680)).into_drawing_area();
     root.fill(&WHITE).map_err(|e| e.to_string())?;
-    let (main, footer) = root.split_vertically(610);
+    let (main, footer) = root.split_vertically(650);
     footer
         .draw(&Text::new(
             foot.to_string(),
@@ -290,45 +371,144 @@ fn plot(
             ("sans-serif", 14).into_font(),
         ))
         .map_err(|e| e.to_string())?;
-    let mut chart = ChartBuilder::on(&main)
-        .caption(title, ("sans-serif", 20))
-        .margin(12)
-        .x_label_area_size(40)
-        .y_label_area_size(60)
+    let (chart_area, legend_area) = main.split_horizontally(800);
+    let mut chart = ChartBuilder::on(&chart_area)
+        .caption(title, ("sans-serif", 17))
+        .margin(14)
+        .x_label_area_size(56)
+        .y_label_area_size(84)
         .build_cartesian_2d(
-            (x0 * 0.8..x1 * 1.25).log_scale(),
-            (y0 * 0.8..y1 * 1.25).log_scale(),
+            (x0 * 0.8..x1 * 1.25)
+                .log_scale()
+                .with_key_points(log_ticks(x0 * 0.8, x1 * 1.25)),
+            (y0 * 0.8..y1 * 1.25)
+                .log_scale()
+                .with_key_points(log_ticks(y0 * 0.8, y1 * 1.25)),
         )
         .map_err(|e| e.to_string())?;
+    let label = |v: &f64| tick_label(*v);
     chart
         .configure_mesh()
-        .x_desc(xl)
-        .y_desc(yl)
+        .x_desc(format!("{xl}, log scale"))
+        .y_desc(format!("{yl}, log scale"))
+        .axis_desc_style(("sans-serif", 15))
+        .label_style(("sans-serif", 13))
+        .x_label_formatter(&label)
+        .y_label_formatter(&label)
+        .light_line_style(WHITE.mix(0.0))
+        .bold_line_style(BLACK.mix(0.12))
         .draw()
         .map_err(|e| e.to_string())?;
+    let mut legend: Vec<(RGBAColor, String, String)> = Vec::new();
     for (i, (name, pts)) in data.iter().enumerate() {
-        let colour = Palette99::pick(i).to_rgba();
-        let label = match slopes(pts) {
-            Some((s, tail)) => format!("{name} (slope {s:.2}, largest three {tail:.2})"),
-            None => name.clone(),
-        };
+        let (r, g, b) = COLOURS[i % COLOURS.len()];
+        let colour = RGBColor(r, g, b).to_rgba();
         // A log scale has no place for 0 (a count of none).
-        let positive = pts.iter().copied().filter(|(x, y)| *x > 0.0 && *y > 0.0);
+        let positive: Vec<(f64, f64)> = pts
+            .iter()
+            .copied()
+            .filter(|(x, y)| *x > 0.0 && *y > 0.0)
+            .collect();
+        if positive.is_empty() {
+            continue;
+        }
+        // The measurements: markers joined by a faint line; the fit stands
+        // out dashed in full colour.
         chart
-            .draw_series(LineSeries::new(positive, colour.stroke_width(2)).point_size(3))
-            .map_err(|e| e.to_string())?
-            .label(label)
-            .legend(move |(x, y)| {
-                PathElement::new(vec![(x, y), (x + 16, y)], colour.stroke_width(2))
-            });
-    }
-    chart
-        .configure_series_labels()
-        .border_style(BLACK)
-        .background_style(WHITE.mix(0.9))
-        .position(SeriesLabelPosition::UpperLeft)
-        .draw()
+            .draw_series(LineSeries::new(
+                positive.iter().copied(),
+                colour.mix(0.35).stroke_width(1),
+            ))
+            .map_err(|e| e.to_string())?;
+        // Circle, square or triangle in turn: series differ without colour.
+        let style = colour.filled();
+        match i % 3 {
+            0 => chart.draw_series(positive.iter().map(|&p| Circle::new(p, 4, style))),
+            1 => chart.draw_series(
+                positive
+                    .iter()
+                    .map(|&p| EmptyElement::at(p) + Rectangle::new([(-4, -4), (4, 4)], style)),
+            ),
+            _ => chart.draw_series(positive.iter().map(|&p| TriangleMarker::new(p, 5, style))),
+        }
         .map_err(|e| e.to_string())?;
+        let fitted = match (fit(pts), slopes(pts)) {
+            (Some((a, s)), Some((all, tail))) if positive.len() >= 2 => {
+                let (lo, hi) = positive
+                    .iter()
+                    .fold((f64::MAX, f64::MIN), |(l, h), (x, _)| {
+                        (l.min(*x), h.max(*x))
+                    });
+                let line = (0..=20).map(|k| {
+                    let x = lo * (hi / lo).powf(f64::from(k) / 20.0);
+                    (x, (a + s * x.ln()).exp())
+                });
+                chart
+                    .draw_series(DashedLineSeries::new(line, 7, 4, colour.stroke_width(2)))
+                    .map_err(|e| e.to_string())?;
+                format!("fit: slope {all:.2}, largest three {tail:.2}")
+            }
+            _ => "fit: too few points".to_string(),
+        };
+        legend.push((colour, format!("{name} ({} maps)", positive.len()), fitted));
+    }
+    // The legend band: a marker and solid line per series, and under it
+    // its dashed fitted line with the slopes.
+    let font = ("sans-serif", 14).into_font();
+    let small = ("sans-serif", 13).into_font();
+    let draw_err = |e: DrawingAreaErrorKind<_>| e.to_string();
+    legend_area
+        .draw(&Text::new(
+            "Legend",
+            (10, 40),
+            font.clone().style(FontStyle::Bold),
+        ))
+        .map_err(draw_err)?;
+    legend_area
+        .draw(&Text::new(
+            "markers: measured maps; dashed: least-squares",
+            (10, 60),
+            small.clone(),
+        ))
+        .map_err(draw_err)?;
+    legend_area
+        .draw(&Text::new(
+            "fit of log y on log x (slope = exponent)",
+            (10, 76),
+            small.clone(),
+        ))
+        .map_err(draw_err)?;
+    for (i, (colour, name, fitted)) in legend.iter().enumerate() {
+        let y = 104 + 40 * i as i32;
+        legend_area
+            .draw(&PathElement::new(
+                vec![(10, y), (40, y)],
+                colour.mix(0.35).stroke_width(1),
+            ))
+            .map_err(draw_err)?;
+        let style = colour.filled();
+        match i % 3 {
+            0 => legend_area.draw(&Circle::new((25, y), 4, style)),
+            1 => legend_area.draw(&Rectangle::new([(21, y - 4), (29, y + 4)], style)),
+            _ => legend_area.draw(&TriangleMarker::new((25, y), 5, style)),
+        }
+        .map_err(draw_err)?;
+        legend_area
+            .draw(&Text::new(name.clone(), (48, y - 8), font.clone()))
+            .map_err(draw_err)?;
+        for k in 0..3 {
+            let x = 10 + 11 * k;
+            legend_area
+                .draw(&PathElement::new(
+                    vec![(x, y + 16), (x + 7, y + 16)],
+                    colour.stroke_width(2),
+                ))
+                .map_err(draw_err)?;
+        }
+        legend_area
+            .draw(&Text::new(fitted.clone(), (48, y + 8), small.clone()))
+            .map_err(draw_err)?;
+    }
     root.present().map_err(|e| e.to_string())
 }
 
@@ -504,71 +684,71 @@ fn main() {
         (
             "cells_vs_r.svg",
             "cells against r",
-            "r (reflex vertices)",
-            "cells",
+            "r (reflex vertices, count)",
+            "2-cells (count)",
             by(&|r: &Row| (r.r as f64, r.cells as f64)),
         ),
         (
             "cells_vs_n2r.svg",
             "cells against n²r (Thm 3.9: O(n²r), tight for comb-convex-chain)",
-            "n²r",
-            "cells",
+            "n²r (n vertices, r reflex vertices)",
+            "2-cells (count)",
             by(&|r: &Row| ((r.n * r.n * r.r) as f64, r.cells as f64)),
         ),
         (
             "max_ec_vs_n_r2.svg",
             "max |EC| against n + r² (Thm 5.17)",
-            "n + r²",
-            "max |EC|",
+            "n + r² (n vertices, r reflex vertices)",
+            "max |EC| (complexity of one class, count)",
             by(&|r: &Row| ((r.n + r.r * r.r) as f64, r.max_ec as f64)),
         ),
         (
             "c_sing_vs_r2.svg",
             "max |C_sing| against r² (Lemma 5.3: O(min{n, r²}), Ω(r²) for convex-niches)",
-            "r²",
+            "r² (r reflex vertices)",
             "max |C_sing| (single candidate edges of one skeleton)",
             by5(&|r: &Row, c: &Ch5| ((r.r * r.r) as f64, c.single as f64)),
         ),
         (
             "c_mult_vs_r.svg",
             "max |C_mult| against r (Thm 5.12: O(r))",
-            "r",
+            "r (reflex vertices, count)",
             "max |C_mult| (multiple candidate edges of one skeleton)",
             by5(&|r: &Row, c: &Ch5| (r.r as f64, c.multiple as f64)),
         ),
         (
             "wedge_vs_r2.svg",
             "max W against r² (Thm 5.16: O(r²))",
-            "r²",
+            "r² (r reflex vertices)",
             "max W (wedge edges of one class, Def 5.2)",
             by5(&|r: &Row, c: &Ch5| ((r.r * r.r) as f64, c.wedge as f64)),
         ),
         (
             "largest_class_vs_r.svg",
             "cells of the largest class against r (Lemma 3.7: linear for corridor-niches)",
-            "r",
-            "cells in the largest class",
+            "r (reflex vertices, count)",
+            "2-cells in the largest class (count)",
             by(&|r: &Row| (r.r as f64, r.largest_class_cells as f64)),
         ),
         (
             "time_vs_total.svg",
             "decomposition time against N",
-            "N (total complexity)",
-            "seconds",
+            "N (total complexity of the decomposition, count)",
+            "decomposition time (s)",
             by(&|r: &Row| (r.total as f64, r.seconds)),
         ),
         (
             "overlay_time_vs_bound.svg",
             "localizer overlays: time against N(n + r²) (C5.18)",
-            "N(n + r²)",
-            "seconds",
+            "N(n + r²) (N total complexity)",
+            "time (s)",
             by(&|r: &Row| ((r.total * (r.n + r.r * r.r)) as f64, r.overlay_seconds)),
         ),
         (
             "overlay_size_vs_bound.svg",
             "localizer overlays: cells placed + trapezoid labels against N(n + r²) (C5.18)",
-            "N(n + r²)",
-            "size (entries)",
+            "N(n + r²) (N total complexity)",
+            "size (entries, count)",
             by(&|r: &Row| {
                 (
                     wai_lemmas::ch5::c5_18::bound(r.total, r.n, r.r) as f64,
@@ -579,8 +759,8 @@ fn main() {
         (
             "preprocess_time_vs_bound.svg",
             "Alg 3.14 preprocessing (decomposition + overlays): time against N(n + r²) (C5.18)",
-            "N(n + r²)",
-            "seconds",
+            "N(n + r²) (N total complexity)",
+            "time (s)",
             by(&|r: &Row| {
                 (
                     wai_lemmas::ch5::c5_18::bound(r.total, r.n, r.r) as f64,
@@ -591,8 +771,8 @@ fn main() {
         (
             "preprocess_size_vs_bound.svg",
             "Alg 3.14 preprocessing: trapezoids over all overlays against N(n + r²) (C5.18)",
-            "N(n + r²)",
-            "trapezoids",
+            "N(n + r²) (N total complexity)",
+            "trapezoids (count)",
             by(&|r: &Row| {
                 (
                     wai_lemmas::ch5::c5_18::bound(r.total, r.n, r.r) as f64,
@@ -603,15 +783,15 @@ fn main() {
         (
             "query_vs_m.svg",
             "localization query: median time against the views' mean m (Thm 3.12: O(m + log n + A))",
-            "mean m (vertices of V)",
-            "median query µs",
+            "mean m (vertices of the view V, count)",
+            "median query time (µs)",
             by(&|r: &Row| (r.mean_m, r.query_us)),
         ),
         (
             "query_vs_a.svg",
             "localization query: median time against the mean answer count A",
-            "mean A",
-            "median query µs",
+            "mean A (answers per query, count)",
+            "median query time (µs)",
             by(&|r: &Row| (r.mean_a, r.query_us)),
         ),
     ];

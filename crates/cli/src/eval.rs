@@ -437,7 +437,7 @@ pub fn run(args: &Args) -> Result<(), Failure> {
         let svg = eval::cdf_svg(
             &format!("Position error CDF: {} ({} poses)", m.name, poses.len()),
             "position error of the best pose (m)",
-            1.0,
+            eval::CdfAxis::Auto,
             &series
                 .iter()
                 .map(|(l, v)| (l.clone(), v.as_slice()))
@@ -496,7 +496,7 @@ pub fn run(args: &Args) -> Result<(), Failure> {
     let svg = eval::cdf_svg(
         &format!("Position error CDF over {} maps", maps.len()),
         "position error of the best pose (m)",
-        1.0,
+        eval::CdfAxis::Auto,
         &overall_series
             .iter()
             .map(|(l, v)| (l.clone(), v.as_slice()))

@@ -130,6 +130,20 @@ pub(crate) fn answers_svg(map: &Map, view: &RobotView, answer: &wai_localize::An
             ),
         );
     }
+    c.legend(
+        wai_render::Mark::area("#eef3fb", 1.0, "#1f3b73"),
+        "map (walls and inside)",
+    );
+    if !answer.placements.is_empty() {
+        c.legend(
+            wai_render::Mark::area("rgb(255,165,0)", 0.25, "#d95f02"),
+            "the robot's visibility polygon placed at an answer",
+        );
+        c.legend(
+            wai_render::Mark::dot("#d62728", 5.0),
+            &format!("answer: a position ({})", answer.placements.len()),
+        );
+    }
     let caption = format!(
         "{} answers{}",
         answer.placements.len(),

@@ -1,8 +1,9 @@
-//! `wai render`: draw a map as SVG, reflex vertices marked.
+//! `wai render`: draw a map as SVG, reflex vertices marked, with a legend
+//! and a scale bar.
 
 use std::path::PathBuf;
 
-use wai_render::{map_svg, MapStyle};
+use wai_render::{map_svg, MapStyle, MapUnits};
 
 use crate::failure::Failure;
 use crate::input::load;
@@ -21,6 +22,12 @@ pub struct Args {
     /// Pixels along the longer side.
     #[arg(long, default_value_t = 800)]
     pub size: u32,
+    /// What the coordinates measure, for the scale bar: `auto` (lon/lat
+    /// if the map lies within ±180, ±90 and spans under 0.1 — drawn in a
+    /// local equirectangular projection with the bar in metres — else
+    /// plain map units), `plain`, `m` or `lonlat`.
+    #[arg(long, default_value = "auto", value_parser = ["auto", "plain", "m", "lonlat"])]
+    pub units: String,
     #[command(flatten)]
     pub format: crate::input::FormatArg,
 }
@@ -30,6 +37,12 @@ pub fn run(args: &Args) -> Result<(), Failure> {
     let style = MapStyle {
         size: f64::from(args.size.clamp(50, 20_000)),
         vertex_labels: args.labels,
+        units: match args.units.as_str() {
+            "plain" => Some(MapUnits::Plain),
+            "m" => Some(MapUnits::Metres),
+            "lonlat" => Some(MapUnits::LonLat),
+            _ => None,
+        },
     };
     output(args.out.as_deref(), &map_svg(&loaded.map, &style))
 }

@@ -395,53 +395,244 @@ pub fn room_twins(
         .collect()
 }
 
-/// An SVG plot of empirical CDFs: one polyline per named series of sorted
-/// values (∞ values never reach the curve's top), x from 0 to `x_max`.
-pub fn cdf_svg(title: &str, x_label: &str, x_max: f64, series: &[(String, &[f64])]) -> String {
+/// The x axis of [`cdf_svg`].
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum CdfAxis {
+    /// Linear from 0 to this value.
+    Fixed(f64),
+    /// Linear from 0 to the 99th percentile of the finite values of all
+    /// series, rounded up to 1, 2 or 5 × 10^k.
+    Fitted,
+    /// Logarithmic from the decade at or below the 1st percentile of the
+    /// positive finite values to their 99th percentile rounded up; smaller
+    /// values (and 0) are drawn at the left edge.
+    Log,
+    /// [`CdfAxis::Log`] if the 99th percentile of the positive finite
+    /// values is over 100 times their 1st percentile (errors of
+    /// millimetres and of metres in one plot), else [`CdfAxis::Fitted`].
+    Auto,
+}
+
+/// An SVG plot of empirical CDFs: one step curve per named series of
+/// sorted values (∞ values never reach the curve's top), each in its own
+/// colour and dash, the legend to the right of the plot area. The x axis
+/// is `axis` ([`CdfAxis`]); a note under it says which and how it was
+/// fitted. Tick steps follow from the axis length in pixels and the
+/// width of the labels, so labels never overlap.
+pub fn cdf_svg(title: &str, x_label: &str, axis: CdfAxis, series: &[(String, &[f64])]) -> String {
+    use crate::draw::{legend, nice_ceil, tick_step, tick_text, xml, Mark, CHAR_PX};
     use std::fmt::Write as _;
-    const COLOURS: [&str; 6] = [
-        "#1f77b4", "#d62728", "#2ca02c", "#9467bd", "#ff7f0e", "#8c564b",
+    const COLOURS: [&str; 8] = [
+        "#1f77b4", "#d62728", "#2ca02c", "#9467bd", "#ff7f0e", "#8c564b", "#17becf", "#e377c2",
     ];
-    let (w, h, left, bottom, top, right) = (640.0, 400.0, 60.0, 50.0, 40.0, 200.0);
-    let pw = w - left - right;
-    let ph = h - top - bottom;
-    let sx = |x: f64| left + pw * (x.min(x_max) / x_max);
+    const DASHES: [&str; 3] = ["", "7 3", "2 2"];
+    let mut finite: Vec<f64> = series
+        .iter()
+        .flat_map(|(_, v)| v.iter().copied())
+        .filter(|v| v.is_finite() && *v >= 0.0)
+        .collect();
+    finite.sort_by(f64::total_cmp);
+    let positive: Vec<f64> = finite.iter().copied().filter(|v| *v > 0.0).collect();
+    let q99 = quantile(&finite, 0.99);
+    let (p01, p99) = (quantile(&positive, 0.01), quantile(&positive, 0.99));
+    let log_fits = p01.is_finite() && p99 > 100.0 * p01;
+    let axis = match axis {
+        CdfAxis::Auto if log_fits => CdfAxis::Log,
+        CdfAxis::Auto => CdfAxis::Fitted,
+        CdfAxis::Log if !(p01.is_finite() && p99 > p01) => CdfAxis::Fitted,
+        a => a,
+    };
+    // (x_min, x_max, log, note)
+    let (x_min, x_max, log, axis_note) = match axis {
+        CdfAxis::Fixed(m) => (0.0, m, false, format!("x axis fixed: 0 to {m}")),
+        CdfAxis::Log => {
+            let lo = 10f64.powf(p01.log10().floor());
+            let hi = nice_ceil(p99);
+            (
+                lo,
+                hi,
+                true,
+                format!(
+                    "log x axis: from {} (the decade at or below the 1st percentile of positive values, {p01:.2e}; smaller values drawn at the left edge) to the 99th percentile ({p99:.3}) rounded up, {}",
+                    tick_text(lo, lo),
+                    tick_text(hi, hi)
+                ),
+            )
+        }
+        _ if q99.is_finite() && q99 > 0.0 => {
+            let m = nice_ceil(q99);
+            (
+                0.0,
+                m,
+                false,
+                format!(
+                    "x axis fitted: 0 to the 99th percentile of finite values ({q99:.3}), rounded up to {}",
+                    tick_text(m, m)
+                ),
+            )
+        }
+        _ => (
+            0.0,
+            1.0,
+            false,
+            "x axis 0 to 1: no positive finite value".to_string(),
+        ),
+    };
+    let (left, top, pw, ph) = (64.0, 48.0, 460.0, 300.0);
+    // x ticks (value, label): a step wide enough for the labels it makes;
+    // on a log axis every decade, or every second or third if they crowd.
+    let x_ticks: Vec<(f64, String)> = if log {
+        let (k0, k1) = (x_min.log10().round() as i32, x_max.log10().floor() as i32);
+        let decade_px = pw / (x_max / x_min).log10();
+        let widest = (k0..=k1)
+            .map(|k| tick_text(10f64.powi(k), 10f64.powi(k)).len())
+            .max()
+            .unwrap_or(1) as f64;
+        let every = ((widest * CHAR_PX + 12.0) / decade_px).ceil().max(1.0) as i32;
+        (k0..=k1)
+            .filter(|k| (k - k0) % every == 0)
+            .map(|k| (10f64.powi(k), tick_text(10f64.powi(k), 10f64.powi(k))))
+            .collect()
+    } else {
+        let mut step = tick_step(x_max, pw, 3.0 * CHAR_PX);
+        for _ in 0..3 {
+            let widest = (0..)
+                .map(|k| f64::from(k) * step)
+                .take_while(|v| *v <= x_max * (1.0 + 1e-9))
+                .map(|v| tick_text(v, step).len())
+                .max()
+                .unwrap_or(1);
+            step = tick_step(x_max, pw, widest as f64 * CHAR_PX);
+        }
+        (0..)
+            .map(|k| f64::from(k) * step)
+            .take_while(|v| *v <= x_max * (1.0 + 1e-9))
+            .map(|v| (v, tick_text(v, step)))
+            .collect()
+    };
+    let y_step = tick_step(1.0, ph, 14.0);
+    let sx = |x: f64| {
+        if log {
+            left + pw * (x.clamp(x_min, x_max) / x_min).ln() / (x_max / x_min).ln()
+        } else {
+            left + pw * (x.min(x_max) / x_max)
+        }
+    };
     let sy = |y: f64| top + ph * (1.0 - y);
+    let entries: Vec<(Mark, String)> = series
+        .iter()
+        .enumerate()
+        .map(|(i, (name, values))| {
+            let beyond = values
+                .iter()
+                .filter(|v| !v.is_finite() || **v > x_max)
+                .count();
+            let label = if beyond > 0 {
+                format!("{name} ({beyond} of {} beyond the axis)", values.len())
+            } else {
+                name.clone()
+            };
+            (
+                Mark::Line(
+                    COLOURS[i % COLOURS.len()].into(),
+                    2.0,
+                    DASHES[i % DASHES.len()].into(),
+                ),
+                label,
+            )
+        })
+        .collect();
+    let (legend_svg, lw, _) = legend(left + pw + 16.0, top, &entries);
+    let w = left + pw + 16.0 + lw + 10.0;
+    let title_lines = wrap_chars(title, (w / 8.0) as usize);
+    let top_shift = 18.0 * (title_lines.len() as f64 - 1.0);
+    let note_lines = wrap_chars(&axis_note, ((pw + left) / 6.2) as usize);
+    let h = top + ph + 58.0 + 14.0 * note_lines.len() as f64 + top_shift;
     let mut s = String::new();
     let _ = write!(
         s,
-        r#"<svg xmlns="http://www.w3.org/2000/svg" width="{w}" height="{h}" font-family="sans-serif" font-size="12"><rect width="{w}" height="{h}" fill="white"/><text x="{}" y="20" text-anchor="middle" font-size="14">{}</text>"#,
-        left + pw / 2.0,
-        xml(title)
+        r#"<svg xmlns="http://www.w3.org/2000/svg" width="{w:.0}" height="{h:.0}" viewBox="0 0 {w:.1} {h:.1}" font-family="sans-serif" font-size="12"><rect width="100%" height="100%" fill="white"/>"#,
     );
-    for k in 0..=10 {
-        let f = f64::from(k) / 10.0;
+    for (i, l) in title_lines.iter().enumerate() {
         let _ = write!(
             s,
-            r##"<line x1="{left}" x2="{}" y1="{y}" y2="{y}" stroke="#ddd"/><text x="{}" y="{}" text-anchor="end">{f:.1}</text><line x1="{x}" x2="{x}" y1="{top}" y2="{}" stroke="#ddd"/><text x="{x}" y="{}" text-anchor="middle">{:.3}</text>"##,
+            r#"<text x="{:.1}" y="{:.1}" text-anchor="middle" font-size="14">{}</text>"#,
+            w / 2.0,
+            20.0 + 18.0 * i as f64,
+            xml(l)
+        );
+    }
+    let _ = write!(s, r#"<g transform="translate(0 {top_shift:.1})">"#);
+    let mut k = 0;
+    while f64::from(k) * y_step <= 1.0 + 1e-9 {
+        let f = f64::from(k) * y_step;
+        let _ = write!(
+            s,
+            r##"<line x1="{left}" x2="{}" y1="{y:.2}" y2="{y:.2}" stroke="#e4e4e4"/><line x1="{}" x2="{left}" y1="{y:.2}" y2="{y:.2}" stroke="#222"/><text x="{}" y="{:.2}" text-anchor="end">{}</text>"##,
             left + pw,
-            left - 5.0,
+            left - 4.0,
+            left - 7.0,
             sy(f) + 4.0,
-            top + ph,
-            top + ph + 15.0,
-            x_max * f,
+            tick_text(f, y_step),
             y = sy(f),
-            x = sx(x_max * f),
+        );
+        k += 1;
+    }
+    if log {
+        // Unlabelled grid lines at 2–9 × 10^k.
+        let mut d = x_min;
+        while d < x_max {
+            for m in 2..10 {
+                let v = d * f64::from(m);
+                if v < x_max {
+                    let _ = write!(
+                        s,
+                        r##"<line x1="{x:.2}" x2="{x:.2}" y1="{top}" y2="{}" stroke="#f0f0f0"/>"##,
+                        top + ph,
+                        x = sx(v)
+                    );
+                }
+            }
+            d *= 10.0;
+        }
+    }
+    for (v, label) in &x_ticks {
+        let _ = write!(
+            s,
+            r##"<line x1="{x:.2}" x2="{x:.2}" y1="{top}" y2="{}" stroke="#e4e4e4"/><line x1="{x:.2}" x2="{x:.2}" y1="{}" y2="{}" stroke="#222"/><text class="x-tick" x="{x:.2}" y="{}" text-anchor="middle">{label}</text>"##,
+            top + ph,
+            top + ph,
+            top + ph + 4.0,
+            top + ph + 17.0,
+            x = sx(*v),
         );
     }
     let _ = write!(
         s,
-        r#"<text x="{}" y="{}" text-anchor="middle">{}</text><text x="15" y="{}" transform="rotate(-90 15 {})" text-anchor="middle">fraction of queries</text>"#,
+        r##"<rect x="{left}" y="{top}" width="{pw}" height="{ph}" fill="none" stroke="#222"/><text x="{}" y="{}" text-anchor="middle">{}</text><text x="16" y="{}" transform="rotate(-90 16 {})" text-anchor="middle">fraction of queries (CDF)</text>"##,
         left + pw / 2.0,
-        h - 10.0,
-        xml(x_label),
+        top + ph + 36.0,
+        xml(&if log {
+            format!("{x_label}, log scale")
+        } else {
+            x_label.to_string()
+        }),
         top + ph / 2.0,
         top + ph / 2.0
     );
-    for (i, (name, values)) in series.iter().enumerate() {
+    for (i, l) in note_lines.iter().enumerate() {
+        let _ = write!(
+            s,
+            r##"<text class="axis-note" x="8" y="{:.1}" font-size="11" fill="#555">{}</text>"##,
+            top + ph + 54.0 + 14.0 * i as f64,
+            xml(l)
+        );
+    }
+    for (i, (_, values)) in series.iter().enumerate() {
         let colour = COLOURS[i % COLOURS.len()];
+        let dash = DASHES[i % DASHES.len()];
         let n = values.len().max(1) as f64;
-        let mut pts = format!("{},{}", sx(0.0), sy(0.0));
+        let mut pts = format!("{:.2},{:.2}", sx(0.0), sy(0.0));
         for (j, v) in values.iter().enumerate() {
             if !v.is_finite() || *v > x_max {
                 break;
@@ -461,25 +652,37 @@ pub fn cdf_svg(title: &str, x_label: &str, x_max: f64, series: &[(String, &[f64]
             .count() as f64
             / n;
         let _ = write!(pts, " {:.2},{:.2}", sx(x_max), sy(reached));
-        let ly = top + 15.0 + 18.0 * i as f64;
         let _ = write!(
             s,
-            r#"<polyline points="{pts}" fill="none" stroke="{colour}" stroke-width="1.5"/><line x1="{}" x2="{}" y1="{ly}" y2="{ly}" stroke="{colour}" stroke-width="2"/><text x="{}" y="{}">{}</text>"#,
-            left + pw + 10.0,
-            left + pw + 30.0,
-            left + pw + 35.0,
-            ly + 4.0,
-            xml(name)
+            r#"<polyline points="{pts}" fill="none" stroke="{colour}" stroke-width="1.8" stroke-dasharray="{dash}"/>"#,
         );
     }
+    s.push_str("</g>");
+    let _ = write!(
+        s,
+        r#"<g transform="translate(0 {top_shift:.1})">{legend_svg}</g>"#
+    );
     s.push_str("</svg>\n");
     s
 }
 
-fn xml(text: &str) -> String {
-    text.replace('&', "&amp;")
-        .replace('<', "&lt;")
-        .replace('>', "&gt;")
+/// `text` broken at spaces into lines of at most `width` characters.
+fn wrap_chars(text: &str, width: usize) -> Vec<String> {
+    let mut lines = Vec::new();
+    let mut line = String::new();
+    for word in text.split(' ') {
+        if !line.is_empty() && line.chars().count() + 1 + word.chars().count() > width {
+            lines.push(std::mem::take(&mut line));
+        }
+        if !line.is_empty() {
+            line.push(' ');
+        }
+        line.push_str(word);
+    }
+    if !line.is_empty() || lines.is_empty() {
+        lines.push(line);
+    }
+    lines
 }
 
 impl Outcome {

@@ -445,6 +445,21 @@ fn embeddings_reports_the_overlapping_pair_of_the_funnel_figure() {
     assert!(text(&out.stdout).contains("kernels overlap too; witnesses do not see each other"));
     let svg = std::fs::read_to_string(&dir).unwrap();
     assert!(svg.starts_with("<svg") && svg.contains("valid candidate edge"));
+    let entries = pictures::legend_entries(&svg);
+    for needle in [
+        "map walls",
+        "embedding at map vertex",
+        "embedded skeleton polygon",
+        "witness cell",
+        "valid candidate edge",
+        "origin h(v0)",
+    ] {
+        assert!(
+            entries.iter().any(|e| e.contains(needle)),
+            "{needle}: {entries:?}"
+        );
+    }
+    assert!(pictures::scale_bar(&svg).is_some());
     std::fs::remove_file(dir).ok();
 }
 
@@ -459,6 +474,7 @@ mod check;
 mod claims;
 mod extremes;
 mod localize;
+mod pictures;
 mod scan;
 mod scan_eval;
 

@@ -93,6 +93,19 @@ fn a_scan_is_localized_back_to_its_pose_and_drawn() {
         assert!(v["cells"].as_u64().unwrap() > 100);
         let drawn = std::fs::read_to_string(&svg).unwrap();
         assert!(drawn.starts_with("<svg") && drawn.contains("<line"));
+        let entries = super::pictures::legend_entries(&drawn);
+        for needle in [
+            "map walls",
+            "scan return placed at the best pose",
+            "best pose",
+        ] {
+            assert!(
+                entries.iter().any(|e| e.contains(needle)),
+                "{needle}: {entries:?}"
+            );
+        }
+        let bar = super::pictures::scale_bar(&drawn).expect("a scale bar");
+        assert!(bar.ends_with(" m"), "{bar}");
     }
     // A local query around the truth finds it; a malformed one is refused.
     let near = |at: &str| {
@@ -267,6 +280,9 @@ fn an_evaluation_reports_every_key_row_plot_and_look_alike() {
     }
     let cdf = std::fs::read_to_string(map["cdf_svg"].as_str().unwrap()).unwrap();
     assert!(cdf.contains("polyline"));
+    assert!(!super::pictures::legend_entries(&cdf).is_empty(), "{cdf}");
+    // The note under the axis says how it was fitted.
+    assert!(cdf.contains("x axis"), "{cdf}");
     assert!(dir.join("eval.json").exists() && dir.join("cdf-all.svg").exists());
     // The same seed gives the same figures (times aside).
     let again = wai(&args, b"");

@@ -568,8 +568,80 @@ fn the_summary_counts_what_it_is_given() {
         assert!(j.get(key).is_some(), "{key}");
     }
     assert!(eval::quantile(&[], 0.5).is_nan());
-    let svg = eval::cdf_svg("t <1>", "m", 1.0, &[("ours".into(), &s.position_errors)]);
+    let svg = eval::cdf_svg(
+        "t <1>",
+        "m",
+        eval::CdfAxis::Auto,
+        &[("ours".into(), &s.position_errors)],
+    );
     assert!(svg.starts_with("<svg") && svg.contains("t &lt;1&gt;") && svg.contains("polyline"));
+}
+
+/// The x tick labels of a CDF plot: (x, text), left to right.
+fn x_ticks(svg: &str) -> Vec<(f64, String)> {
+    svg.split(r#"<text class="x-tick" x=""#)
+        .skip(1)
+        .map(|t| {
+            let x = t[..t.find('"').unwrap()].parse().unwrap();
+            let t = &t[t.find('>').unwrap() + 1..];
+            (x, t[..t.find("</text>").unwrap()].to_string())
+        })
+        .collect()
+}
+
+/// The value of attribute `name` at or after `from` in `svg`.
+fn attr_after(svg: &str, from: &str, name: &str) -> f64 {
+    let s = &svg[svg.find(from).unwrap()..];
+    let i = s.find(&format!(" {name}=\"")).unwrap() + name.len() + 3;
+    s[i..i + s[i..].find('"').unwrap()].parse().unwrap()
+}
+
+#[test]
+fn cdf_plots_fit_their_axis_to_the_data_and_keep_labels_apart() {
+    let small: Vec<f64> = (1..=200).map(|k| f64::from(k) * 0.0000685).collect();
+    let wide: Vec<f64> = (1..=200).map(|k| f64::from(k) * 6.17).collect();
+    let mut mixed: Vec<f64> = (1..=100).map(|k| f64::from(k) * 0.00003).collect();
+    mixed.extend([5.0, 10.0, 15.0, f64::INFINITY]);
+    for (values, axis, note) in [
+        (&small, eval::CdfAxis::Auto, "x axis fitted"),
+        (&wide, eval::CdfAxis::Auto, "x axis fitted"),
+        (&wide, eval::CdfAxis::Fixed(1234.5), "x axis fixed"),
+        (&mixed, eval::CdfAxis::Auto, "log x axis"),
+        (&small, eval::CdfAxis::Log, "log x axis"),
+    ] {
+        let names = ["a series with a long name", "another", "a third"];
+        let series: Vec<(String, &[f64])> = names
+            .iter()
+            .map(|n| (n.to_string(), values.as_slice()))
+            .collect();
+        let svg = eval::cdf_svg("A plot", "error (m)", axis, &series);
+        assert!(svg.contains(note), "{note}: {svg}");
+        let ticks = x_ticks(&svg);
+        assert!(ticks.len() >= 3, "{ticks:?}");
+        // Neighbouring labels (12 px text, at most 7 px a character) leave
+        // a gap.
+        for w in ticks.windows(2) {
+            let half = |t: &str| t.chars().count() as f64 * 7.0 / 2.0;
+            assert!(
+                w[1].0 - w[0].0 >= half(&w[0].1) + half(&w[1].1) + 4.0,
+                "{:?} and {:?} overlap",
+                w[0],
+                w[1]
+            );
+        }
+        // The legend is right of the plot area and inside the picture.
+        let plot_right = attr_after(&svg, r#"<rect x="64""#, "width") + 64.0;
+        let lx = attr_after(&svg, r#"<g class="legend""#, "x");
+        let lw = attr_after(&svg, r#"<g class="legend""#, "width");
+        let width = attr_after(&svg, "<svg", "width");
+        assert!(lx > plot_right && lx + lw <= width, "{lx} {lw} {width}");
+        for n in names {
+            assert!(svg.contains(&format!(">{n}")), "{n}");
+        }
+    }
+    // The fitted axis ends at the 99th percentile rounded up: 0.0137 → 0.02.
+    let svg = eval::cdf_svg("t", "m", eval::CdfAxis::Auto, &[("s".into(), &small)]);
+    assert_eq!(x_ticks(&svg).last().unwrap().1, "0.020");
 }
 
 #[test]
