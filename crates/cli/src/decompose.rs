@@ -4,54 +4,8 @@
 use crate::failure::{counted_bar, Failure};
 use crate::input::load;
 use std::path::PathBuf;
-use wai_cells::{vertex_bound, visibility_rays, Decomposition, VisibilityRay};
-use wai_map::Map;
+use wai_cells::{visibility_rays, Decomposition};
 use wai_render::{cells_svg, MapStyle};
-
-/// Bytes per arrangement vertex assumed by the memory estimate: exact
-/// points, half-edges, edge geometry, faces, cells of every dimension and
-/// the skeleton keys of the classes. Measured as peak RSS over vertices of
-/// random-orthogonal maps (seed 1), with the incremental skeletons: 5.6 KiB
-/// at n = 1000 (28,273 vertices, 155 MiB), 5.5 KiB at n = 2000 (49,559
-/// vertices, 267 MiB) and 5.7 KiB at n = 4000 (110,230 vertices, 614 MiB);
-/// comb-convex-chain k = 64, whose 80,033 classes have long keys: 9.1 KiB
-/// (80,290 vertices, 716 MiB). 12 KiB leaves a margin.
-const BYTES_PER_VERTEX: u64 = 12 * 1024;
-
-/// The memory the machine has available now, from /proc/meminfo.
-fn available_bytes() -> Option<u64> {
-    let info = std::fs::read_to_string("/proc/meminfo").ok()?;
-    let line = info.lines().find(|l| l.starts_with("MemAvailable:"))?;
-    let kib: u64 = line.split_whitespace().nth(1)?.parse().ok()?;
-    Some(kib * 1024)
-}
-
-/// Refuse, before the arrangement is built, a map whose decomposition could
-/// not fit, from an upper bound on the arrangement's vertices that counts
-/// the real crossings of the rays with predicates only
-/// ([`wai_cells::vertex_bound`]).
-fn check_memory(map: &Map, rays: &[VisibilityRay], force: bool) -> Result<(), Failure> {
-    let r = rays.len() as u64;
-    let bound = vertex_bound(map, rays);
-    let need = bound.saturating_mul(BYTES_PER_VERTEX);
-    match available_bytes() {
-        Some(avail) if need > avail && !force => Err(Failure::invalid(format!(
-            "map too large for the memory at hand: {r} visibility rays give at most {bound} decomposition vertices, \
-             estimated {:.1} GiB, but {:.1} GiB are available (--force skips this estimate)",
-            gib(need),
-            gib(avail)
-        ))),
-        _ => Ok(()),
-    }
-}
-
-#[allow(
-    clippy::float_arithmetic,
-    reason = "a size shown to the user; decides no geometry"
-)]
-fn gib(bytes: u64) -> f64 {
-    bytes as f64 / f64::from(1u32 << 30)
-}
 
 #[derive(clap::Args, Debug)]
 pub struct Args {
@@ -66,9 +20,8 @@ pub struct Args {
     /// With --svg: highlight this class (an index printed by --json).
     #[arg(long, value_parser = crate::options::count, allow_negative_numbers = true)]
     pub class: Option<usize>,
-    /// Skip the memory estimate made before the work starts.
-    #[arg(long)]
-    pub force: bool,
+    #[command(flatten)]
+    pub memory: crate::budget::MemoryArgs,
     #[command(flatten)]
     pub format: crate::input::FormatArg,
 }
@@ -83,7 +36,7 @@ pub fn run(args: &Args) -> Result<(), Failure> {
     // the stage and the time it has taken, until the walk's bar starts.
     let stage = stage_spinner("visibility rays");
     let rays = visibility_rays(map);
-    check_memory(map, &rays, opts.force)?;
+    crate::budget::check_decomposition(map, &rays, &opts.memory)?;
     stage.set_message(format!(
         "arrangement of {} rays and the map's {} edges",
         rays.len(),

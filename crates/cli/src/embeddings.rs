@@ -30,6 +30,8 @@ pub struct Args {
     #[arg(long)]
     pub svg: Option<PathBuf>,
     #[command(flatten)]
+    pub memory: crate::budget::MemoryArgs,
+    #[command(flatten)]
     pub format: crate::input::FormatArg,
 }
 
@@ -251,8 +253,10 @@ pub fn run(args: &Args) -> Result<(), Failure> {
     let opts = args;
     let loaded = load(&args.map, args.format.format)?;
     let map = &loaded.map;
+    let rays = wai_cells::visibility_rays(map);
+    crate::budget::check_decomposition(map, &rays, &args.memory)?;
     let bar = counted_bar("skeletons of cells", "cells of every dimension");
-    let d = Decomposition::with_progress(map, &mut |done, total| {
+    let d = Decomposition::from_rays(map, rays, &mut |done, total| {
         bar.set_length(total as u64);
         bar.set_position(done as u64);
     });

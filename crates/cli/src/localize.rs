@@ -1,6 +1,8 @@
 //! `wai localize`: the exact reference localizer (Alg 3.13): every
 //! position where the robot can be, given what it sees.
 
+use crate::budget::MemoryArgs;
+use crate::failure::counted_bar;
 use crate::failure::Failure;
 use crate::input::{load_bytes, read_bytes, Format};
 use crate::vis::{parse_viewpoint, show};
@@ -23,27 +25,41 @@ fn is_preprocessed(bytes: &[u8]) -> bool {
 
 /// A localizer from a map file (preprocessed now) or a preprocessed file,
 /// read once (standard input too).
-fn localizer(path: &Path, format: Format) -> Result<Localizer, Failure> {
+fn localizer(path: &Path, format: Format, limits: &MemoryArgs) -> Result<Localizer, Failure> {
     if let Some(map) = crate::input::generated(path)? {
-        return Ok(preprocessed(path, &map));
+        return preprocessed(path, &map, limits);
     }
     let bytes = read_bytes(path)?;
     if is_preprocessed(&bytes) {
         return wai_localize::file::from_json(&bytes)
             .map_err(|e| Failure::invalid(format!("{}: {e}", path.display())));
     }
-    Ok(preprocessed(path, &load_bytes(path, &bytes, format)?.map))
+    preprocessed(path, &load_bytes(path, &bytes, format)?.map, limits)
 }
 
-/// Alg 3.14 on `map`, read from `path`, saying so on stderr.
-pub(crate) fn preprocessed(path: &Path, map: &Map) -> Localizer {
+/// Alg 3.14 on `map`, read from `path`, saying so on stderr, with the
+/// decomposition's progress; refused beforehand if its memory estimate is
+/// above `limits`.
+pub(crate) fn preprocessed(
+    path: &Path,
+    map: &Map,
+    limits: &MemoryArgs,
+) -> Result<Localizer, Failure> {
     eprintln!(
         "preprocessing {} (n = {}, r = {}) …",
         path.display(),
         map.n(),
         map.r()
     );
-    Localizer::new(map)
+    let rays = wai_cells::visibility_rays(map);
+    crate::budget::check_decomposition(map, &rays, limits)?;
+    let bar = counted_bar("skeletons of cells", "cells of every dimension");
+    let d = wai_cells::Decomposition::from_rays(map, rays, &mut |done, total| {
+        bar.set_length(total as u64);
+        bar.set_position(done as u64);
+    });
+    bar.finish_and_clear();
+    Ok(Localizer::from_decomposition(&d))
 }
 
 /// Read V: a JSON array of [x, y] pairs, or an object with "vertices",
@@ -177,12 +193,14 @@ pub struct Args {
     #[arg(long)]
     pub svg: Option<PathBuf>,
     #[command(flatten)]
+    pub memory: MemoryArgs,
+    #[command(flatten)]
     pub format: crate::input::FormatArg,
 }
 
 pub fn run(args: &Args) -> Result<(), Failure> {
     let opts = args;
-    let loc = localizer(&args.map, args.format.format)?;
+    let loc = localizer(&args.map, args.format.format, &args.memory)?;
     let map = loc.map();
     let view = match (opts.at.as_deref(), opts.polygon.as_deref()) {
         (Some(at), None) => {

@@ -20,6 +20,7 @@
 #[macro_use]
 mod stdout;
 
+mod budget;
 mod check;
 mod check_target;
 mod claims;

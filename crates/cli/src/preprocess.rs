@@ -15,13 +15,15 @@ pub struct Args {
     #[arg(short, long)]
     pub out: PathBuf,
     #[command(flatten)]
+    pub memory: crate::budget::MemoryArgs,
+    #[command(flatten)]
     pub format: crate::input::FormatArg,
 }
 
 pub fn run(args: &Args) -> Result<(), Failure> {
     let (path, out) = (&args.map, &args.out);
     let loaded = load(path, args.format.format)?;
-    let loc = preprocessed(path, &loaded.map);
+    let loc = preprocessed(path, &loaded.map, &args.memory)?;
     let text = wai_localize::file::to_json(&loc);
     std::fs::write(out, &text).map_err(|e| Failure::io(format!("{}: {e}", out.display())))?;
     let (cells, traps) = (loc.cells(), loc.trapezoids());

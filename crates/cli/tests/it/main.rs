@@ -674,3 +674,50 @@ fn every_map_command_accepts_a_generated_map() {
     }
     std::fs::remove_dir_all(&dir).ok();
 }
+
+#[test]
+fn decompositions_above_the_memory_limit_are_refused_before_the_work() {
+    let dir = std::env::temp_dir().join(format!("wai-budget-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let out_file = dir.join("p.json");
+    let out_file = out_file.to_str().unwrap();
+    let commands: &[&[&str]] = &[
+        &["decompose", "office:3"],
+        &["embeddings", "office:3"],
+        &["preprocess", "office:3", "--out", out_file],
+        &["localize", "office:3", "--at", "1,1"],
+    ];
+    for args in commands {
+        let mut limited = args.to_vec();
+        limited.extend(["--max-memory", "1M"]);
+        let out = wai(&limited, b"");
+        let err = text(&out.stderr);
+        assert_eq!(out.status.code(), Some(1), "{args:?}: {err}");
+        for needle in [
+            "at most 1448 decomposition vertices",
+            "17.0 MiB",
+            "--max-memory",
+        ] {
+            assert!(
+                err.contains(needle),
+                "{args:?}: {needle} missing from {err}"
+            );
+        }
+        assert!(!std::path::Path::new(out_file).exists(), "nothing written");
+        // Raised, or skipped, the same command runs.
+        let mut raised = args.to_vec();
+        raised.extend(["--max-memory", "64M"]);
+        assert_eq!(wai(&raised, b"").status.code(), Some(0), "{raised:?}");
+        std::fs::remove_file(out_file).ok();
+    }
+    let mut forced = vec!["decompose", "office:3", "--max-memory", "1M", "--force"];
+    assert_eq!(wai(&forced, b"").status.code(), Some(0));
+    forced.truncate(2);
+    forced.extend(["--max-memory", "0"]);
+    assert_eq!(
+        wai(&forced, b"").status.code(),
+        Some(2),
+        "a limit of 0 is a usage error"
+    );
+    std::fs::remove_dir_all(&dir).ok();
+}
