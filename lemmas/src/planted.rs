@@ -1,7 +1,7 @@
 //! Planted bugs: checkers that are wrong on purpose, so that the
 //! counterexample search (`wai check --plant`, the `claims_ch3` fuzz target
 //! with `WAI_PLANT`) can be shown to find a violation and shrink it
-//! (STYLE.md 6: a search must be able to fail).
+//! (a search must be able to fail).
 //!
 //! A planted checker reports under a real claim's id, so the driver, the
 //! shrinker and the replay treat it exactly like the real checker. It is

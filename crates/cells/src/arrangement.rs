@@ -1,7 +1,7 @@
 //! The exact arrangement of the map edges and the visibility rays (Def 3.8)
 //! as a half-edge structure.
 //!
-//! Topology apart from geometry (STYLE 4): [`Vertex`], [`HalfEdge`] and
+//! Topology apart from geometry: [`Vertex`], [`HalfEdge`] and
 //! [`Face`] hold indices only; each vertex's exact point, each edge's
 //! supporting segment ([`Support`]) and the rays covering it are attached
 //! by index.

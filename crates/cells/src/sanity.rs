@@ -1,4 +1,4 @@
-//! Layered sanity checks of an [`Arrangement`] (STYLE 4): topology first,
+//! Layered sanity checks of an [`Arrangement`]: topology first,
 //! then geometry.
 
 use crate::arrangement::{

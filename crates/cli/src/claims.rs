@@ -12,7 +12,7 @@
 //!
 //! # Edge cases
 //!
-//! Nothing passes silently (STYLE.md 6): a claim with a checker that the
+//! Nothing passes silently: a claim with a checker that the
 //! record does not cover is shown as "not run", one the run covered but
 //! examined 0 times as "0 — NOT TESTED"; a claim without a checker says
 //! "none yet". A record naming a claim the registry does not have gets a

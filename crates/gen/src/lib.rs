@@ -1,4 +1,4 @@
-//! Seeded generators of valid maps (STYLE.md 8): random simple and
+//! Seeded generators of valid maps: random simple and
 //! orthogonal polygons, all small polyominoes, collinearity-biased
 //! "special" maps, and the thesis's worst-case families (Figs 3.12, 3.15,
 //! 4.1, 5.4), seeded layouts for the chapter 4 and 5 claims (overlapping

@@ -1,4 +1,4 @@
-//! "Special" maps biased to degeneracies (STYLE.md 8): few distinct
+//! "Special" maps biased to degeneracies: few distinct
 //! coordinates, so that many edges lie on one line, many vertices lie on
 //! lines through two others and many visibility rays pass through one
 //! point.

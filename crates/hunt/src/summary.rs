@@ -7,7 +7,7 @@
 //!
 //! A claim whose total stays 0 over a whole run was not tested by that run;
 //! [`Summary::untested`] names it, and so does the summary's `Display`
-//! (CLAIMS.md, "What a checker reports"; STYLE.md 6).
+//! (CLAIMS.md, "What a checker reports").
 
 use std::borrow::Borrow;
 use std::collections::BTreeMap;

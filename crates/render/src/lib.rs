@@ -19,7 +19,7 @@
 //! same input gives the same bytes.
 #![allow(
     clippy::float_arithmetic,
-    reason = "pixel coordinates of pictures are output only (STYLE.md 1)"
+    reason = "pixel coordinates of pictures are output only"
 )]
 
 use rug::Integer;

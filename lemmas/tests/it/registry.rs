@@ -271,7 +271,7 @@ fn stray_modules(src: &std::path::Path) -> Vec<String> {
 
 /// Every module file of `lemmas/src` other than the shared ones is the
 /// module of a claim, in its chapter's folder, and every claim with a
-/// checker has its module (STYLE.md 15).
+/// checker has its module.
 #[test]
 fn claim_modules_and_ids_correspond() {
     let src = std::path::Path::new(concat!(env!("CARGO_MANIFEST_DIR"), "/src"));

@@ -1,4 +1,4 @@
-//! Snapshot counts of the decomposition (STYLE 11): n, r, rays, cells, total
+//! Snapshot counts of the decomposition: n, r, rays, cells, total
 //! complexity N, classes, max |EC|, assignment conflicts and the 1- and
 //! 0-cells kept/absorbed for each thesis
 //! family at small parameters, seeded random and orthogonal maps, and maps

@@ -1,4 +1,4 @@
-//! The bit bounds of the fast paths, recomputed with GMP (STYLE.md 3).
+//! The bit bounds of the fast paths, recomputed with GMP.
 //!
 //! Each fast predicate is written once below, generically over [`Arith`], as
 //! the exact sequence of `i128` operations the crate performs. It is then
@@ -462,8 +462,7 @@ fn note_numbers_recomputed() {
     assert_eq!(4 * b + 7, 127);
 }
 
-/// A planted violation: the checker must reject a bound one bit too large
-/// (STYLE.md 6).
+/// A planted violation: the checker must reject a bound one bit too large.
 #[test]
 fn interval_checker_rejects_a_bound_too_large() {
     for f in fast_paths() {

@@ -1,5 +1,5 @@
 //! Fast predicates against their GMP versions in `wai_exact::reference` and
-//! against independent `rug::Rational` constructions (STYLE.md 3, 9).
+//! against independent `rug::Rational` constructions.
 //!
 //! Four regimes of input: (a) small random coordinates, (b) coordinates at
 //! the bound of the fast path (`±(2^B - 1)`, `±2^(B - 1)`, `0`, `±1` and

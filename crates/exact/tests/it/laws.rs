@@ -1,4 +1,4 @@
-//! Laws of the predicates and of `RatPoint`, with exact equality (STYLE.md 7).
+//! Laws of the predicates and of `RatPoint`, with exact equality.
 //!
 //! Orientation is antisymmetric under a swap, invariant under a cyclic
 //! shift, integer translation, 90° rotation and positive scaling, and flips

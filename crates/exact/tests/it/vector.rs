@@ -1,6 +1,6 @@
 //! The vector vocabulary (`Vector`, `BigVector`, `QPoint`, `turn`,
-//! `convex_hull`) against plain GMP computations written here (STYLE.md 3,
-//! 9), at and beyond each fast path's bound, and its laws (STYLE.md 7).
+//! `convex_hull`) against plain GMP computations written here, at and
+//! beyond each fast path's bound, and its laws.
 
 use crate::common::{config, rat};
 use proptest::prelude::*;

@@ -349,7 +349,7 @@ fn grid_pairs(vs: &[(i128, i128)]) -> ([usize; 4], usize) {
 
 /// Exhaustive on the half-integer grids of the L, the U, the W and the comb: every
 /// answer occurs (the comparison is not vacuous), and the planted mutant
-/// that lets a sightline graze a vertex is caught (STYLE.md 6).
+/// that lets a sightline graze a vertex is caught.
 #[test]
 fn half_grid_exhaustive() {
     for vs in [L, U, W, COMB] {

@@ -1,4 +1,4 @@
-//! Integration tests of `wai-gen`: one binary (STYLE.md 11).
+//! Integration tests of `wai-gen`: one binary.
 
 mod bytes;
 mod common;

@@ -142,7 +142,7 @@ fn bad_requests_are_errors() {
     assert!(msg.contains("random-simple-star"), "{msg}");
 }
 
-/// The second-opinion checker can fail (STYLE.md 6): one planted fault of
+/// The second-opinion checker can fail: one planted fault of
 /// each kind it looks for.
 #[test]
 fn ring_problem_catches_planted_faults() {
