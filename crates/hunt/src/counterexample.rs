@@ -21,7 +21,15 @@ pub fn file_text(
     note: &str,
     meta: &Value,
 ) -> String {
-    let body = body_text(map, name, source, claim, kind, note, meta);
+    let fields = Fields {
+        name,
+        source,
+        claim,
+        kind,
+        note,
+        meta,
+    };
+    let body = body_text(map, &fields);
     format!(
         "{},\n  \"digest\": {{\"map\": \"{}\", \"content\": \"{}\"}}\n}}\n",
         body.trim_end().trim_end_matches('}').trim_end(),
@@ -30,16 +38,18 @@ pub fn file_text(
     )
 }
 
+/// The fields of a counterexample file beside its map.
+struct Fields<'a> {
+    name: &'a str,
+    source: &'a str,
+    claim: &'a str,
+    kind: &'a str,
+    note: &'a str,
+    meta: &'a Value,
+}
+
 /// The file's text without its digest.
-fn body_text(
-    map: &Map,
-    name: &str,
-    source: &str,
-    claim: &str,
-    kind: &str,
-    note: &str,
-    meta: &Value,
-) -> String {
+fn body_text(map: &Map, f: &Fields<'_>) -> String {
     let field = |v: &str| serde_json::to_string(v).expect("a string is JSON");
     let unit = |c: i128| {
         wai_map::format_exact(&Rational::from((
@@ -52,16 +62,16 @@ fn body_text(
         .iter()
         .map(|p| format!("    [\"{}\", \"{}\"]", unit(p.x), unit(p.y)))
         .collect();
-    let meta_text = serde_json::to_string_pretty(meta)
+    let meta_text = serde_json::to_string_pretty(f.meta)
         .expect("plain JSON values")
         .replace('\n', "\n  ");
     format!(
         "{{\n  \"name\": {},\n  \"source\": {},\n  \"claim\": {},\n  \"kind\": {},\n  \"note\": {},\n  \"outer\": [\n{}\n  ],\n  \"holes\": [],\n  \"meta\": {meta_text}\n}}\n",
-        field(name),
-        field(source),
-        field(claim),
-        field(kind),
-        field(note),
+        field(f.name),
+        field(f.source),
+        field(f.claim),
+        field(f.kind),
+        field(f.note),
         outer.join(",\n"),
     )
 }
@@ -97,15 +107,15 @@ pub fn verify(bytes: &[u8]) -> Result<bool, String> {
             .and_then(Value::as_str)
             .ok_or_else(|| format!("{key}: expected a string in a sealed counterexample file"))
     };
-    let body = body_text(
-        &map,
-        text("name")?,
-        text("source")?,
-        text("claim")?,
-        text("kind")?,
-        text("note")?,
-        v.get("meta").unwrap_or(&Value::Null),
-    );
+    let fields = Fields {
+        name: text("name")?,
+        source: text("source")?,
+        claim: text("claim")?,
+        kind: text("kind")?,
+        note: text("note")?,
+        meta: v.get("meta").unwrap_or(&Value::Null),
+    };
+    let body = body_text(&map, &fields);
     let content = sha256(body.as_bytes());
     if content != stored("content")? {
         return Err(format!(

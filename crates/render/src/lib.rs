@@ -185,7 +185,7 @@ const CHAR_PX: f64 = 6.8;
 
 /// `text` broken at spaces into lines of at most `width` characters (a
 /// longer word stays whole).
-fn wrap(text: &str, width: usize) -> Vec<String> {
+pub fn wrap(text: &str, width: usize) -> Vec<String> {
     let mut lines = Vec::new();
     let mut line = String::new();
     for word in text.split(' ') {
@@ -201,6 +201,27 @@ fn wrap(text: &str, width: usize) -> Vec<String> {
         lines.push(line);
     }
     lines
+}
+
+/// The texts of a picture's legend entries, as this crate draws them
+/// (`<g class="legend-entry">`), each entry's lines joined by spaces: for
+/// tests and tools that read a picture back.
+pub fn legend_texts(svg: &str) -> Vec<String> {
+    svg.split(r#"<g class="legend-entry">"#)
+        .skip(1)
+        .map(|entry| {
+            let entry = &entry[..entry.find("</g>").unwrap_or(entry.len())];
+            entry
+                .split("<text")
+                .skip(1)
+                .filter_map(|t| {
+                    let t = &t[t.find('>')? + 1..];
+                    Some(t[..t.find("</text>")?].to_string())
+                })
+                .collect::<Vec<_>>()
+                .join(" ")
+        })
+        .collect()
 }
 
 /// The largest 1, 2 or 5 × 10^k not above `x` (> 0).

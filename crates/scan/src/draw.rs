@@ -82,16 +82,6 @@ pub(crate) fn legend(x: f64, y: f64, entries: &[(Mark, String)]) -> (String, f64
     (s, w, h)
 }
 
-/// The largest 1, 2 or 5 × 10^k not above `x` (> 0).
-pub(crate) fn nice_floor(x: f64) -> f64 {
-    let p = 10f64.powf(x.log10().floor());
-    [5.0, 2.0, 1.0]
-        .into_iter()
-        .map(|m| m * p)
-        .find(|v| *v <= x * (1.0 + 1e-9))
-        .unwrap_or(p)
-}
-
 /// The smallest 1, 2 or 5 × 10^k not below `x` (> 0).
 pub(crate) fn nice_ceil(x: f64) -> f64 {
     let p = 10f64.powf(x.log10().floor());
@@ -221,7 +211,7 @@ pub fn answer_svg(
     }
     let (legend_svg, lw, lh) = legend(dw + 8.0, margin, &entries);
     // The scale bar: about a fifth of the drawing, a round length.
-    let metres = nice_floor(0.2 * (dw - 2.0 * margin) / k);
+    let metres = wai_render::nice_floor(0.2 * (dw - 2.0 * margin) / k);
     let bar = metres * k;
     let top = dh.max(lh + margin + 10.0);
     let (w, h) = ((dw + lw + 16.0).max(320.0), top + 30.0);

@@ -544,9 +544,9 @@ pub fn cdf_svg(title: &str, x_label: &str, axis: CdfAxis, series: &[(String, &[f
         .collect();
     let (legend_svg, lw, _) = legend(left + pw + 16.0, top, &entries);
     let w = left + pw + 16.0 + lw + 10.0;
-    let title_lines = wrap_chars(title, (w / 8.0) as usize);
+    let title_lines = wai_render::wrap(title, (w / 8.0) as usize);
     let top_shift = 18.0 * (title_lines.len() as f64 - 1.0);
-    let note_lines = wrap_chars(&axis_note, ((pw + left) / 6.2) as usize);
+    let note_lines = wai_render::wrap(&axis_note, ((pw + left) / 6.2) as usize);
     let h = top + ph + 58.0 + 14.0 * note_lines.len() as f64 + top_shift;
     let mut s = String::new();
     let _ = write!(
@@ -664,25 +664,6 @@ pub fn cdf_svg(title: &str, x_label: &str, axis: CdfAxis, series: &[(String, &[f
     );
     s.push_str("</svg>\n");
     s
-}
-
-/// `text` broken at spaces into lines of at most `width` characters.
-fn wrap_chars(text: &str, width: usize) -> Vec<String> {
-    let mut lines = Vec::new();
-    let mut line = String::new();
-    for word in text.split(' ') {
-        if !line.is_empty() && line.chars().count() + 1 + word.chars().count() > width {
-            lines.push(std::mem::take(&mut line));
-        }
-        if !line.is_empty() {
-            line.push(' ');
-        }
-        line.push_str(word);
-    }
-    if !line.is_empty() || lines.is_empty() {
-        lines.push(line);
-    }
-    lines
 }
 
 impl Outcome {

@@ -5,24 +5,9 @@
 use super::{text, wai};
 use std::collections::{BTreeMap, BTreeSet};
 
-/// The texts of a picture's legend entries, each entry's lines joined by
-/// spaces.
+/// The texts of the legend's entries.
 pub(crate) fn legend_entries(svg: &str) -> Vec<String> {
-    svg.split(r#"<g class="legend-entry">"#)
-        .skip(1)
-        .map(|entry| {
-            let entry = &entry[..entry.find("</g>").unwrap()];
-            entry
-                .split("<text")
-                .skip(1)
-                .map(|t| {
-                    let t = &t[t.find('>').unwrap() + 1..];
-                    t[..t.find("</text>").unwrap()].to_string()
-                })
-                .collect::<Vec<_>>()
-                .join(" ")
-        })
-        .collect()
+    wai_render::legend_texts(svg)
 }
 
 /// The label of a picture's scale bar ("5 m", "20 map units").

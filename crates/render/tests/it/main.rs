@@ -10,23 +10,9 @@ use wai_exact::RatPoint;
 use wai_map::Map;
 use wai_render::{class_colours, map_svg, visibility_svg, MapStyle, MapUnits};
 
-/// The texts of the legend's entries, each entry's lines joined by spaces.
+/// The texts of the legend's entries.
 fn legend_entries(svg: &str) -> Vec<String> {
-    svg.split(r#"<g class="legend-entry">"#)
-        .skip(1)
-        .map(|entry| {
-            let entry = &entry[..entry.find("</g>").unwrap()];
-            entry
-                .split("<text")
-                .skip(1)
-                .map(|t| {
-                    let t = &t[t.find('>').unwrap() + 1..];
-                    t[..t.find("</text>").unwrap()].to_string()
-                })
-                .collect::<Vec<_>>()
-                .join(" ")
-        })
-        .collect()
+    wai_render::legend_texts(svg)
 }
 
 /// The scale bar's label ("5 map units", "20 m").
