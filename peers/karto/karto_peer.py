@@ -79,8 +79,8 @@ except ImportError as e:  # reported as an answer, so the caller sees why
 # evaluation maps and a long corridor (measured: peers/karto/README.md).
 DEFAULTS = {
     "window": 8.0,  # search tile side (m); None: one window, the whole map
-    "resolution": 0.1,  # correlation grid cell (m); coarse step is 2 cells
-    "smear_deviation": 0.1,  # Gaussian smear of map points (m)
+    "resolution": 0.05,  # correlation grid cell (m); coarse step is 2 cells
+    "smear_deviation": 0.05,  # Gaussian smear of map points (m)
     "coarse_angle_deg": 2.0,  # coarse heading step over the full circle
     "fine_angle_deg": 0.2,  # fine heading step within +- coarse/2
     "refine": True,  # karto's fine search around the coarse best
