@@ -41,7 +41,11 @@ pub struct Args {
     #[arg(long, default_value = "all")]
     pub conditions: String,
     /// Run a peer on the same scans in the same call: `karto`
-    /// (karto-scanmatcher, installed by scripts/install-karto). Repeatable.
+    /// (karto-scanmatcher at its default settings, installed by
+    /// scripts/install-karto), `karto:R` (an R-metre grid and smear), or
+    /// `karto:KEY=V,…` with keys `window` (m, or `none` for one window
+    /// over the whole map), `resolution`, `smear` (m), `coarse`, `fine`
+    /// (degrees) and `refine` (true/false). Repeatable.
     #[arg(long)]
     pub peer: Vec<String>,
     /// Queries per map and condition given to each peer (the first ones
@@ -171,6 +175,8 @@ fn look_alike_figures(
 /// A running peer: answers one scan at a time.
 trait Peer {
     fn name(&self) -> String;
+    /// The settings the peer runs with on this map, as it reports them.
+    fn settings(&self) -> Value;
     fn localize(&mut self, scan: &Scan, max_range: Option<f64>) -> Result<Outcome, String>;
 }
 
@@ -179,8 +185,8 @@ fn start_peer(name: &str, map: &Map) -> Result<Box<dyn Peer>, Failure> {
 }
 
 mod peers {
-    use super::{Failure, Map, Outcome, Peer, Scan};
-    use wai_scan::peer::{map_walls, KartoConfig, KartoPeer};
+    use super::{Failure, Map, Outcome, Peer, Scan, Value};
+    use wai_scan::peer::{KartoConfig, KartoPeer};
 
     struct Karto {
         name: String,
@@ -190,6 +196,10 @@ mod peers {
     impl Peer for Karto {
         fn name(&self) -> String {
             self.name.clone()
+        }
+
+        fn settings(&self) -> Value {
+            self.peer.settings().clone()
         }
 
         fn localize(&mut self, scan: &Scan, max_range: Option<f64>) -> Result<Outcome, String> {
@@ -207,26 +217,62 @@ mod peers {
         }
     }
 
-    /// `karto` (karto-scanmatcher at its default 0.05 m grid) or
-    /// `karto:R` (an R-metre grid).
-    pub fn start(name: &str, map: &Map) -> Result<Box<dyn Peer>, Failure> {
-        let resolution = match name {
-            "karto" => KartoConfig::default().resolution,
-            _ => match name.strip_prefix("karto:").map(str::parse::<f64>) {
-                Some(Ok(r)) if r.is_finite() && r > 0.0 && r <= 1.0 => r,
-                _ => {
-                    return Err(Failure::usage(format!(
-                        "peer {name:?}: expected karto or karto:R with R the grid in metres (0, 1]"
-                    )))
+    /// The settings of the peer `name`: `karto` (the defaults), `karto:R`
+    /// (an R-metre grid and smear) or `karto:KEY=V,…`.
+    pub fn karto_config(name: &str) -> Result<KartoConfig, Failure> {
+        let usage = |why: String| {
+            Failure::usage(format!(
+                "peer {name:?}: {why}; expected karto, karto:R (the grid in metres, (0, 1]) \
+                 or karto:KEY=V,… with keys window (m or none), resolution, smear (m), \
+                 coarse, fine (degrees), refine (true/false)"
+            ))
+        };
+        let mut config = KartoConfig::default();
+        let Some(rest) = name.strip_prefix("karto:") else {
+            return if name == "karto" {
+                Ok(config)
+            } else {
+                Err(usage("unknown peer".into()))
+            };
+        };
+        let positive = |key: &str, v: &str, max: f64| match v.parse::<f64>() {
+            Ok(x) if x.is_finite() && x > 0.0 && x <= max => Ok(x),
+            _ => Err(usage(format!("{key}={v} is not a number in (0, {max}]"))),
+        };
+        if !rest.contains('=') {
+            let r = positive("resolution", rest, 1.0)?;
+            config.resolution = r;
+            config.smear_deviation = r;
+            return Ok(config);
+        }
+        let mut smear = None;
+        for item in rest.split(',') {
+            let (key, v) = item
+                .split_once('=')
+                .ok_or_else(|| usage(format!("{item:?} is not KEY=V")))?;
+            match key {
+                "window" if v == "none" => config.window = None,
+                "window" => config.window = Some(positive(key, v, 1000.0)?),
+                "resolution" => config.resolution = positive(key, v, 1.0)?,
+                "smear" => smear = Some(positive(key, v, 1.0)?),
+                "coarse" => config.coarse_angle_deg = positive(key, v, 180.0)?,
+                "fine" => config.fine_angle_deg = positive(key, v, 180.0)?,
+                "refine" => {
+                    config.refine = v
+                        .parse()
+                        .map_err(|_| usage(format!("refine={v} is not true or false")))?;
                 }
-            },
-        };
-        let config = KartoConfig {
-            resolution,
-            smear_deviation: resolution,
-            ..KartoConfig::default()
-        };
-        let peer = KartoPeer::spawn(&map_walls(map), &config)
+                _ => return Err(usage(format!("unknown key {key:?}"))),
+            }
+        }
+        // A grid given without a smear smears by one cell.
+        config.smear_deviation = smear.unwrap_or(config.resolution);
+        Ok(config)
+    }
+
+    pub fn start(name: &str, map: &Map) -> Result<Box<dyn Peer>, Failure> {
+        let config = karto_config(name)?;
+        let peer = KartoPeer::spawn_map(map, &config)
             .map_err(|e| Failure::io(format!("peer {name}: {e}")))?;
         Ok(Box::new(Karto {
             name: name.to_owned(),
@@ -291,6 +337,10 @@ pub fn run(args: &Args) -> Result<(), Failure> {
             .iter()
             .map(|p| start_peer(p, &m.map))
             .collect::<Result<_, _>>()?;
+        let peer_settings: Vec<Value> = peers
+            .iter()
+            .map(|p| json!({"name": p.name(), "settings": p.settings()}))
+            .collect();
         let peer_rows = conds
             .iter()
             .filter(|c| peer_conds.iter().any(|p| p.name == c.name))
@@ -445,7 +495,15 @@ pub fn run(args: &Args) -> Result<(), Failure> {
         );
         crate::scan::write(&cdf_path, &svg)?;
         if !args.json {
-            print_table(m, &full, preprocess_s, &rows, &summaries, &cdf_path);
+            print_table(
+                m,
+                &full,
+                preprocess_s,
+                &rows,
+                &summaries,
+                &peer_settings,
+                &cdf_path,
+            );
         }
         map_reports.push(json!({
             "map": m.name,
@@ -457,6 +515,7 @@ pub fn run(args: &Args) -> Result<(), Failure> {
             "preprocess_s": preprocess_s,
             "poses": poses.len(),
             "rows": row_json,
+            "peer_settings": peer_settings,
             "cdf_svg": cdf_path.display().to_string(),
         }));
         let mut counted: Vec<&str> = Vec::new();
@@ -514,6 +573,11 @@ pub fn run(args: &Args) -> Result<(), Failure> {
         .map(|(name, ts, os)| {
             let mut j = eval::summarise(ts, os).to_json();
             j["name"] = json!(name);
+            // The settings sent; what each map derived from them is in its
+            // `peer_settings`.
+            if let Ok(c) = peers::karto_config(name) {
+                j["config"] = c.to_json();
+            }
             j
         })
         .collect::<Vec<_>>());
@@ -557,6 +621,7 @@ fn print_table(
     preprocess_s: f64,
     rows: &[Row],
     summaries: &[Summary],
+    peer_settings: &[Value],
     cdf: &Path,
 ) {
     outln!(
@@ -595,6 +660,13 @@ fn print_table(
             s.p90_ms
         );
     };
+    for p in peer_settings {
+        outln!(
+            "  peer {}: {}",
+            p["name"].as_str().unwrap_or("?"),
+            settings_line(&p["settings"])
+        );
+    }
     let mut shown_peers: Vec<String> = Vec::new();
     for (r, s) in rows.iter().zip(summaries) {
         line(r.condition, &format!("ours/{}", r.compass), s);
@@ -622,4 +694,47 @@ fn print_table(
         }
     }
     outln!("  error CDF: {}", cdf.display());
+}
+
+/// A peer's settings on one line: `key value` pairs, by key.
+fn settings_line(settings: &Value) -> String {
+    match settings.as_object() {
+        Some(o) => o
+            .iter()
+            .map(|(k, v)| format!("{k} {v}"))
+            .collect::<Vec<_>>()
+            .join(", "),
+        None => settings.to_string(),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::peers::karto_config;
+    use wai_scan::peer::KartoConfig;
+
+    #[test]
+    fn peer_names_give_karto_settings() {
+        assert_eq!(karto_config("karto").unwrap(), KartoConfig::default());
+        let c = karto_config("karto:0.1").unwrap();
+        assert_eq!((c.resolution, c.smear_deviation), (0.1, 0.1));
+        let c = karto_config("karto:window=none,resolution=0.1,coarse=4,refine=false").unwrap();
+        assert_eq!(c.window, None);
+        assert_eq!((c.resolution, c.smear_deviation), (0.1, 0.1));
+        assert_eq!(c.coarse_angle_deg, 4.0);
+        assert!(!c.refine);
+        let c = karto_config("karto:window=8,smear=0.08").unwrap();
+        assert_eq!(c.window, Some(8.0));
+        assert_eq!(c.smear_deviation, 0.08);
+        for bad in [
+            "kart",
+            "karto:0",
+            "karto:window=-1",
+            "karto:speed=3",
+            "karto:refine=maybe",
+            "karto:x",
+        ] {
+            assert!(karto_config(bad).is_err(), "{bad}");
+        }
+    }
 }

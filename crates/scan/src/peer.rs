@@ -14,10 +14,13 @@
 //! # What the peer does
 //! The map's walls (not the obstacles: the robot does not know them) become
 //! karto's correlation grid at [`KartoConfig::resolution`]; each query is a
-//! full-circle exhaustive search over the whole map's bounding box (karto's
-//! coarse search over every position and heading, then its fine search
-//! around the best), with no odometry prior. See `peers/karto/README.md`
-//! for the settings and the measured figures.
+//! full-circle exhaustive search over the map: the walls' bounding box is
+//! tiled with square windows of side [`KartoConfig::window`] (only those
+//! meeting the free space are kept), and in each karto runs its coarse
+//! search over every position and heading, then its fine search around
+//! the best; the best response over the windows is the answer. No odometry
+//! prior. See `peers/karto/README.md` for the settings and the measured
+//! figures.
 
 use std::io::{BufRead, BufReader, Read, Write};
 use std::path::{Path, PathBuf};
@@ -45,9 +48,20 @@ pub fn map_walls(map: &Map) -> Vec<Wall> {
     crate::walls(map)
 }
 
+/// The map's boundary ring in metres, for [`KartoPeer::spawn_map`]: the
+/// free space is its inside, so the peer searches only windows meeting it.
+pub fn map_free(map: &Map) -> Vec<(f64, f64)> {
+    crate::walls(map).into_iter().map(|[a, _]| a).collect()
+}
+
 /// The peer's settings, sent with the walls.
 #[derive(Debug, Clone, PartialEq)]
 pub struct KartoConfig {
+    /// The side in metres of the square tiles the map's bounding box is
+    /// cut into, each searched as a karto window one coarse step wider (so
+    /// adjacent ones overlap); `None` searches the whole bounding box as
+    /// one window (slow, and on long maps gigabytes).
+    pub window: Option<f64>,
     /// The correlation grid's cell in metres; karto's coarse search steps
     /// two cells, its fine search one.
     pub resolution: f64,
@@ -63,10 +77,12 @@ pub struct KartoConfig {
 }
 
 impl Default for KartoConfig {
-    /// The settings chosen for global localization on indoor floors of
-    /// tens of metres (peers/karto/README.md says why).
+    /// karto's fastest settings that keep its success rate on the
+    /// evaluation maps and a corridor (peers/karto/README.md gives the
+    /// measurements): 8 m windows, karto's 0.05 m grid and 2° step. The peer's `DEFAULTS` agree (a test checks).
     fn default() -> Self {
         KartoConfig {
+            window: Some(8.0),
             resolution: 0.05,
             smear_deviation: 0.05,
             coarse_angle_deg: 2.0,
@@ -77,8 +93,10 @@ impl Default for KartoConfig {
 }
 
 impl KartoConfig {
-    fn to_json(&self) -> Value {
+    /// The settings as the peer's `config` object.
+    pub fn to_json(&self) -> Value {
         json!({
+            "window": self.window,
             "resolution": self.resolution,
             "smear_deviation": self.smear_deviation,
             "coarse_angle_deg": self.coarse_angle_deg,
@@ -164,10 +182,32 @@ impl KartoPeer {
         Self::spawn_with(&Self::default_python(), walls, config)
     }
 
+    /// Starts the peer on `map`: its walls, and its boundary as the free
+    /// space, so that only windows meeting the map are searched.
+    pub fn spawn_map(map: &Map, config: &KartoConfig) -> Result<KartoPeer, PeerError> {
+        Self::spawn_full(
+            &Self::default_python(),
+            &map_walls(map),
+            Some(&map_free(map)),
+            config,
+        )
+    }
+
     /// [`KartoPeer::spawn`] with the given interpreter.
     pub fn spawn_with(
         python: &Path,
         walls: &[Wall],
+        config: &KartoConfig,
+    ) -> Result<KartoPeer, PeerError> {
+        Self::spawn_full(python, walls, None, config)
+    }
+
+    /// The peer with the given interpreter, walls and (if any) free-space
+    /// ring.
+    pub fn spawn_full(
+        python: &Path,
+        walls: &[Wall],
+        free: Option<&[(f64, f64)]>,
         config: &KartoConfig,
     ) -> Result<KartoPeer, PeerError> {
         if !python.exists() {
@@ -219,7 +259,12 @@ impl KartoPeer {
             settings: Value::Null,
         };
         let walls: Vec<[f64; 4]> = walls.iter().map(|[a, b]| [a.0, a.1, b.0, b.1]).collect();
-        let answer = peer.request(&json!({ "walls": walls, "config": config.to_json() }))?;
+        let mut first = json!({ "walls": walls, "config": config.to_json() });
+        if let Some(ring) = free {
+            let ring: Vec<[f64; 2]> = ring.iter().map(|&(x, y)| [x, y]).collect();
+            first["free"] = json!(ring);
+        }
+        let answer = peer.request(&first)?;
         if answer.get("not_installed").and_then(Value::as_bool) == Some(true) {
             return Err(PeerError::NotInstalled {
                 why: error_text(&answer).unwrap_or_default(),
@@ -242,8 +287,9 @@ impl KartoPeer {
         self.build_ms
     }
 
-    /// The settings the peer derived (search window, centre, range
-    /// threshold, wall points), as it reported them.
+    /// The settings the peer ran with, as it reported them: those sent and
+    /// those it derived (windows, search size, range threshold, wall
+    /// points).
     pub fn settings(&self) -> &Value {
         &self.settings
     }

@@ -340,6 +340,14 @@ fn karto_runs_side_by_side_on_the_same_scans() {
     let v: serde_json::Value = serde_json::from_slice(&out.stdout).expect("JSON");
     let peer = &v["peers"][0];
     assert_eq!(peer["name"], "karto:0.1");
+    // The settings it ran with reach the JSON: those sent, and per map
+    // those the peer derived (its windows).
+    assert_eq!(peer["config"]["resolution"], 0.1, "{peer}");
+    assert_eq!(peer["config"]["window"], 8.0, "{peer}");
+    let settings = &v["maps"][0]["peer_settings"][0];
+    assert_eq!(settings["name"], "karto:0.1");
+    assert_eq!(settings["settings"]["smear_deviation"], 0.1, "{settings}");
+    assert!(settings["settings"]["windows"].as_u64().unwrap() >= 1);
     // One scan, shared by both compass rows, counted once.
     assert_eq!(peer["queries"], 1, "{v}");
     for row in v["maps"][0]["rows"].as_array().unwrap() {

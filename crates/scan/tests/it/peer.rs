@@ -1,12 +1,14 @@
 //! The karto-scanmatcher peer (a separate GPL-3 process, wai_scan::peer):
-//! a noiseless scan in a small L-shaped room is matched to its pose, a bad
-//! message gets an error answer and the process goes on serving, and a
-//! missing interpreter is reported as "not installed".
+//! a noiseless scan in a small L-shaped room is matched to its pose, so is
+//! one in a corridor five search windows long, a bad message gets an error
+//! answer and the process goes on serving, the Rust defaults are the
+//! peer's, and a missing interpreter is reported as "not installed".
 //!
 //! Where the peer is not installed (`scripts/install-karto`, which
 //! `scripts/bootstrap` tries), these tests say SKIPPED and check nothing;
 //! in CI (`WAI_CI`, set by `.ci/run`) they fail instead.
 
+use serde_json::json;
 use wai_exact::Point;
 use wai_map::Map;
 use wai_scan::eval::{errors, STRICT};
@@ -22,10 +24,32 @@ fn l_room() -> Map {
         .0
 }
 
-/// The peer holding `map`, or `None` (said loudly) where it is not
-/// installed outside CI.
+/// A 20 × 2 m corridor with a 1 × 1.5 m niche off one side at 11–12 m,
+/// so that no rotation maps it onto itself.
+fn corridor() -> Map {
+    let ring = [
+        (0, 0),
+        (20, 0),
+        (20, 2),
+        (12, 2),
+        (12, 3),
+        (11, 3),
+        (11, 2),
+        (0, 2),
+    ];
+    Map::from_ring(ring.iter().map(|&(x, y)| Point::new(x, y)).collect())
+        .expect("valid")
+        .0
+}
+
+/// The peer holding `map` at the default settings, or `None` (said
+/// loudly) where it is not installed outside CI.
 fn peer(map: &Map) -> Option<KartoPeer> {
-    match KartoPeer::spawn(&map_walls(map), &KartoConfig::default()) {
+    peer_with(map, &KartoConfig::default())
+}
+
+fn peer_with(map: &Map, config: &KartoConfig) -> Option<KartoPeer> {
+    match KartoPeer::spawn_map(map, config) {
         Ok(p) => Some(p),
         Err(e @ PeerError::NotInstalled { .. }) if std::env::var_os("WAI_CI").is_none() => {
             // Past the test harness's capture: a skip must be seen.
@@ -77,6 +101,71 @@ fn karto_finds_the_pose_of_a_noiseless_scan_in_an_l_room() {
         );
         assert!(got.response > 0.9 && got.response <= 1.0, "{got:?}");
         assert!(got.ms > 0.0);
+    }
+}
+
+#[test]
+fn windowed_search_finds_the_pose_in_a_corridor_longer_than_a_window() {
+    let map = corridor();
+    let config = KartoConfig {
+        window: Some(4.0),
+        ..KartoConfig::default()
+    };
+    let Some(mut karto) = peer_with(&map, &config) else {
+        return;
+    };
+    // 4 m tiles over the 20 × 3 m box: five along, one across, each
+    // meeting the corridor.
+    assert_eq!(karto.settings()["windows"], 5, "{}", karto.settings());
+    assert_eq!(karto.settings()["window"], 4.0);
+    for truth in [
+        Pose {
+            x: 17.3,
+            y: 1.2,
+            heading: 0.4,
+        },
+        Pose {
+            x: 2.5,
+            y: 0.7,
+            heading: 2.5,
+        },
+        Pose {
+            x: 11.5,
+            y: 2.4,
+            heading: -1.5,
+        },
+    ] {
+        let got = karto
+            .localize(&scan_360(&map, &truth), None)
+            .expect("an answer");
+        let (d, a) = errors(&got.pose, &truth);
+        assert!(
+            STRICT.accepts(&got.pose, &truth),
+            "{truth:?}: karto says {:?}, off by {d:.3} m and {a:.2}°",
+            got.pose
+        );
+    }
+}
+
+#[test]
+fn the_rust_defaults_are_the_peers_defaults() {
+    let map = l_room();
+    let Some(mut karto) = peer(&map) else {
+        return;
+    };
+    // A second map message with no config: the peer's own DEFAULTS.
+    let walls: Vec<[f64; 4]> = map_walls(&map)
+        .iter()
+        .map(|[a, b]| [a.0, a.1, b.0, b.1])
+        .collect();
+    let own = karto
+        .raw(&json!({ "walls": walls }).to_string())
+        .expect("an answer");
+    assert_eq!(own["ready"], true, "{own}");
+    let sent = KartoConfig::default().to_json();
+    for (key, value) in sent.as_object().expect("an object") {
+        assert_eq!(&own["settings"][key], value, "{key}: {own}");
+        assert_eq!(&karto.settings()[key], value, "{key}");
     }
 }
 
