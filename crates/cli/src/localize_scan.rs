@@ -35,8 +35,9 @@ pub struct Args {
     #[arg(long, value_parser = crate::options::finite, allow_negative_numbers = true)]
     pub heading: Option<f64>,
     /// The map's units: `auto`, `m`, `lonlat` or `scale:K` (K metres per
-    /// unit). Auto: longitude/latitude when the map spans less than 0.1°
-    /// within ±180/±90, 0.025 m per pixel for an R2V file, else metres.
+    /// unit). Auto: the units the map file states (its "units" field),
+    /// else longitude/latitude when the map spans less than 0.1° within
+    /// ±180/±90, 0.025 m per pixel for an R2V file, else metres.
     /// Every map is localized in metres; a longitude/latitude map in a
     /// local frame (x east, y north from its south-west corner, printed
     /// with the answer), and its poses are given in longitude, latitude

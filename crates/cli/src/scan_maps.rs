@@ -43,25 +43,22 @@ pub(crate) fn parse_units(text: &str) -> Result<Option<Units>, Failure> {
     }
 }
 
-/// The units `auto` picks for `map` read from `path`.
+/// The units `auto` picks for `map` read from `path`: the units its file
+/// states, else longitude/latitude if it looks so
+/// ([`wai_map::Map::looks_lonlat`]), 0.025 m per pixel for an R2V file,
+/// else metres.
 fn auto_units(path: &str, map: &Map) -> Units {
-    let s = map.scale().to_f64();
-    let (lo, hi) = map.bounding_box();
-    let (x0, y0, x1, y1) = (
-        lo.x as f64 / s,
-        lo.y as f64 / s,
-        hi.x as f64 / s,
-        hi.y as f64 / s,
-    );
-    let in_degrees = x0 >= -180.0 && x1 <= 180.0 && y0 >= -90.0 && y1 <= 90.0;
-    if in_degrees && x1 - x0 < 0.1 && y1 - y0 < 0.1 {
-        Units::LonLatDegrees
-    } else if path.contains("r2v") {
+    match map.units() {
+        Some(wai_map::Units::Metres) => Units::Metres,
+        Some(wai_map::Units::LonLat) => Units::LonLatDegrees,
+        // Numerator over denominator: the nearest double for a decimal
+        // such as 0.01 (`Rational::to_f64` rounds toward zero).
+        Some(wai_map::Units::Scale(k)) => Units::Scale(k.numer().to_f64() / k.denom().to_f64()),
+        None if map.looks_lonlat() => Units::LonLatDegrees,
         // R2V annotations are image pixels; floor plans of flats at about
         // 40 px per metre (an assumption: the source gives no scale).
-        Units::Scale(0.025)
-    } else {
-        Units::Metres
+        None if path.contains("r2v") => Units::Scale(0.025),
+        None => Units::Metres,
     }
 }
 

@@ -8,7 +8,9 @@
 //! number: a string holding an integer, a decimal or a fraction `p/q`, or a
 //! JSON number written without exponent (read from its text, never through
 //! a float). `holes`, if present, must be empty (holes are not supported
-//! yet); `name` and `source` are kept; every other field is ignored.
+//! yet); `name` and `source` are kept; `units`, if present, says what the
+//! coordinates measure: `"m"`, `"lonlat"` or `"scale:K"` (K metres per
+//! unit, [`crate::Units`]); every other field is ignored.
 
 use crate::error::{MapError, MapErrors};
 use crate::number::{format_exact, parse_exact, scale_to_integers, RawCoord};
@@ -37,7 +39,17 @@ pub fn from_json(bytes: &[u8]) -> Result<Loaded, MapErrors> {
     let coords = read_ring(outer, "outer", false)?;
     let name = optional_string(obj.get("name"), "name")?;
     let source = optional_string(obj.get("source"), "source")?;
-    build(coords, name, source)
+    let units = optional_string(obj.get("units"), "units")?
+        .map(|u| crate::Units::parse(&u).map_err(|e| structure("units", &e)))
+        .transpose()?;
+    let loaded = build(coords, name, source)?;
+    Ok(match units {
+        Some(u) => Loaded {
+            map: loaded.map.with_units(u),
+            ..loaded
+        },
+        None => loaded,
+    })
 }
 
 /// Write a map in the same format; [`from_json`] reads it back equal.
@@ -51,6 +63,9 @@ pub fn to_json(map: &Map) -> String {
     }
     if let Some(source) = map.source() {
         let _ = writeln!(s, "  \"source\": {},", Value::from(source));
+    }
+    if let Some(units) = map.units() {
+        let _ = writeln!(s, "  \"units\": \"{units}\",");
     }
     s.push_str("  \"outer\": [\n");
     let unit = |c: i128| format_exact(&Rational::from((Integer::from(c), map.scale().clone())));

@@ -21,9 +21,11 @@ pub mod geojson;
 pub mod json;
 mod number;
 mod polygon;
+mod units;
 mod validate;
 
 pub use error::{IntersectionKind, MapError, MapErrors, NumberError, Position};
 pub use number::{format_exact, parse_exact, MAX_NUMBER_LEN};
 pub use polygon::{Loaded, Map, Normalisation};
+pub use units::Units;
 pub use validate::validate_all;

@@ -17,6 +17,7 @@ use wai_exact::{orientation, signed_area_twice, Orientation, Point, Segment};
 pub struct Map {
     name: Option<String>,
     source: Option<String>,
+    units: Option<crate::Units>,
     vertices: Vec<Point>,
     scale: Integer,
     reflex: Vec<usize>,
@@ -131,6 +132,7 @@ impl Map {
         Map {
             name,
             source,
+            units: None,
             vertices,
             scale,
             reflex,
@@ -145,6 +147,17 @@ impl Map {
     pub fn with_source(mut self, source: impl Into<String>) -> Map {
         self.source = Some(source.into());
         self
+    }
+
+    /// The map with the units its file states.
+    pub fn with_units(mut self, units: crate::Units) -> Map {
+        self.units = Some(units);
+        self
+    }
+
+    /// The units the map's file states, if it states any.
+    pub fn units(&self) -> Option<&crate::Units> {
+        self.units.as_ref()
     }
 
     pub fn name(&self) -> Option<&str> {

@@ -37,7 +37,7 @@ fn metres_per_degree() -> f64 {
 }
 
 /// What a map's input coordinates measure, for the scale bar and the
-/// projection. A [`Map`] does not record its units; [`MapUnits::guess`]
+/// projection. [`MapUnits::guess`] takes the units a map states, else
 /// applies the rule of the scan commands' `--units auto`.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum MapUnits {
@@ -51,23 +51,16 @@ pub enum MapUnits {
 }
 
 impl MapUnits {
-    /// [`MapUnits::LonLat`] if every coordinate lies within ±180 (x) and
-    /// ±90 (y) and the map spans less than 0.1 in both (a building in
-    /// degrees), else [`MapUnits::Plain`].
+    /// The units the map's file states, else [`MapUnits::LonLat`] if it
+    /// looks like longitude/latitude ([`Map::looks_lonlat`]: within ±180
+    /// and ±90, spanning less than 0.1 in both), else [`MapUnits::Plain`].
     pub fn guess(map: &Map) -> MapUnits {
-        let s = map.scale().to_f64();
-        let (lo, hi) = map.bounding_box();
-        let (x0, y0, x1, y1) = (
-            approx(lo.x) / s,
-            approx(lo.y) / s,
-            approx(hi.x) / s,
-            approx(hi.y) / s,
-        );
-        let in_degrees = x0 >= -180.0 && x1 <= 180.0 && y0 >= -90.0 && y1 <= 90.0;
-        if in_degrees && x1 - x0 < 0.1 && y1 - y0 < 0.1 {
-            MapUnits::LonLat
-        } else {
-            MapUnits::Plain
+        match map.units() {
+            Some(wai_map::Units::Metres) => MapUnits::Metres,
+            Some(wai_map::Units::LonLat) => MapUnits::LonLat,
+            Some(wai_map::Units::Scale(_)) => MapUnits::Plain,
+            None if map.looks_lonlat() => MapUnits::LonLat,
+            None => MapUnits::Plain,
         }
     }
 }

@@ -111,6 +111,7 @@ pub fn to_metres(map: &Map, units: Units) -> Result<Map, MapErrors> {
         .map(|&(x, y)| Point::new((x * 1000.0).round() as i128, (y * 1000.0).round() as i128))
         .collect();
     let (m, _) = Map::from_scaled_ring(ring, Integer::from(1000))?;
+    let m = m.with_units(wai_map::Units::Metres);
     let m = match map.name() {
         Some(name) => m.with_name(name),
         None => m,

@@ -138,3 +138,44 @@ fn a_lonlat_map_is_localized_in_a_stated_frame_and_answered_in_lonlat() {
     assert!(out.contains("lon 8.0000"), "{out}");
     std::fs::remove_dir_all(&dir).ok();
 }
+
+#[test]
+fn units_stated_in_the_map_file_come_before_the_guess() {
+    let dir = std::env::temp_dir().join(format!("wai-units-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    // A 5 × 4 cm box looks like degrees to the guess unless it says it is
+    // in metres; a box of 0.0005° × 0.0004° is guessed right; a plan in
+    // centimetres states its scale.
+    let cases = [
+        (r#""units": "m", "#, "0.05", "0.04", "m", "0.02,0.02"),
+        ("", "0.0005", "0.0004", "lonlat", "2,2"),
+        (
+            r#""units": "scale:0.01", "#,
+            "500",
+            "400",
+            "scale:0.01",
+            "2,2",
+        ),
+    ];
+    for (i, (units, w, h, want, at)) in cases.into_iter().enumerate() {
+        let map = dir.join(format!("m{i}.json"));
+        std::fs::write(
+            &map,
+            format!(
+                r#"{{{units}"outer": [["0", "0"], ["{w}", "0"], ["{w}", "{h}"], ["0", "{h}"]]}}"#
+            ),
+        )
+        .unwrap();
+        let map = map.to_str().unwrap();
+        let scan = wai(&["scan", map, "--at", at, "--beams", "90"], b"");
+        assert_eq!(scan.status.code(), Some(0), "{}", text(&scan.stderr));
+        let s = dir.join(format!("s{i}.json"));
+        std::fs::write(&s, &scan.stdout).unwrap();
+        let out = wai(&["localize-scan", map, s.to_str().unwrap(), "--json"], b"");
+        assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
+        let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+        assert_eq!(v["units"], want, "{units}");
+        assert_eq!(v["frame"].is_null(), want != "lonlat", "{units}");
+    }
+    std::fs::remove_dir_all(&dir).ok();
+}

@@ -58,3 +58,37 @@ proptest! {
         }
     }
 }
+
+#[test]
+fn stated_units_are_read_and_written_back() {
+    use wai_map::Units;
+    let text = br#"{"units": "scale:0.01", "outer": [["0", "0"], ["400", "0"], ["400", "300"], ["0", "300"]]}"#;
+    let map = from_json(text).expect("a map").map;
+    assert_eq!(
+        map.units(),
+        Some(&Units::Scale(rug::Rational::from((1, 100))))
+    );
+    let back = from_json(to_json(&map).as_bytes()).expect("a map").map;
+    assert_eq!(back, map);
+    assert!(to_json(&map).contains(r#""units": "scale:0.01""#));
+    // Without the field: none stated.
+    let plain = br#"{"outer": [["0", "0"], ["4", "0"], ["4", "3"]]}"#;
+    assert_eq!(from_json(plain).expect("a map").map.units(), None);
+    // A bad value is an error at "units".
+    let bad = br#"{"units": "feet", "outer": [["0", "0"], ["4", "0"], ["4", "3"]]}"#;
+    let err = from_json(bad).unwrap_err().to_string();
+    assert!(err.contains("units") && err.contains("scale:K"), "{err}");
+}
+
+#[test]
+fn a_map_looks_lonlat_only_when_small_and_in_range() {
+    let map = |ring: &str| {
+        from_json(format!(r#"{{"outer": {ring}}}"#).as_bytes())
+            .expect("a map")
+            .map
+    };
+    assert!(map(r#"[["8", "47"], ["8.001", "47"], ["8.001", "47.001"]]"#).looks_lonlat());
+    // Too wide a span, or beyond ±90 in y: planar.
+    assert!(!map(r#"[["8", "47"], ["8.2", "47"], ["8.2", "47.2"]]"#).looks_lonlat());
+    assert!(!map(r#"[["8", "95"], ["8.001", "95"], ["8.001", "95.001"]]"#).looks_lonlat());
+}
