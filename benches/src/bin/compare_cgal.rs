@@ -655,7 +655,7 @@ fn main() -> ExitCode {
         Ok(a) => a,
         Err(e) => {
             if e.is_empty() {
-                println!("{USAGE}");
+                wai_output::outln!("{USAGE}");
                 return ExitCode::SUCCESS;
             }
             eprintln!("compare_cgal: {e}\n{USAGE}");
@@ -756,8 +756,8 @@ fn main() -> ExitCode {
     for t in run.tallies.values() {
         total.add(t);
     }
-    println!("# compare_cgal: wai's V_p (production, reference) against CGAL 5.5 Triangular_expansion_visibility_2 (Epeck)");
-    println!(
+    wai_output::outln!("# compare_cgal: wai's V_p (production, reference) against CGAL 5.5 Triangular_expansion_visibility_2 (Epeck)");
+    wai_output::outln!(
         "# {} random maps and the thesis families ({:.1?}), datasets: {} ({:.1?}){}",
         args.polygons,
         random_time,
@@ -769,13 +769,15 @@ fn main() -> ExitCode {
         if args.quick { ", --quick" } else { "" }
     );
     if skipped_large > 0 {
-        println!("# AGPLIB maps above the --max-dataset-n limit, not read: {skipped_large}");
+        wai_output::outln!(
+            "# AGPLIB maps above the --max-dataset-n limit, not read: {skipped_large}"
+        );
     }
-    println!();
-    println!("| group | maps | max n | viewpoints (sampled + random) | vs CGAL | exact | after C2 | CGAL collinear vertices (map / other) | vs reference (equal) | unexplained |");
-    println!("|---|---|---|---|---|---|---|---|---|---|");
+    wai_output::outln!();
+    wai_output::outln!("| group | maps | max n | viewpoints (sampled + random) | vs CGAL | exact | after C2 | CGAL collinear vertices (map / other) | vs reference (equal) | unexplained |");
+    wai_output::outln!("|---|---|---|---|---|---|---|---|---|---|");
     let row = |name: &str, t: &Tally| {
-        println!(
+        wai_output::outln!(
             "| {name} | {} | {} | {} ({} + {}) | {} | {} | {} | {} / {} | {} ({}) | {} |",
             t.maps,
             t.largest_n,
@@ -796,38 +798,41 @@ fn main() -> ExitCode {
         row(g, t);
     }
     row("**total**", &total);
-    println!();
-    println!("maps: {}", total.maps);
-    println!(
+    wai_output::outln!();
+    wai_output::outln!("maps: {}", total.maps);
+    wai_output::outln!(
         "viewpoints: {} ({} sampled, {} random)",
-        total.viewpoints, total.sampled, total.random
+        total.viewpoints,
+        total.sampled,
+        total.random
     );
-    println!("polygons compared with CGAL: {}", total.cgal_compared);
-    println!("  exact matches: {}", total.exact);
-    println!(
+    wai_output::outln!("polygons compared with CGAL: {}", total.cgal_compared);
+    wai_output::outln!("  exact matches: {}", total.exact);
+    wai_output::outln!(
         "  matches after C2 (CGAL's collinear in-between vertices dropped): {} ({} vertices dropped: {} map vertices, {} other points)",
         total.after_c2,
         total.dropped_map_vertices + total.dropped_other,
         total.dropped_map_vertices,
         total.dropped_other
     );
-    println!(
+    wai_output::outln!(
         "    of these matches, at random viewpoints: {}",
         total.after_c2_random
     );
-    println!(
+    wai_output::outln!(
         "    of the dropped vertices, on a straight stretch through the viewpoint: {}",
         total.dropped_through_p
     );
-    println!(
+    wai_output::outln!(
         "  CGAL replies with a repeated vertex: {}",
         total.with_duplicates
     );
-    println!(
+    wai_output::outln!(
         "production vs reference (n <= {REFERENCE_MAX_N}): {} compared, {} equal",
-        total.reference_compared, total.reference_equal
+        total.reference_compared,
+        total.reference_equal
     );
-    println!(
+    wai_output::outln!(
         "sees cross-check of ours (n <= {REFERENCE_MAX_N}): {} checked, {} failed",
         total.sees_checked,
         run.findings
@@ -836,28 +841,28 @@ fn main() -> ExitCode {
             .count()
     );
     if args.inject_fault.is_some() {
-        println!("injected faults (self-test): {}", run.injected);
+        wai_output::outln!("injected faults (self-test): {}", run.injected);
     }
     let mut by_cat: BTreeMap<&str, usize> = BTreeMap::new();
     for f in &run.findings {
         *by_cat.entry(f.category).or_default() += 1;
     }
-    println!("unexplained: {}", run.findings.len() + load_errors.len());
+    wai_output::outln!("unexplained: {}", run.findings.len() + load_errors.len());
     for (c, k) in &by_cat {
-        println!("  {c}: {k}");
+        wai_output::outln!("  {c}: {k}");
     }
     if !load_errors.is_empty() {
-        println!("  map not loaded: {}", load_errors.len());
+        wai_output::outln!("  map not loaded: {}", load_errors.len());
     }
-    println!("time: {:.1?}", run.start.elapsed());
+    wai_output::outln!("time: {:.1?}", run.start.elapsed());
     for e in &load_errors {
-        println!("\nMAP NOT LOADED: {e}");
+        wai_output::outln!("\nMAP NOT LOADED: {e}");
     }
     for (i, e) in run.examples.iter().enumerate() {
-        println!("\nMATCH AFTER C2, example {}\n{e}", i + 1);
+        wai_output::outln!("\nMATCH AFTER C2, example {}\n{e}", i + 1);
     }
     for (i, f) in run.findings.iter().enumerate() {
-        println!("\nUNEXPLAINED #{} [{}]\n{}", i + 1, f.category, f.text);
+        wai_output::outln!("\nUNEXPLAINED #{} [{}]\n{}", i + 1, f.category, f.text);
     }
     if run.findings.is_empty() && load_errors.is_empty() {
         ExitCode::SUCCESS

@@ -115,7 +115,7 @@ fn check(map: &Map, cells: usize, points: usize, seed: u64) -> Result<Tally, Str
 fn main() {
     let args: Vec<String> = std::env::args().skip(1).collect();
     if args.iter().any(|a| a == "--help" || a == "-h") {
-        print!("{USAGE}");
+        wai_output::out!("{USAGE}");
         return;
     }
     let random = arg(&args, "--random", 2000);
@@ -178,23 +178,26 @@ fn main() {
             }
         }
     }
-    println!(
+    wai_output::outln!(
         "{total} maps ({skipped} over {max_n} vertices skipped), {} queries: the localizer, the brute force and the one-shot oracle agree on all",
         sum.queries
     );
-    println!(
+    wai_output::outln!(
         "one-shot: {} directional sweeps of ray exits (one per spurious-edge direction of a view that reached test 4)",
         sum.one_shot_sweeps
     );
-    println!(
+    wai_output::outln!(
         "viewpoints: {} in 2-cells, {} on 1-cells, {} on 0-cells, {} random",
-        sum.by_kind[0], sum.by_kind[1], sum.by_kind[2], sum.by_kind[3]
+        sum.by_kind[0],
+        sum.by_kind[1],
+        sum.by_kind[2],
+        sum.by_kind[3]
     );
     let dist: Vec<String> = sum
         .answers
         .iter()
         .map(|(a, c)| format!("A={a}: {c}"))
         .collect();
-    println!("answers: {}", dist.join(", "));
-    println!("{} s", start.elapsed().as_secs());
+    wai_output::outln!("answers: {}", dist.join(", "));
+    wai_output::outln!("{} s", start.elapsed().as_secs());
 }

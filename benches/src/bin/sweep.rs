@@ -530,7 +530,7 @@ usage: sweep [--out DIR] [--quick] [--ch5-max-cells N]
 fn main() {
     let args: Vec<String> = std::env::args().collect();
     if args.iter().any(|a| a == "-h" || a == "--help") {
-        println!("{}", usage());
+        wai_output::outln!("{}", usage());
         return;
     }
     let quick = args.iter().any(|a| a == "--quick");
@@ -795,7 +795,7 @@ fn main() {
             by(&|r: &Row| (r.mean_a, r.query_us)),
         ),
     ];
-    println!("wrote {}", csv.display());
+    wai_output::outln!("wrote {}", csv.display());
     let slopes_path = out.join("slopes.csv");
     let mut sf = std::fs::File::create(&slopes_path).expect("slopes file");
     writeln!(
@@ -807,14 +807,16 @@ fn main() {
     for (file, title, xl, yl, data) in &plots {
         let path = out.join(file);
         match plot(&path, title, xl, yl, data, &foot) {
-            Ok(()) => println!("wrote {}", path.display()),
+            Ok(()) => wai_output::outln!("wrote {}", path.display()),
             Err(e) => eprintln!("sweep: {}: {e}", path.display()),
         }
         for (name, pts) in data {
             let Some((s, tail)) = slopes(pts) else {
                 continue;
             };
-            println!("  {file}: {name}: fitted log-log slope {s:.3} (largest three: {tail:.3})");
+            wai_output::outln!(
+                "  {file}: {name}: fitted log-log slope {s:.3} (largest three: {tail:.3})"
+            );
             let expected = TIGHT.iter().find(|t| t.plot == *file && t.series == name);
             let (want, verdict) = match expected {
                 Some(t) => {
@@ -848,14 +850,18 @@ fn main() {
             .unwrap();
         }
     }
-    println!("wrote {}", slopes_path.display());
+    wai_output::outln!("wrote {}", slopes_path.display());
     if !tight_lines.is_empty() {
-        println!("tight families (slope on the largest three maps against the expected one):");
+        wai_output::outln!(
+            "tight families (slope on the largest three maps against the expected one):"
+        );
         if quick {
-            println!("  (--quick: the maps are too small for the asymptote; informative only)");
+            wai_output::outln!(
+                "  (--quick: the maps are too small for the asymptote; informative only)"
+            );
         }
         for l in &tight_lines {
-            println!("{l}");
+            wai_output::outln!("{l}");
         }
     }
 }

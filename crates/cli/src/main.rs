@@ -15,10 +15,10 @@
 //! Exit codes: 0 success; 1 the map is invalid; 2 bad usage; 3 the file
 //! could not be read or written. Errors say what and where, never panic.
 //! A closed pipe on standard output ends a command quietly with 141
-//! (`stdout`).
+//! (`wai_output`).
 
 #[macro_use]
-mod stdout;
+extern crate wai_output;
 
 mod budget;
 mod check;

@@ -1,6 +1,7 @@
 //! Standard output through a checked writer: [`out!`] and [`outln!`]
 //! instead of `print!` and `println!`, which panic when the reader is gone
-//! (`wai claims | head`).
+//! (`wai claims | head`, `sweep | head`). Every binary of the workspace
+//! writes through it.
 //!
 //! A closed pipe ends the command quietly, with the status a shell reports
 //! for a command stopped by SIGPIPE (141 = 128 + 13): the reader asked for
@@ -29,18 +30,20 @@ pub fn write(args: std::fmt::Arguments<'_>) {
 }
 
 /// `print!` through [`write`].
+#[macro_export]
 macro_rules! out {
     ($($arg:tt)*) => {
-        $crate::stdout::write(format_args!($($arg)*))
+        $crate::write(format_args!($($arg)*))
     };
 }
 
 /// `println!` through [`write`].
+#[macro_export]
 macro_rules! outln {
     () => {
-        $crate::stdout::write(format_args!("\n"))
+        $crate::write(format_args!("\n"))
     };
     ($($arg:tt)*) => {
-        $crate::stdout::write(format_args!("{}\n", format_args!($($arg)*)))
+        $crate::write(format_args!("{}\n", format_args!($($arg)*)))
     };
 }
