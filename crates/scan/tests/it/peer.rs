@@ -72,6 +72,21 @@ fn scan_360(map: &Map, pose: &Pose) -> wai_scan::Scan {
     simulate(map, &[], pose, &sensor, 0).expect("inside")
 }
 
+/// karto's answer to the noiseless 360° scan at `truth`, which must be
+/// right by the strict criterion.
+fn found(karto: &mut KartoPeer, map: &Map, truth: &Pose) -> wai_scan::peer::PeerAnswer {
+    let got = karto
+        .localize(&scan_360(map, truth), None)
+        .expect("an answer");
+    let (d, a) = errors(&got.pose, truth);
+    assert!(
+        STRICT.accepts(&got.pose, truth),
+        "{truth:?}: karto says {:?}, off by {d:.3} m and {a:.2}°",
+        got.pose
+    );
+    got
+}
+
 #[test]
 fn karto_finds_the_pose_of_a_noiseless_scan_in_an_l_room() {
     let map = l_room();
@@ -90,15 +105,7 @@ fn karto_finds_the_pose_of_a_noiseless_scan_in_an_l_room() {
             heading: -2.0,
         },
     ] {
-        let got = karto
-            .localize(&scan_360(&map, &truth), None)
-            .expect("an answer");
-        let (d, a) = errors(&got.pose, &truth);
-        assert!(
-            STRICT.accepts(&got.pose, &truth),
-            "{truth:?}: karto says {:?}, off by {d:.3} m and {a:.2}°",
-            got.pose
-        );
+        let got = found(&mut karto, &map, &truth);
         assert!(got.response > 0.9 && got.response <= 1.0, "{got:?}");
         assert!(got.ms > 0.0);
     }
@@ -135,15 +142,7 @@ fn windowed_search_finds_the_pose_in_a_corridor_longer_than_a_window() {
             heading: -1.5,
         },
     ] {
-        let got = karto
-            .localize(&scan_360(&map, &truth), None)
-            .expect("an answer");
-        let (d, a) = errors(&got.pose, &truth);
-        assert!(
-            STRICT.accepts(&got.pose, &truth),
-            "{truth:?}: karto says {:?}, off by {d:.3} m and {a:.2}°",
-            got.pose
-        );
+        found(&mut karto, &map, &truth);
     }
 }
 
