@@ -105,7 +105,7 @@ impl Arrangement {
     pub fn check_geometry(&self) -> Result<(), String> {
         let mv = self.map.vertices();
         let n = mv.len();
-        let geo = Geo { arr: self };
+        let geo = Geo::new(self);
         let map_pt = |i: usize| Pt::Map(mv[i % n]);
         // Edges on their supports, in the support's direction.
         for (e, geom) in self.edges.iter().enumerate() {
@@ -121,7 +121,8 @@ impl Arrangement {
             match geom.support {
                 Support::MapEdge(i) => {
                     let (p, q) = (map_pt(i), map_pt(i + 1));
-                    if !geo.on_closed_segment(p, q, pa) || !geo.on_closed_segment(p, q, pb) {
+                    let l = geo.map_lines[i];
+                    if !geo.on_segment(l, p, q, a) || !geo.on_segment(l, p, q, b) {
                         return Err(format!("edge {e}: off map edge {i}"));
                     }
                 }
@@ -131,10 +132,11 @@ impl Arrangement {
                     }
                     for &r in self.edge_rays(e) {
                         let ray = &self.rays[r];
-                        let (s, t) = (map_pt(ray.anchor), Pt::Exact(&ray.end.point));
+                        let (s, t) = (map_pt(ray.anchor), Pt::Ray(r));
+                        let l = geo.ray_lines[r];
                         if !self.groups[g].rays.contains(&r)
-                            || !geo.on_closed_segment(s, t, pa)
-                            || !geo.on_closed_segment(s, t, pb)
+                            || !geo.on_segment(l, s, t, a)
+                            || !geo.on_segment(l, s, t, b)
                         {
                             return Err(format!("edge {e}: not covered by ray {r}"));
                         }
@@ -166,7 +168,8 @@ impl Arrangement {
         // face and its twin runs the other way, so the signed areas of all
         // faces sum to 0 and the cells' to minus the outer face's.)
         for f in self.cells() {
-            let vs = self.face_vertices(f);
+            let hs = self.face_half_edges(f);
+            let vs: Vec<usize> = hs.iter().map(|&h| self.half_edges[h].origin).collect();
             let mut sorted = vs.clone();
             sorted.sort_unstable();
             sorted.dedup();
@@ -177,8 +180,9 @@ impl Arrangement {
             let at = |i: usize| Pt::Vertex(vs[i % k]);
             let mut strict = false;
             for i in 0..k {
+                // a → b is half-edge hs[i]: its line decides the turns.
                 let (a, b, c) = (at(i), at(i + 1), at(i + 2));
-                let turn = geo.orientation(a, b, c);
+                let turn = geo.turn(hs[i], vs[(i + 2) % k]);
                 strict |= turn == Orientation::CounterClockwise;
                 let ok = turn == Orientation::CounterClockwise
                     || (turn == Orientation::Collinear && geo.on_closed_segment(a, c, b));
@@ -189,7 +193,7 @@ impl Arrangement {
                     ));
                 }
                 for j in 0..k {
-                    if geo.orientation(a, b, at(j)) == Orientation::Clockwise {
+                    if geo.turn(hs[i], vs[j]) == Orientation::Clockwise {
                         return Err(format!(
                             "face {f}: not convex (vertex {} right of its edge {} → {})",
                             vs[j],
@@ -205,13 +209,12 @@ impl Arrangement {
                 return Err(format!("face {f}: area 0"));
             }
         }
-        self.check_no_crossings()
+        self.check_no_crossings(&geo)
     }
 
     /// No vertex in an edge's relative interior; no two edges cross or
     /// overlap. Candidates by integer bounding boxes, sorted by x.
-    fn check_no_crossings(&self) -> Result<(), String> {
-        let geo = Geo { arr: self };
+    fn check_no_crossings(&self, geo: &Geo<'_>) -> Result<(), String> {
         let ends = |e: usize| (self.half_edges[2 * e].origin, self.dest(2 * e));
         let vboxes: Vec<[i128; 4]> = (0..self.vertices.len()).map(|v| geo.bbox(v)).collect();
         let eboxes: Vec<[i128; 4]> = (0..self.edges.len())
@@ -240,13 +243,15 @@ impl Arrangement {
                 if v == a || v == b || !boxes_meet(&vboxes[v], eb) {
                     continue;
                 }
-                if geo.on_closed_segment(Pt::Vertex(a), Pt::Vertex(b), Pt::Vertex(v)) {
+                if geo.side(e, v) == Orientation::Collinear
+                    && geo.on_closed_segment(Pt::Vertex(a), Pt::Vertex(b), Pt::Vertex(v))
+                {
                     return Err(format!("vertex {v} lies in the interior of edge {e}"));
                 }
             }
         }
         let bad = meeting_pairs(&eboxes, |e, f| {
-            let why = self.edges_meet_badly(&geo, ends(e), ends(f))?;
+            let why = self.edges_meet_badly(geo, (e, ends(e)), (f, ends(f)))?;
             Some(format!("edges {e} and {f} {why}"))
         });
         match bad.into_iter().next() {
@@ -259,8 +264,8 @@ impl Arrangement {
     fn edges_meet_badly(
         &self,
         geo: &Geo<'_>,
-        (a, b): (usize, usize),
-        (c, d): (usize, usize),
+        (e, (a, b)): (usize, (usize, usize)),
+        (f, (c, d)): (usize, (usize, usize)),
     ) -> Option<&'static str> {
         let p = Pt::Vertex;
         let shared = [a, b].iter().filter(|x| **x == c || **x == d).count();
@@ -270,21 +275,22 @@ impl Arrangement {
                 let w = if a == c || a == d { a } else { b };
                 let x = if w == a { b } else { a };
                 let y = if w == c { d } else { c };
-                // Overlap iff x and y lie on one ray from w.
-                (geo.orientation(p(w), p(x), p(y)) == Orientation::Collinear
-                    && !geo.on_closed_segment(p(x), p(y), p(w)))
-                .then_some("overlap")
+                // Overlap iff x and y lie on one ray from w. (w, x, y)
+                // are collinear iff y lies on the line of edge e (w, x).
+                (geo.side(e, y) == Orientation::Collinear && !geo.between(x, y, w))
+                    .then_some("overlap")
             }
             _ => {
-                let o = |u: usize, v: usize, t: usize| geo.orientation(p(u), p(v), p(t));
                 let apart = |s: Orientation, t: Orientation| s == t && s != Orientation::Collinear;
                 // Most pairs that meet in their boxes are told apart by the
                 // first line alone: its two tests before the other two.
-                let (o1, o2) = (o(a, b, c), o(a, b, d));
+                // (The orientation of (a, b, t) is the side of edge e's line
+                // t lies on.)
+                let (o1, o2) = (geo.side(e, c), geo.side(e, d));
                 if apart(o1, o2) {
                     return None;
                 }
-                let (o3, o4) = (o(c, d, a), o(c, d, b));
+                let (o3, o4) = (geo.side(f, a), geo.side(f, b));
                 if apart(o3, o4) {
                     return None;
                 }
@@ -304,40 +310,194 @@ impl Arrangement {
 }
 
 /// A point the sanity check asks about: an arrangement vertex, a map
-/// vertex, or an exact point (a ray's end).
+/// vertex, or a ray's end.
 #[derive(Clone, Copy)]
-enum Pt<'a> {
+enum Pt {
     Vertex(usize),
     Map(Point),
-    Exact(&'a RatPoint),
+    /// The end of ray `r`.
+    Ray(usize),
 }
 
 /// The sanity check's predicates: on `i128` homogeneous coordinates with
 /// every product checked, falling back to the GMP predicates of
 /// `wai_exact` and `crate::arrangement` when a value does not fit (so the
 /// answers are exact either way; a test compares the two paths).
+///
+/// The orientation of `(a, b, t)` for an edge `a → b` is asked of many
+/// points `t` (the convexity of each cell, the pairs of edges that may
+/// cross): it is the sign of `det(a; b; t) = (a × b) · t` for the
+/// homogeneous triples, so each edge's line `a × b` is built once
+/// ([`Geo::side`]).
 struct Geo<'a> {
     arr: &'a Arrangement,
+    /// By edge: the line `a × b` through its ends, if built without
+    /// overflow, and the bits of its largest coefficient.
+    lines: Vec<Option<([i128; 3], u32)>>,
+    /// By vertex: the bits of its largest homogeneous coordinate, if they
+    /// fit an `i128`.
+    bits: Vec<Option<u32>>,
+    /// By map edge: its line, as `lines`.
+    map_lines: Vec<Option<([i128; 3], u32)>>,
+    /// By ray: its end's homogeneous coordinates, if they fit.
+    ray_ends: Vec<Option<[i128; 3]>>,
+    /// By ray: the line from its anchor to its end, as `lines`.
+    ray_lines: Vec<Option<([i128; 3], u32)>>,
+}
+
+/// The line through two points as [`Geo`] keeps it: coefficients and the
+/// bits of the largest.
+fn line_with_bits(a: Option<[i128; 3]>, b: Option<[i128; 3]>) -> Option<([i128; 3], u32)> {
+    let l = line_through(a?, b?)?;
+    Some((l, l.iter().map(|&c| magnitude_bits(c)).max().unwrap_or(0)))
+}
+
+/// Bits of `|v|`: `|v| < 2^magnitude_bits(v)`.
+fn magnitude_bits(v: i128) -> u32 {
+    128 - v.unsigned_abs().leading_zeros()
+}
+
+/// The cross product `a × b` of two homogeneous triples: the line through
+/// the two points (`(a × b) · t = 0` iff t is on it). `None` on overflow.
+fn line_through(a: [i128; 3], b: [i128; 3]) -> Option<[i128; 3]> {
+    let minor = |i: usize, j: usize| a[i].checked_mul(b[j])?.checked_sub(a[j].checked_mul(b[i])?);
+    Some([minor(1, 2)?, minor(2, 0)?, minor(0, 1)?])
 }
 
 impl<'a> Geo<'a> {
-    fn small(&self, p: Pt<'_>) -> Option<[i128; 3]> {
+    fn new(arr: &'a Arrangement) -> Geo<'a> {
+        let bits: Vec<Option<u32>> = arr
+            .small
+            .iter()
+            .map(|t| t.map(|t| t.iter().map(|&c| magnitude_bits(c)).max().unwrap_or(0)))
+            .collect();
+        let lines = (0..arr.edges.len())
+            .map(|e| {
+                let (a, b) = (arr.half_edges[2 * e].origin, arr.dest(2 * e));
+                line_with_bits(arr.small[a], arr.small[b])
+            })
+            .collect();
+        let mv = arr.map.vertices();
+        let n = mv.len();
+        let map_pt = |i: usize| Some([mv[i % n].x, mv[i % n].y, 1]);
+        let map_lines = (0..n)
+            .map(|i| line_with_bits(map_pt(i), map_pt(i + 1)))
+            .collect();
+        let ray_ends: Vec<Option<[i128; 3]>> =
+            arr.rays.iter().map(|r| small_of(&r.end.point)).collect();
+        let ray_lines = arr
+            .rays
+            .iter()
+            .zip(&ray_ends)
+            .map(|(r, &t)| line_with_bits(map_pt(r.anchor), t))
+            .collect();
+        Geo {
+            arr,
+            lines,
+            bits,
+            map_lines,
+            ray_ends,
+            ray_lines,
+        }
+    }
+
+    /// The sign of `l · v` for the line `l` (coefficients below `2^lb`) and
+    /// vertex `v`, if the bound of [`Geo::side`] holds.
+    fn line_side(&self, l: Option<([i128; 3], u32)>, v: usize) -> Option<Orientation> {
+        let ((l, lb), pb) = (l?, self.bits[v]?);
+        if lb + pb + 2 > 127 {
+            return None;
+        }
+        let p = self.arr.small[v].expect("bits are of small points");
+        let s = l[0]
+            .wrapping_mul(p[0])
+            .wrapping_add(l[1].wrapping_mul(p[1]))
+            .wrapping_add(l[2].wrapping_mul(p[2]));
+        Some(match s.cmp(&0) {
+            Ordering::Greater => Orientation::CounterClockwise,
+            Ordering::Less => Orientation::Clockwise,
+            Ordering::Equal => Orientation::Collinear,
+        })
+    }
+
+    /// Whether vertex `v` lies on the closed segment from `a` to `b`, whose
+    /// line `a × b` is `l` when built: [`Geo::on_closed_segment`], with the
+    /// orientation read off the line.
+    fn on_segment(&self, l: Option<([i128; 3], u32)>, a: Pt, b: Pt, v: usize) -> bool {
+        match self.line_side(l, v) {
+            Some(Orientation::Collinear) => {}
+            Some(_) => return false,
+            None => return self.on_closed_segment(a, b, Pt::Vertex(v)),
+        }
+        if let (Some(sa), Some(sb), Some(p)) = (self.small(a), self.small(b), self.arr.small[v]) {
+            if let Some(s) = toward_dot_sign(p, sa, sb) {
+                return s != Ordering::Greater;
+            }
+        }
+        on_closed_segment(&self.exact(a), &self.exact(b), &self.exact(Pt::Vertex(v)))
+    }
+
+    /// The orientation of `(a, b, v)` for edge `e` from `a` to `b` and
+    /// vertex `v`: the sign of `(a × b) · v`.
+    ///
+    /// Implementation note: with the line's coefficients below `2^lb` and
+    /// the point's below `2^pb`, each of the three products is below
+    /// `2^(lb + pb)` and their sum below `2^(lb + pb + 2)`: when that is at
+    /// most `2^127` nothing overflows and the wrapping operations are
+    /// exact. Otherwise, as [`Geo::orientation`].
+    fn side(&self, e: usize, v: usize) -> Orientation {
+        if let Some(o) = self.line_side(self.lines[e], v) {
+            return o;
+        }
+        let (a, b) = (self.arr.half_edges[2 * e].origin, self.arr.dest(2 * e));
+        self.orientation(Pt::Vertex(a), Pt::Vertex(b), Pt::Vertex(v))
+    }
+
+    /// Whether vertex `w` lies on the closed segment from vertex `x` to
+    /// vertex `y`, the three being collinear: [`Geo::on_closed_segment`]
+    /// without its orientation test.
+    fn between(&self, x: usize, y: usize, w: usize) -> bool {
+        let s = &self.arr.small;
+        if let (Some(a), Some(b), Some(p)) = (s[x], s[y], s[w]) {
+            if let Some(s) = toward_dot_sign(p, a, b) {
+                return s != Ordering::Greater;
+            }
+        }
+        let pt = |v: usize| &self.arr.points()[v];
+        on_closed_segment(pt(x), pt(y), pt(w))
+    }
+
+    /// The orientation of `(origin(h), dest(h), v)` for half-edge `h`.
+    fn turn(&self, h: usize, v: usize) -> Orientation {
+        let o = self.side(h / 2, v);
+        if h.is_multiple_of(2) {
+            o
+        } else {
+            match o {
+                Orientation::CounterClockwise => Orientation::Clockwise,
+                Orientation::Clockwise => Orientation::CounterClockwise,
+                Orientation::Collinear => Orientation::Collinear,
+            }
+        }
+    }
+
+    fn small(&self, p: Pt) -> Option<[i128; 3]> {
         match p {
             Pt::Vertex(v) => self.arr.small[v],
             Pt::Map(q) => Some([q.x, q.y, 1]),
-            Pt::Exact(q) => small_of(q),
+            Pt::Ray(r) => self.ray_ends[r],
         }
     }
 
-    fn exact<'b>(&'b self, p: Pt<'b>) -> std::borrow::Cow<'b, RatPoint> {
+    fn exact<'b>(&'b self, p: Pt) -> std::borrow::Cow<'b, RatPoint> {
         match p {
             Pt::Vertex(v) => std::borrow::Cow::Borrowed(&self.arr.points()[v]),
             Pt::Map(q) => std::borrow::Cow::Owned(RatPoint::from(q)),
-            Pt::Exact(q) => std::borrow::Cow::Borrowed(q),
+            Pt::Ray(r) => std::borrow::Cow::Borrowed(&self.arr.rays[r].end.point),
         }
     }
 
-    fn equal(&self, a: Pt<'_>, b: Pt<'_>) -> bool {
+    fn equal(&self, a: Pt, b: Pt) -> bool {
         match (self.small(a), self.small(b)) {
             // Both in lowest terms with w > 0: equal points, equal triples.
             (Some(x), Some(y)) => x == y,
@@ -345,7 +505,7 @@ impl<'a> Geo<'a> {
         }
     }
 
-    fn orientation(&self, a: Pt<'_>, b: Pt<'_>, c: Pt<'_>) -> Orientation {
+    fn orientation(&self, a: Pt, b: Pt, c: Pt) -> Orientation {
         if let (Some(a), Some(b), Some(c)) = (self.small(a), self.small(b), self.small(c)) {
             if let Some(o) = orientation_small(a, b, c) {
                 return o;
@@ -355,7 +515,7 @@ impl<'a> Geo<'a> {
     }
 
     /// Whether `p` lies on the closed segment `ab`.
-    fn on_closed_segment(&self, a: Pt<'_>, b: Pt<'_>, p: Pt<'_>) -> bool {
+    fn on_closed_segment(&self, a: Pt, b: Pt, p: Pt) -> bool {
         if self.orientation(a, b, p) != Orientation::Collinear {
             return false;
         }
@@ -368,7 +528,7 @@ impl<'a> Geo<'a> {
     }
 
     /// The order of `a` and `b` along the direction `d`.
-    fn along(&self, d: Vector, a: Pt<'_>, b: Pt<'_>) -> Ordering {
+    fn along(&self, d: Vector, a: Pt, b: Pt) -> Ordering {
         if let (Some([ax, ay, aw]), Some([bx, by, bw])) = (self.small(a), self.small(b)) {
             // d·a − d·b has the sign of d·(a·bw − b·aw) (aw, bw > 0).
             let s = || -> Option<i128> {
@@ -474,5 +634,55 @@ mod tests {
             }
         }
         assert!(small > 1000 && declined > 100, "{small} {declined}");
+    }
+
+    /// The side of a vertex against an edge's line built once equals the
+    /// orientation of the three points, on arrangements small and scaled
+    /// past the `i128` lines.
+    #[test]
+    fn sides_of_edge_lines_agree_with_orientations() {
+        use crate::rays::visibility_rays;
+        use wai_exact::Point;
+        use wai_map::Map;
+        let (mut fast, mut all) = (0, 0);
+        for kind in wai_gen::RANDOM_KINDS {
+            for seed in 0..2 {
+                let map = wai_gen::random(kind.id, kind.min_n.max(8) + 2, seed).unwrap();
+                for shift in [0u32, 31, 50] {
+                    let ring = map
+                        .vertices()
+                        .iter()
+                        .map(|p| Point::new(p.x << shift, p.y << shift))
+                        .collect();
+                    let (map, _) = Map::from_ring(ring).unwrap();
+                    let arr = Arrangement::new(&map, &visibility_rays(&map));
+                    let geo = Geo::new(&arr);
+                    for e in 0..arr.edge_count() {
+                        let (a, b) = (arr.half_edges[2 * e].origin, arr.dest(2 * e));
+                        fast += usize::from(geo.lines[e].is_some());
+                        for v in 0..arr.vertex_count() {
+                            let want = geo.orientation(Pt::Vertex(a), Pt::Vertex(b), Pt::Vertex(v));
+                            assert_eq!(geo.side(e, v), want, "edge {e}, vertex {v}");
+                            all += 1;
+                        }
+                    }
+                    let mv = map.vertices();
+                    let n = mv.len();
+                    for v in 0..arr.vertex_count() {
+                        for i in 0..n {
+                            let (p, q) = (Pt::Map(mv[i]), Pt::Map(mv[(i + 1) % n]));
+                            let want = geo.on_closed_segment(p, q, Pt::Vertex(v));
+                            assert_eq!(geo.on_segment(geo.map_lines[i], p, q, v), want);
+                        }
+                        for (r, ray) in arr.rays.iter().enumerate() {
+                            let (s, t) = (Pt::Map(mv[ray.anchor]), Pt::Ray(r));
+                            let want = geo.on_closed_segment(s, t, Pt::Vertex(v));
+                            assert_eq!(geo.on_segment(geo.ray_lines[r], s, t, v), want);
+                        }
+                    }
+                }
+            }
+        }
+        assert!(fast > 100 && all > 10_000, "{fast} lines, {all} sides");
     }
 }

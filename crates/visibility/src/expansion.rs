@@ -15,7 +15,7 @@ use crate::skeleton::Skeleton;
 use crate::triangulation::{Across, Triangulation};
 use rug::Integer;
 use std::cmp::Ordering;
-use wai_exact::{BigVector, Point, RatPoint, Vector};
+use wai_exact::{BigVector, Point, RatPoint};
 use wai_map::Map;
 
 /// A map prepared for many visibility queries.
@@ -28,92 +28,120 @@ pub struct VisibilityIndex<'m> {
     coord_bits: u32,
     /// By map vertex: the triangles with a corner there.
     fans: Vec<Vec<u32>>,
+    /// By map vertex: reflex in the map.
+    pub(crate) reflex: Vec<bool>,
 }
 
 /// Directions from p to map vertices, compared exactly.
 ///
 /// Implementation note: with `p = (X, Y) / W` the direction to vertex `v`
-/// is `W·v − (X, Y)`. If `|W|·|v| < 2^61` and `|X|, |Y| < 2^61`, every
-/// direction is below `2^62` per coordinate, a cross product of two
-/// directions is below `2 · 2^124 = 2^125` and fits an `i128`: the fast
-/// path. Otherwise the same formula runs on GMP integers.
-enum Frame<'a> {
-    Fast {
-        x: i128,
-        y: i128,
-        w: i128,
-        v: &'a [Point],
-    },
-    Exact {
-        x: Integer,
-        y: Integer,
-        w: Integer,
-        v: &'a [Point],
-    },
+/// is `W·v − (X, Y)`. If `|W|·|v| < 2^61` and `|X|, |Y| < 2^61`
+/// ([`fits_fast`]), `W`, `X`, `Y` and every map coordinate fit an `i64`,
+/// `W·v` is one widening `i64` product, and every direction is below
+/// `2^62` per coordinate: it fits an `i64` too ([`Fast`]). A cross product
+/// of two such directions is a difference of two widening products below
+/// `2^124`, below `2^125` in all, and fits an `i128`. Otherwise the same
+/// formula runs on GMP integers ([`Exact`]).
+trait Frame {
+    /// What a cone carries for each of its two bounding directions.
+    type Dir: Copy;
+    /// The direction from p to map vertex `k`.
+    fn dir(&self, k: usize) -> Self::Dir;
+    /// The sign of `a × b`: `Greater` if `b` is counter-clockwise from `a`
+    /// as seen from p.
+    fn turn(&self, a: Self::Dir, b: Self::Dir) -> Ordering;
 }
 
-impl<'a> Frame<'a> {
-    fn new(p: &RatPoint, v: &'a [Point], coord_bits: u32) -> Frame<'a> {
-        if fits_fast(p, coord_bits) {
-            Frame::Fast {
-                x: p.hx().to_i128().expect("fits"),
-                y: p.hy().to_i128().expect("fits"),
-                w: p.hw().to_i128().expect("fits"),
-                v,
-            }
-        } else {
-            Frame::Exact {
-                x: p.hx().clone(),
-                y: p.hy().clone(),
-                w: p.hw().clone(),
-                v,
-            }
-        }
-    }
+/// The `i64` frame of [`Frame`]'s note: directions are computed once per
+/// cone bound and carried along, a turn is two widening products.
+struct Fast<'a> {
+    x: i64,
+    y: i64,
+    w: i64,
+    v: &'a [Point],
+}
 
-    /// The sign of `dir(i) × dir(j)`: `Greater` if vertex j is
-    /// counter-clockwise from vertex i as seen from p. Equivalently the
-    /// orientation of `(v_i, v_j, p)`.
+impl Frame for Fast<'_> {
+    type Dir = (i64, i64);
+
     #[inline]
-    fn turn(&self, i: usize, j: usize) -> Ordering {
-        match self {
-            Frame::Fast { x, y, w, v } => {
-                // Directions below 2^62 (the note above): the differences
-                // fit, and the cross sign takes its i128 path. Nothing
-                // wraps below the bound; the wrapping operations spare
-                // fuzzing builds' redundant overflow checks.
-                let c = |a: i128, b: i128| w.wrapping_mul(a).wrapping_sub(b);
-                let d = |k: usize| Vector::new(c(v[k].x, *x), c(v[k].y, *y));
-                d(i).cross_sign(d(j))
-            }
-            Frame::Exact { x, y, w, v } => {
-                let d = |k: usize| {
-                    BigVector::new(Integer::from(w * v[k].x) - x, Integer::from(w * v[k].y) - y)
-                };
-                d(i).cross_sign(&d(j))
-            }
-        }
+    fn dir(&self, k: usize) -> (i64, i64) {
+        // |W·v| < 2^61 and |X| < 2^61 ([`Frame`]'s note): the map
+        // coordinate fits an `i64` and the difference is below 2^62.
+        let c =
+            |a: i128, b: i64| (i128::from(self.w) * i128::from(a as i64) - i128::from(b)) as i64;
+        (c(self.v[k].x, self.x), c(self.v[k].y, self.y))
+    }
+
+    #[inline]
+    fn turn(&self, a: (i64, i64), b: (i64, i64)) -> Ordering {
+        // Each product below 2^124 ([`Frame`]'s note): nothing wraps.
+        let p = i128::from(a.0) * i128::from(b.1);
+        let q = i128::from(a.1) * i128::from(b.0);
+        p.cmp(&q)
     }
 }
 
-/// A step of the expansion, with its cone: open between the directions of
-/// vertices `lo` and `hi`, counter-clockwise.
-enum Step {
-    /// Leave triangle `tri` through its side `side` (corner `side` to
-    /// corner `side + 1`).
-    Leave {
-        tri: u32,
-        side: u8,
-        lo: u32,
-        hi: u32,
-    },
-    /// Enter triangle `tri` through its side `side`.
-    Enter {
-        tri: u32,
-        side: u8,
-        lo: u32,
-        hi: u32,
-    },
+/// The GMP frame of [`Frame`]'s note: a cone carries its vertices, whose
+/// directions are built again at each turn.
+struct Exact<'a> {
+    x: Integer,
+    y: Integer,
+    w: Integer,
+    v: &'a [Point],
+}
+
+impl Frame for Exact<'_> {
+    type Dir = u32;
+
+    #[inline]
+    fn dir(&self, k: usize) -> u32 {
+        k as u32
+    }
+
+    fn turn(&self, i: u32, j: u32) -> Ordering {
+        let (w, x, y, v) = (&self.w, &self.x, &self.y, self.v);
+        let d = |k: u32| {
+            let k = k as usize;
+            BigVector::new(Integer::from(w * v[k].x) - x, Integer::from(w * v[k].y) - y)
+        };
+        d(i).cross_sign(&d(j))
+    }
+}
+
+/// The frame of viewpoint `p` (`None`: the GMP one).
+fn fast_frame<'a>(p: &RatPoint, v: &'a [Point], coord_bits: u32) -> Option<Fast<'a>> {
+    if !fits_fast(p, coord_bits) {
+        return None;
+    }
+    Some(Fast {
+        x: p.hx().to_i64()?,
+        y: p.hy().to_i64()?,
+        w: p.hw().to_i64()?,
+        v,
+    })
+}
+
+fn exact_frame<'a>(p: &RatPoint, v: &'a [Point]) -> Exact<'a> {
+    Exact {
+        x: p.hx().clone(),
+        y: p.hy().clone(),
+        w: p.hw().clone(),
+        v,
+    }
+}
+
+/// A step of the expansion: leave triangle `tri` through its side `side`
+/// (corner `side` to corner `side + 1`) with the cone open between the
+/// directions of vertices `lo` and `hi` (`dlo`, `dhi`: as the frame
+/// carries them), counter-clockwise.
+struct Step<D> {
+    tri: u32,
+    side: u8,
+    lo: u32,
+    hi: u32,
+    dlo: D,
+    dhi: D,
 }
 
 impl<'m> VisibilityIndex<'m> {
@@ -139,6 +167,7 @@ impl<'m> VisibilityIndex<'m> {
             grid,
             coord_bits,
             fans,
+            reflex: (0..map.n()).map(|i| map.is_reflex(i)).collect(),
         }
     }
 
@@ -177,7 +206,7 @@ impl<'m> VisibilityIndex<'m> {
     /// equals `MapSkeleton::of(&Skeleton::of(map, &V_p)?)` for every p.
     pub fn skeleton_at(&self, p: &RatPoint) -> Result<MapSkeleton, SkeletonAtError> {
         let leaves = self.leaves_at(p)?;
-        if let Some(sk) = from_leaves(self.map, p, self.coord_bits, &leaves) {
+        if let Some(sk) = from_leaves(self.map, &self.reflex, p, self.coord_bits, &leaves) {
             return Ok(sk?);
         }
         let vp = assemble(self.map, p, self.coord_bits, &leaves);
@@ -189,23 +218,35 @@ impl<'m> VisibilityIndex<'m> {
     /// edge on it.
     pub(crate) fn leaves_at(&self, p: &RatPoint) -> Result<Vec<(usize, usize)>, VisibilityError> {
         let v = self.map.vertices();
-        let frame = Frame::new(p, v, self.coord_bits);
+        match fast_frame(p, v, self.coord_bits) {
+            Some(frame) => self.leaves_in(&frame, p),
+            None => self.leaves_in(&exact_frame(p, v), p),
+        }
+    }
+
+    /// [`VisibilityIndex::leaves_at`] in `frame`, the frame of `p`.
+    fn leaves_in<F: Frame>(
+        &self,
+        frame: &F,
+        p: &RatPoint,
+    ) -> Result<Vec<(usize, usize)>, VisibilityError> {
         let tri = &self.triangulation;
         // Locate p: a triangle with p in its closed interior.
         let mut start = None;
         'search: for &t in self.grid.candidates(p) {
             let c = tri.triangle(t as usize);
+            let d = c.map(|k| frame.dir(k));
             let mut s = [Ordering::Equal; 3];
             for k in 0..3 {
-                s[k] = frame.turn(c[k], c[(k + 1) % 3]);
+                s[k] = frame.turn(d[k], d[(k + 1) % 3]);
                 if s[k] == Ordering::Less {
                     continue 'search;
                 }
             }
-            start = Some((t as usize, s));
+            start = Some((t as usize, s, d));
             break;
         }
-        let Some((t0, signs)) = start else {
+        let Some((t0, signs, d0)) = start else {
             return Err(VisibilityError::Outside(p.clone()));
         };
         let c0 = tri.triangle(t0);
@@ -218,16 +259,16 @@ impl<'m> VisibilityIndex<'m> {
         }
         // Depth first, counter-clockwise: the stack holds later cones below
         // earlier ones, so leaves come out in angular order.
-        let stack: Vec<Step> = (0..3)
-            .rev()
-            .map(|k| Step::Leave {
-                tri: t0 as u32,
-                side: k as u8,
-                lo: c0[k] as u32,
-                hi: c0[(k + 1) % 3] as u32,
-            })
-            .collect();
-        Ok(self.expand(&frame, stack))
+        let mut stack: Vec<Step<F::Dir>> = Vec::with_capacity(16);
+        stack.extend((0..3).rev().map(|k| Step {
+            tri: t0 as u32,
+            side: k as u8,
+            lo: c0[k] as u32,
+            hi: c0[(k + 1) % 3] as u32,
+            dlo: d0[k],
+            dhi: d0[(k + 1) % 3],
+        }));
+        Ok(self.expand(frame, stack))
     }
 
     /// The view from map vertex `x` (its visibility polygon V_x, as the
@@ -243,12 +284,17 @@ impl<'m> VisibilityIndex<'m> {
     /// what a viewpoint sees just past the ray through `lo` (see
     /// `wai_cells`' incremental skeletons, sec. 3.9.2).
     pub fn vertex_view(&self, x: usize) -> Vec<(usize, usize)> {
+        let v = self.map.vertices();
+        let p = RatPoint::from(v[x]);
+        match fast_frame(&p, v, self.coord_bits) {
+            Some(frame) => self.vertex_view_in(&frame, x),
+            None => self.vertex_view_in(&exact_frame(&p, v), x),
+        }
+    }
+
+    /// [`VisibilityIndex::vertex_view`] in `frame`, the frame of vertex `x`.
+    fn vertex_view_in<F: Frame>(&self, frame: &F, x: usize) -> Vec<(usize, usize)> {
         let n = self.map.n();
-        let frame = Frame::new(
-            &RatPoint::from(self.map.vertices()[x]),
-            self.map.vertices(),
-            self.coord_bits,
-        );
         let tri = &self.triangulation;
         // The fan at x in counter-clockwise order: each triangle's cone runs
         // from the corner after x to the one before, and the next triangle's
@@ -271,17 +317,19 @@ impl<'m> VisibilityIndex<'m> {
             }
         }
         debug_assert_eq!(ordered.len(), fan.len(), "the fan at {x} is one chain");
-        let stack: Vec<Step> = ordered
+        let stack: Vec<Step<F::Dir>> = ordered
             .iter()
             .rev()
-            .map(|&(t, k, lo, hi)| Step::Leave {
+            .map(|&(t, k, lo, hi)| Step {
                 tri: t,
                 side: ((k + 1) % 3) as u8,
                 lo: lo as u32,
                 hi: hi as u32,
+                dlo: frame.dir(lo),
+                dhi: frame.dir(hi),
             })
             .collect();
-        let mut leaves = self.expand(&frame, stack);
+        let mut leaves = self.expand(frame, stack);
         leaves.dedup();
         leaves
     }
@@ -289,78 +337,127 @@ impl<'m> VisibilityIndex<'m> {
     /// Push the cones of `stack` through the triangulation: the leaves
     /// `(lo, e)`, in the order popped, say that the cone starting at the
     /// direction of vertex `lo` reaches map edge `e`.
-    fn expand(&self, frame: &Frame, mut stack: Vec<Step>) -> Vec<(usize, usize)> {
+    ///
+    /// Depth first: a cone that enters a triangle goes on through one side
+    /// or splits at the third corner, its first part followed at once and
+    /// the second pushed, so the leaves come out counter-clockwise.
+    fn expand<F: Frame>(&self, frame: &F, mut stack: Vec<Step<F::Dir>>) -> Vec<(usize, usize)> {
+        const NEXT: [usize; 3] = [1, 2, 0];
+        const AFTER_NEXT: [usize; 3] = [2, 0, 1];
         let tri = &self.triangulation;
-        let mut leaves: Vec<(usize, usize)> = Vec::new();
-        while let Some(step) = stack.pop() {
-            match step {
-                Step::Leave {
-                    tri: t,
-                    side: k,
-                    lo,
-                    hi,
-                } => match tri.across(t as usize, k as usize) {
-                    Across::MapEdge(e) => leaves.push((lo as usize, e as usize)),
-                    Across::Triangle(u) => {
-                        let c = tri.triangle(t as usize);
-                        let (a, b) = (c[k as usize], c[(k as usize + 1) % 3]);
-                        let cu = tri.triangle(u as usize);
-                        let j = (0..3)
-                            .find(|&j| cu[j] == b && cu[(j + 1) % 3] == a)
-                            .expect("symmetric adjacency");
-                        stack.push(Step::Enter {
-                            tri: u,
-                            side: j as u8,
-                            lo,
-                            hi,
-                        });
+        let mut leaves: Vec<(usize, usize)> = Vec::with_capacity(self.map.n());
+        while let Some(mut step) = stack.pop() {
+            loop {
+                let (t, k) = (step.tri as usize, step.side as usize);
+                let u = match tri.across(t, k) {
+                    Across::MapEdge(e) => {
+                        leaves.push((step.lo as usize, e as usize));
+                        break;
                     }
-                },
-                Step::Enter {
-                    tri: t,
-                    side: k,
-                    lo,
-                    hi,
-                } => {
-                    // Entered through side k: corner k is the hi end, corner
-                    // k + 1 the lo end, and the third corner may split the cone.
-                    let k = k as usize;
-                    let third = tri.triangle(t as usize)[(k + 2) % 3];
-                    let after_lo = frame.turn(lo as usize, third) == Ordering::Greater;
-                    let before_hi = frame.turn(third, hi as usize) == Ordering::Greater;
-                    let (side_lo, side_hi) = (((k + 1) % 3) as u8, ((k + 2) % 3) as u8);
-                    if after_lo && before_hi {
-                        let c = third as u32;
-                        stack.push(Step::Leave {
-                            tri: t,
-                            side: side_hi,
-                            lo: c,
-                            hi,
-                        });
-                        stack.push(Step::Leave {
-                            tri: t,
-                            side: side_lo,
-                            lo,
-                            hi: c,
-                        });
-                    } else if after_lo {
-                        stack.push(Step::Leave {
-                            tri: t,
-                            side: side_lo,
-                            lo,
-                            hi,
-                        });
-                    } else {
-                        stack.push(Step::Leave {
-                            tri: t,
-                            side: side_hi,
-                            lo,
-                            hi,
-                        });
-                    }
+                    Across::Triangle(u) => u,
+                };
+                // Entered u through its side j: corner j is the hi end,
+                // corner j + 1 the lo end, and the third corner may split
+                // the cone.
+                let j = tri.entry(t, k);
+                let third = tri.triangle(u as usize)[AFTER_NEXT[j]];
+                let dthird = frame.dir(third);
+                let after_lo = frame.turn(step.dlo, dthird) == Ordering::Greater;
+                let before_hi = frame.turn(dthird, step.dhi) == Ordering::Greater;
+                let (side_lo, side_hi) = (NEXT[j] as u8, AFTER_NEXT[j] as u8);
+                step.tri = u;
+                if after_lo && before_hi {
+                    let c = third as u32;
+                    stack.push(Step {
+                        tri: u,
+                        side: side_hi,
+                        lo: c,
+                        hi: step.hi,
+                        dlo: dthird,
+                        dhi: step.dhi,
+                    });
+                    step.side = side_lo;
+                    step.hi = c;
+                    step.dhi = dthird;
+                } else if after_lo {
+                    step.side = side_lo;
+                } else {
+                    step.side = side_hi;
                 }
             }
         }
         leaves
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use wai_exact::{locate_rat, Containment};
+
+    /// Points inside `map`: vertices' midpoints and a rational grid.
+    fn points(map: &Map) -> Vec<RatPoint> {
+        let v = map.vertices();
+        let mut out: Vec<RatPoint> = Vec::new();
+        for i in 0..v.len() {
+            for j in i + 2..v.len() {
+                out.push(RatPoint::midpoint(&v[i].into(), &v[j].into()));
+            }
+        }
+        let (lo, hi) = map.bounding_box();
+        for i in 1..7i128 {
+            for j in 1..7i128 {
+                let x = Integer::from(lo.x) * 7 + (hi.x - lo.x) * i;
+                let y = Integer::from(lo.y) * 7 + (hi.y - lo.y) * j;
+                out.push(RatPoint::new(x * 3 + 1, y * 3 + 2, Integer::from(21)).unwrap());
+            }
+        }
+        out.retain(|q| locate_rat(v, q) == Containment::Inside);
+        out
+    }
+
+    /// The `i64` frame and the GMP frame give the same leaves and the
+    /// same vertex views, on maps small and scaled up to the bound of
+    /// [`fits_fast`] (where the fast frame still answers) and beyond.
+    #[test]
+    fn the_fast_frame_equals_the_exact_frame() {
+        let mut maps = Vec::new();
+        for kind in wai_gen::RANDOM_KINDS {
+            for seed in 0..3 {
+                maps.push(wai_gen::random(kind.id, kind.min_n.max(8) + 4, seed).unwrap());
+            }
+        }
+        maps.extend(wai_gen::exhaustive_polyomino_maps(
+            4,
+            wai_gen::Symmetry::Free,
+        ));
+        let mut fast = 0;
+        for map in &maps {
+            for shift in [0u32, 20, 40, 55] {
+                let ring = map
+                    .vertices()
+                    .iter()
+                    .map(|p| Point::new(p.x << shift, p.y << shift))
+                    .collect();
+                let (map, _) = Map::from_ring(ring).unwrap();
+                let index = VisibilityIndex::new(&map);
+                let v = map.vertices();
+                for p in points(&map) {
+                    let want = index.leaves_in(&exact_frame(&p, v), &p);
+                    if let Some(frame) = fast_frame(&p, v, index.coord_bits) {
+                        fast += 1;
+                        assert_eq!(index.leaves_in(&frame, &p), want, "p = {p}");
+                    }
+                }
+                for x in 0..map.n() {
+                    let p = RatPoint::from(v[x]);
+                    let want = index.vertex_view_in(&exact_frame(&p, v), x);
+                    if let Some(frame) = fast_frame(&p, v, index.coord_bits) {
+                        assert_eq!(index.vertex_view_in(&frame, x), want, "vertex {x}");
+                    }
+                }
+            }
+        }
+        assert!(fast > 1000, "{fast} points on the fast frame");
     }
 }

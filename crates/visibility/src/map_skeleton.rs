@@ -125,22 +125,26 @@ impl MapSkeleton {
                 .zip(&key.labels)
                 .all(|(&(e, artificial), label)| match label {
                     None => !artificial,
-                    Some(l) => artificial && on_label(l, rel(e)) && on_label(l, rel((e + 1) % n)),
+                    Some(l) => artificial && on_label(l, rel(e), rel((e + 1) % n)),
                 })
     }
 }
 
-/// Whether the point `(x, y)` (relative to the origin) lies on `l`:
+/// Whether the points `s` and `t` (relative to the origin) lie on `l`:
 /// `a·x + b·y = c`, in `i128` when the products cannot overflow.
-fn on_label(l: &LineLabel, (x, y): (i128, i128)) -> bool {
+fn on_label(l: &LineLabel, s: (i128, i128), t: (i128, i128)) -> bool {
     let small = |c: &Integer| c.to_i128().filter(|c| c.unsigned_abs() < 1 << 62);
     let fits = |c: i128| c.unsigned_abs() < 1 << 62;
     match (small(&l.a), small(&l.b), small(&l.c)) {
-        (Some(a), Some(b), Some(c)) if fits(x) && fits(y) => {
-            // |a·x|, |b·y| < 2^124 and |c| < 2^62: the sum fits.
-            a * x + b * y == c
-        }
-        _ => l.contains(x, y),
+        (Some(a), Some(b), Some(c)) => [s, t].into_iter().all(|(x, y)| {
+            if fits(x) && fits(y) {
+                // |a·x|, |b·y| < 2^124 and |c| < 2^62: the sum fits.
+                a * x + b * y == c
+            } else {
+                l.contains(x, y)
+            }
+        }),
+        _ => l.contains(s.0, s.1) && l.contains(t.0, t.1),
     }
 }
 
@@ -179,8 +183,11 @@ enum Vertex {
 /// it lies between its own two map edges (m − 1 and m) and is reflex in the
 /// map. Other configurations fall back. Tests compare every skeleton with
 /// [`Skeleton::of`] on V_p.
+///
+/// `reflex`: by map vertex, whether it is reflex in the map.
 pub(crate) fn from_leaves(
     map: &Map,
+    reflex: &[bool],
     p: &RatPoint,
     coord_bits: u32,
     leaves: &[(usize, usize)],
@@ -188,12 +195,14 @@ pub(crate) fn from_leaves(
     if !fits_fast(p, coord_bits) {
         return None;
     }
-    let (x, y, w) = (p.hx().to_i128()?, p.hy().to_i128()?, p.hw().to_i128()?);
+    let (x, y, w) = (p.hx().to_i64()?, p.hy().to_i64()?, p.hw().to_i64()?);
     let v = map.vertices();
     let n = map.n();
-    // Within the bound of `fits_fast`: directions below 2^62, an edge
-    // vector below 2^63, cross products below 2^126.
-    let rel = |i: usize| Vector::new(w * v[i].x - x, w * v[i].y - y);
+    // Within the bound of `fits_fast`: W, X, Y and the map coordinates fit
+    // an `i64` (|W·v| < 2^61), W·v is a widening product, directions are
+    // below 2^62, an edge vector below 2^63, cross products below 2^126.
+    let c = |a: i128, b: i64| i128::from(w) * i128::from(a as i64) - i128::from(b);
+    let rel = |i: usize| Vector::new(c(v[i].x, x), c(v[i].y, y));
     // Whether the line of map edge `e` meets the ray from p through vertex
     // `d` beyond d (t > 1), before it (`Less`) or at it.
     let beyond = |d: usize, e: usize| -> Option<Ordering> {
@@ -248,8 +257,15 @@ pub(crate) fn from_leaves(
     if kept.is_empty() {
         return None;
     }
-    let mut reflex = Vec::new();
-    for &(i, mv) in &kept {
+    // The origin: the leftmost, then lowest, of the reflex ones, else of
+    // all (positions in `kept`; vertices are distinct points, so the
+    // first minimum is the only one).
+    let at = |mv: usize| {
+        let q: Point = v[mv];
+        (q.x, q.y)
+    };
+    let (mut best_reflex, mut best): (Option<usize>, Option<usize>) = (None, None);
+    for (s, &(i, mv)) in kept.iter().enumerate() {
         let (into, out) = (boundary[(i + m - 1) % m].1, boundary[i].1);
         let is_reflex = match (into, out) {
             (Along::Ray, _) | (_, Along::Ray) => true,
@@ -257,20 +273,18 @@ pub(crate) fn from_leaves(
                 if e1 != (mv + n - 1) % n || e2 != mv {
                     return None;
                 }
-                map.is_reflex(mv)
+                reflex[mv]
             }
         };
-        if is_reflex {
-            reflex.push((i, mv));
+        let lower = |b: Option<usize>| b.is_none_or(|b| at(mv) < at(kept[b].1));
+        if is_reflex && lower(best_reflex) {
+            best_reflex = Some(s);
+        }
+        if lower(best) {
+            best = Some(s);
         }
     }
-    let pool = if reflex.is_empty() { &kept } else { &reflex };
-    let at = |mv: usize| {
-        let q: Point = v[mv];
-        (q.x, q.y)
-    };
-    let &(origin_at, _) = pool.iter().min_by_key(|&&(_, mv)| at(mv))?;
-    let start = kept.iter().position(|&(i, _)| i == origin_at)?;
+    let start = best_reflex.or(best)?;
     let mut kept = kept;
     kept.rotate_left(start);
     let k = kept.len();
@@ -353,7 +367,8 @@ mod tests {
                 let vp = index.visibility_polygon(&p).unwrap();
                 let want = Skeleton::of(map, &vp).map(|s| MapSkeleton::of(&s));
                 all += 1;
-                if let Some(got) = from_leaves(map, &p, index.coord_bits(), &leaves) {
+                if let Some(got) = from_leaves(map, &index.reflex, &p, index.coord_bits(), &leaves)
+                {
                     fast += 1;
                     assert_eq!(got, want, "p = {p} in {:?}", map.vertices());
                 }

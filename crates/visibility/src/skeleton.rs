@@ -20,10 +20,44 @@ pub struct LineLabel {
 impl LineLabel {
     /// The label of the line through `p` and `q` (distinct), relative to `origin`.
     pub fn through(p: Point, q: Point, origin: Point) -> LineLabel {
+        LineLabel::through_small(p, q, origin)
+            .unwrap_or_else(|| LineLabel::through_gmp(p, q, origin))
+    }
+
+    /// [`LineLabel::through`] in GMP integers, for any coordinates.
+    fn through_gmp(p: Point, q: Point, origin: Point) -> LineLabel {
         let a = Integer::from(q.y) - p.y;
         let b = Integer::from(p.x) - q.x;
         let c = Integer::from(&a * (p.x - origin.x)) + Integer::from(&b * (p.y - origin.y));
         LineLabel::normalized(a, b, c)
+    }
+
+    /// [`LineLabel::through`] in `i128`, when every coordinate is below
+    /// `2^61` in magnitude: then a, b and the offsets from the origin are
+    /// below `2^62`, each product below `2^124` and c below `2^125`; the
+    /// gcd divides exactly, so the label is the same as in GMP.
+    fn through_small(p: Point, q: Point, origin: Point) -> Option<LineLabel> {
+        let fits = |c: i128| c.unsigned_abs() < 1 << 61;
+        if ![p.x, p.y, q.x, q.y, origin.x, origin.y]
+            .into_iter()
+            .all(fits)
+        {
+            return None;
+        }
+        let (a, b) = (q.y - p.y, p.x - q.x);
+        let c = a * (p.x - origin.x) + b * (p.y - origin.y);
+        let g = wai_exact::gcd_u128(
+            wai_exact::gcd_u128(a.unsigned_abs(), b.unsigned_abs()),
+            c.unsigned_abs(),
+        );
+        // g ≥ 1 (a, b not both 0) and g ≤ max(|a|, |b|) < 2^62.
+        let g = g as i128;
+        let s = if a < 0 || (a == 0 && b < 0) { -1 } else { 1 };
+        Some(LineLabel {
+            a: Integer::from(s * (a / g)),
+            b: Integer::from(s * (b / g)),
+            c: Integer::from(s * (c / g)),
+        })
     }
 
     /// The label of the line `a·x + b·y = c` (a, b not both 0): divided by
@@ -292,4 +326,53 @@ fn ray_meets_line(p: &RatPoint, u: (i128, i128), l: &LineLabel) -> Option<RatPoi
     let px = Integer::from(x * &den) + Integer::from(&num * &dx);
     let py = Integer::from(y * &den) + Integer::from(&num * &dy);
     RatPoint::new(px, py, Integer::from(w * &den))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The `i128` labels equal the GMP ones: every line through two points
+    /// of a small grid, and random points up to the `2^61` bound.
+    #[test]
+    fn small_labels_equal_gmp_labels() {
+        let grid: Vec<Point> = (-3..=3)
+            .flat_map(|x| (-3..=3).map(move |y| Point::new(x, y)))
+            .collect();
+        let o = Point::new(1, -2);
+        for &p in &grid {
+            for &q in grid.iter().filter(|&&q| q != p) {
+                let small = LineLabel::through_small(p, q, o).expect("small");
+                assert_eq!(small, LineLabel::through_gmp(p, q, o), "{p} {q}");
+            }
+        }
+        let mut rng = 0x9e37_79b9_7f4a_7c15u64;
+        let mut next = |bits: u32| {
+            rng ^= rng << 13;
+            rng ^= rng >> 7;
+            rng ^= rng << 17;
+            let v = (rng >> (64 - bits)) as i128;
+            if rng & 1 == 0 {
+                v
+            } else {
+                -v
+            }
+        };
+        let mut checked = 0;
+        for bits in [3u32, 20, 40, 60, 61, 62] {
+            for _ in 0..500 {
+                let mut pt = || Point::new(next(bits), next(bits));
+                let (p, q, o) = (pt(), pt(), pt());
+                if p == q {
+                    continue;
+                }
+                if let Some(small) = LineLabel::through_small(p, q, o) {
+                    assert_eq!(small, LineLabel::through_gmp(p, q, o), "{p} {q} {o}");
+                    checked += 1;
+                }
+                assert_eq!(LineLabel::through(p, q, o), LineLabel::through_gmp(p, q, o));
+            }
+        }
+        assert!(checked >= 2000, "{checked}");
+    }
 }

@@ -23,6 +23,9 @@ pub enum Across {
 pub struct Triangulation {
     pub(crate) triangles: Vec<[u32; 3]>,
     pub(crate) across: Vec<[Across; 3]>,
+    /// By triangle and side with a triangle across: that triangle's side
+    /// back (`entry`).
+    entries: Vec<[u8; 3]>,
 }
 
 impl Triangulation {
@@ -126,7 +129,34 @@ impl Triangulation {
         }
         triangles.push([p as u32, c as u32, q as u32]);
         across.push(last);
-        Triangulation { triangles, across }
+        let entries = (0..triangles.len())
+            .map(|t| {
+                let c = triangles[t];
+                let mut back = [0u8; 3];
+                for (k, b) in back.iter_mut().enumerate() {
+                    if let Across::Triangle(u) = across[t][k] {
+                        let (a, d) = (c[k], c[(k + 1) % 3]);
+                        let cu = triangles[u as usize];
+                        let j = (0..3)
+                            .find(|&j| cu[j] == d && cu[(j + 1) % 3] == a)
+                            .expect("symmetric adjacency");
+                        *b = j as u8;
+                    }
+                }
+                back
+            })
+            .collect();
+        Triangulation {
+            triangles,
+            across,
+            entries,
+        }
+    }
+
+    /// For side `side` of triangle `t` with triangle u across it, the side
+    /// of u that is the same segment (run the other way).
+    pub(crate) fn entry(&self, t: usize, side: usize) -> usize {
+        self.entries[t][side] as usize
     }
 
     pub fn len(&self) -> usize {
