@@ -188,18 +188,22 @@ pub(crate) fn meeting_pairs<T: Send>(
 ) -> Vec<T> {
     let mut order: Vec<usize> = (0..boxes.len()).collect();
     order.sort_by_key(|&i| boxes[i][0]);
-    let order = &order;
+    // The boxes in that order, side by side: the scans read them in turn.
+    let sorted: Vec<[i128; 4]> = order.iter().map(|&i| boxes[i]).collect();
+    let (order, sorted) = (&order, &sorted);
     let f = &f;
     order
         .par_iter()
         .enumerate()
         .with_min_len(16)
         .flat_map_iter(|(k, &i)| {
-            order[k + 1..]
+            let b = &sorted[k];
+            sorted[k + 1..]
                 .iter()
-                .take_while(move |&&j| boxes[j][0] <= boxes[i][2])
-                .filter(move |&&j| boxes_meet(&boxes[i], &boxes[j]))
-                .filter_map(move |&j| f(i, j))
+                .zip(&order[k + 1..])
+                .take_while(move |(c, _)| c[0] <= b[2])
+                .filter(move |(c, _)| boxes_meet(b, c))
+                .filter_map(move |(_, &j)| f(i, j))
         })
         .collect()
 }
@@ -209,6 +213,10 @@ pub(crate) fn meeting_pairs<T: Send>(
 pub(crate) fn bbox<'a>(pts: impl IntoIterator<Item = &'a RatPoint>) -> [i128; 4] {
     let mut b = [i128::MAX, i128::MAX, i128::MIN, i128::MIN];
     for p in pts {
+        if let Some([x0, y0, x1, y1]) = small_box(p) {
+            b = [b[0].min(x0), b[1].min(y0), b[2].max(x1), b[3].max(y1)];
+            continue;
+        }
         let fl = |c: &Integer| {
             let (q, _) = c.clone().div_rem_floor(p.hw().clone());
             q.to_i128().expect("map coordinates fit an i128")
@@ -223,6 +231,24 @@ pub(crate) fn bbox<'a>(pts: impl IntoIterator<Item = &'a RatPoint>) -> [i128; 4]
         b[3] = b[3].max(ce(p.hy()));
     }
     b
+}
+
+/// The integer box of one point whose homogeneous coordinates fit an
+/// `i128` (w > 0): floors by `div_euclid`, which rounds down for a
+/// positive divisor, and ceilings as minus the floor of the negation.
+/// `None` if they do not fit (or a negation would overflow).
+fn small_box(p: &RatPoint) -> Option<[i128; 4]> {
+    let [x, y, w] = small_of(p)?;
+    let (nx, ny) = (x.checked_neg()?, y.checked_neg()?);
+    if w == 1 {
+        return Some([x, y, x, y]);
+    }
+    Some([
+        x.div_euclid(w),
+        y.div_euclid(w),
+        -nx.div_euclid(w),
+        -ny.div_euclid(w),
+    ])
 }
 
 pub(crate) fn boxes_meet(a: &[i128; 4], b: &[i128; 4]) -> bool {
@@ -1036,4 +1062,47 @@ pub(crate) fn on_closed_segment(a: &RatPoint, b: &RatPoint, p: &RatPoint) -> boo
     let (ux, uy) = d(p, a);
     let (vx, vy) = d(p, b);
     ux * vx + uy * vy <= 0
+}
+
+#[cfg(test)]
+mod tests {
+    use super::{bbox, small_box};
+    use rug::Integer;
+    use wai_exact::RatPoint;
+
+    /// The `i128` box of a point equals the GMP floors and ceilings.
+    #[test]
+    fn small_boxes_equal_gmp_boxes() {
+        let mut rng = 0x2545_f491_4f6c_dd1du64;
+        let mut next = |bits: u32| {
+            rng ^= rng << 13;
+            rng ^= rng >> 7;
+            rng ^= rng << 17;
+            let v = (rng >> (64 - bits)) as i128;
+            if rng & 1 == 0 {
+                v
+            } else {
+                -v
+            }
+        };
+        for bits in [1u32, 3, 20, 62] {
+            for _ in 0..2000 {
+                let w = next(bits.min(40)).abs().max(1);
+                let (x, y) = (next(bits) << 60, next(bits));
+                let p =
+                    RatPoint::new(Integer::from(x), Integer::from(y), Integer::from(w)).unwrap();
+                let fl = |c: &Integer| {
+                    let (q, _) = c.clone().div_rem_floor(p.hw().clone());
+                    q.to_i128().unwrap()
+                };
+                let ce = |c: &Integer| {
+                    let (q, _) = c.clone().div_rem_ceil(p.hw().clone());
+                    q.to_i128().unwrap()
+                };
+                let want = [fl(p.hx()), fl(p.hy()), ce(p.hx()), ce(p.hy())];
+                assert_eq!(small_box(&p).unwrap(), want, "{p}");
+                assert_eq!(bbox([&p]), want);
+            }
+        }
+    }
 }

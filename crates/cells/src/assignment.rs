@@ -169,34 +169,37 @@ fn edge_owner(
     match geom.support {
         Support::MapEdge(_) => (if f0 != arr.outer_face() { f0 } else { f1 }, None),
         Support::Rays(_) => {
-            let (mut left, mut right) = (Vec::new(), Vec::new());
-            for &r in arr.edge_rays(e) {
-                // Half-edge 2e points along `dir`; its face is on its left.
-                let to_left = (arr.rays[r].side == RaySide::Left) == forward[r];
-                if to_left {
-                    left.push(r);
-                } else {
-                    right.push(r);
-                }
-            }
-            let nearest = nearest_anchor_ray(arr, arr.edge_rays(e), forward);
+            let rays = arr.edge_rays(e);
+            // Half-edge 2e points along `dir`; its face is on its left.
+            let to_left = |r: usize| (arr.rays[r].side == RaySide::Left) == forward[r];
+            // The first ray assigning the edge to each side (the lists of
+            // a conflict are built only when there is one).
+            let left0 = rays.iter().copied().find(|&r| to_left(r));
+            let right0 = rays.iter().copied().find(|&r| !to_left(r));
+            let nearest = nearest_anchor_ray(arr, rays, forward);
             let owner = match nearest {
                 // One way along the edge: the last obstruction passed
                 // decides (its anchor is nearest behind the edge).
-                Some(r) if left.contains(&r) => f0,
+                Some(r) if to_left(r) => f0,
                 Some(_) => f1,
                 // Both ways (a doorway between two anchors): no side is
                 // right (a one-dimensional cell); the lowest index
                 // decides, and the conflict is reported.
-                None if right.is_empty() || (!left.is_empty() && left[0] < right[0]) => f0,
-                None => f1,
+                None => match (left0, right0) {
+                    (_, None) => f0,
+                    (Some(l), Some(r)) if l < r => f0,
+                    _ => f1,
+                },
             };
-            let conflict = (!left.is_empty() && !right.is_empty()).then(|| Conflict::Edge {
-                edge: e,
-                left,
-                right,
-                owner,
-                both_ways: nearest.is_none(),
+            let conflict = (left0.is_some() && right0.is_some()).then(|| {
+                let (left, right) = rays.iter().partition(|&&r| to_left(r));
+                Conflict::Edge {
+                    edge: e,
+                    left,
+                    right,
+                    owner,
+                    both_ways: nearest.is_none(),
+                }
             });
             (owner, conflict)
         }

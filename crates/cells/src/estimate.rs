@@ -2,7 +2,7 @@
 
 use crate::arrangement::{bbox, meeting_pairs};
 use crate::rays::{LineKey, VisibilityRay};
-use wai_exact::{side_of_intersection, side_of_line, Line, Point, RatPoint, Side};
+use wai_exact::{side_of_intersection, side_of_line, Line, Point, Side};
 use wai_map::Map;
 use wai_visibility::OnMap;
 
@@ -48,7 +48,11 @@ pub fn vertex_bound(map: &Map, rays: &[VisibilityRay]) -> u64 {
     let keys: Vec<LineKey> = rays.iter().map(|r| LineKey::of(&r.line)).collect();
     let boxes: Vec<[i128; 4]> = rays
         .iter()
-        .map(|r| bbox([&RatPoint::from(r.start()), &r.end.point]))
+        .map(|r| {
+            // The start is a map vertex: its box is the point itself.
+            let (s, e) = (r.start(), bbox([&r.end.point]));
+            [e[0].min(s.x), e[1].min(s.y), e[2].max(s.x), e[3].max(s.y)]
+        })
         .collect();
     let crossing = meeting_pairs(&boxes, |i, j| {
         (keys[i] != keys[j]

@@ -233,14 +233,16 @@ impl Arrangement {
         // xmin ≥ eb[0] − 1 while xmin ≤ eb[2].
         let mut vorder: Vec<usize> = (0..vboxes.len()).collect();
         vorder.sort_by_key(|&v| vboxes[v][0]);
+        // The boxes in that order, side by side: the scans read them in turn.
+        let vsorted: Vec<[i128; 4]> = vorder.iter().map(|&v| vboxes[v]).collect();
         for (e, eb) in eboxes.iter().enumerate() {
             let (a, b) = ends(e);
-            let from = vorder.partition_point(|&v| vboxes[v][0] < eb[0] - 1);
-            for &v in &vorder[from..] {
-                if vboxes[v][0] > eb[2] {
+            let from = vsorted.partition_point(|vb| vb[0] < eb[0] - 1);
+            for (vb, &v) in vsorted[from..].iter().zip(&vorder[from..]) {
+                if vb[0] > eb[2] {
                     break;
                 }
-                if v == a || v == b || !boxes_meet(&vboxes[v], eb) {
+                if v == a || v == b || !boxes_meet(vb, eb) {
                     continue;
                 }
                 if geo.side(e, v) == Orientation::Collinear

@@ -125,8 +125,28 @@ impl MapSkeleton {
                 .zip(&key.labels)
                 .all(|(&(e, artificial), label)| match label {
                     None => !artificial,
-                    Some(l) => artificial && on_label(l, rel(e), rel((e + 1) % n)),
+                    Some(l) => artificial && on_label(l, rel(e), rel(succ(e, n))),
                 })
+    }
+}
+
+/// `i + 1` modulo `n`, for `i < n` (without a division).
+#[inline]
+fn succ(i: usize, n: usize) -> usize {
+    if i + 1 == n {
+        0
+    } else {
+        i + 1
+    }
+}
+
+/// `i − 1` modulo `n`, for `i < n` (without a division).
+#[inline]
+fn pred(i: usize, n: usize) -> usize {
+    if i == 0 {
+        n - 1
+    } else {
+        i - 1
     }
 }
 
@@ -206,7 +226,7 @@ pub(crate) fn from_leaves(
     // Whether the line of map edge `e` meets the ray from p through vertex
     // `d` beyond d (t > 1), before it (`Less`) or at it.
     let beyond = |d: usize, e: usize| -> Option<Ordering> {
-        let (dv, ra, rb) = (rel(d), rel(e), rel((e + 1) % n));
+        let (dv, ra, rb) = (rel(d), rel(e), rel(succ(e, n)));
         let den = dv.cross(Vector::new(rb.x - ra.x, rb.y - ra.y));
         if den == 0 {
             return None;
@@ -221,11 +241,11 @@ pub(crate) fn from_leaves(
     let g = leaves.len();
     let mut boundary: Vec<(Vertex, Along)> = Vec::with_capacity(2 * g);
     for k in 0..g {
-        let (before, (d, after)) = (leaves[(k + g - 1) % g].1, leaves[k]);
+        let (before, (d, after)) = (leaves[pred(k, g)].1, leaves[k]);
         if before == after {
             continue;
         }
-        let ends_at = |e: usize| d == e || d == (e + 1) % n;
+        let ends_at = |e: usize| d == e || d == succ(e, n);
         match (ends_at(before), ends_at(after)) {
             (true, true) => boundary.push((Vertex::At(d), Along::MapEdge(after))),
             (true, false) => {
@@ -266,11 +286,11 @@ pub(crate) fn from_leaves(
     };
     let (mut best_reflex, mut best): (Option<usize>, Option<usize>) = (None, None);
     for (s, &(i, mv)) in kept.iter().enumerate() {
-        let (into, out) = (boundary[(i + m - 1) % m].1, boundary[i].1);
+        let (into, out) = (boundary[pred(i, m)].1, boundary[i].1);
         let is_reflex = match (into, out) {
             (Along::Ray, _) | (_, Along::Ray) => true,
             (Along::MapEdge(e1), Along::MapEdge(e2)) => {
-                if e1 != (mv + n - 1) % n || e2 != mv {
+                if e1 != pred(mv, n) || e2 != mv {
                     return None;
                 }
                 reflex[mv]
@@ -291,7 +311,7 @@ pub(crate) fn from_leaves(
     let mut edges = Vec::with_capacity(k);
     for s in 0..k {
         let (i, _) = kept[s];
-        let (j, _) = kept[(s + 1) % k];
+        let (j, _) = kept[succ(s, k)];
         let mut solid = None;
         let mut count = 0;
         let mut len = 0;
@@ -302,7 +322,7 @@ pub(crate) fn from_leaves(
                 solid = Some(me);
                 count += 1;
             }
-            e = (e + 1) % m;
+            e = succ(e, m);
             if e == j {
                 break;
             }
