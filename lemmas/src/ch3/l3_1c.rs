@@ -157,6 +157,8 @@ fn coords(q: &RatPoint) -> (Rational, Rational) {
 struct EdgeLine {
     a: (Rational, Rational),
     d: (Rational, Rational),
+    /// `a` and `b` as given.
+    ends: (Point, Point),
 }
 
 impl EdgeLine {
@@ -164,11 +166,28 @@ impl EdgeLine {
         EdgeLine {
             a: (Rational::from(a.x), Rational::from(a.y)),
             d: (Rational::from(b.x - a.x), Rational::from(b.y - a.y)),
+            ends: (a, b),
         }
     }
 
-    /// λ of a point known to lie on the line.
+    /// λ of a point known to lie on the line: for `q = (X, Y) / W`,
+    /// `((X − W·ax)·dx + (Y − W·ay)·dy) / (W·|d|²)`, in checked `i128`
+    /// arithmetic when every value fits (exact: an overflow takes GMP).
     fn param(&self, q: &RatPoint) -> Rational {
+        let small = || -> Option<(i128, i128)> {
+            let (a, b) = self.ends;
+            let (ax, ay) = (a.x, a.y);
+            let (dx, dy) = (b.x.checked_sub(a.x)?, b.y.checked_sub(a.y)?);
+            let (x, y, w) = (q.hx().to_i128()?, q.hy().to_i128()?, q.hw().to_i128()?);
+            let ux = x.checked_sub(w.checked_mul(ax)?)?;
+            let uy = y.checked_sub(w.checked_mul(ay)?)?;
+            let dot = ux.checked_mul(dx)?.checked_add(uy.checked_mul(dy)?)?;
+            let len2 = dx.checked_mul(dx)?.checked_add(dy.checked_mul(dy)?)?;
+            Some((dot, w.checked_mul(len2)?))
+        };
+        if let Some((num, den)) = small() {
+            return Rational::from((num, den));
+        }
         let (x, y) = coords(q);
         let (ux, uy) = (x - &self.a.0, y - &self.a.1);
         let dot = ux * &self.d.0 + uy * &self.d.1;
@@ -661,6 +680,30 @@ mod tests {
     use super::*;
     use crate::fixtures::l_room;
     use wai_visibility::{EdgeKind, OnMap, VisEdge, VisVertex, VisibilityIndex};
+
+    proptest::proptest! {
+        /// λ by the checked `i128` formula is the rational one, for points
+        /// of the line with any denominator, near and beyond `i128`.
+        #[test]
+        fn param_agrees_with_rationals(
+            a in (-(1i128 << 100) + 1..1 << 100, -(1i128 << 100) + 1..1 << 100),
+            d in (-1000i128..1000, -1000i128..1000),
+            k in -(1i128 << 70)..1 << 70,
+            m in 1i128..1 << 60,
+        ) {
+            proptest::prop_assume!(d != (0, 0));
+            let (a, b) = (Point::new(a.0, a.1), Point::new(a.0 + d.0, a.1 + d.1));
+            let line = EdgeLine::new(a, b);
+            // a + (k / m)·d
+            let q = RatPoint::new(
+                Integer::from(a.x) * m + Integer::from(k) * d.0,
+                Integer::from(a.y) * m + Integer::from(k) * d.1,
+                Integer::from(m),
+            )
+            .unwrap();
+            proptest::prop_assert_eq!(line.param(&q), Rational::from((k, m)));
+        }
+    }
 
     fn at(x: i128, y: i128) -> RatPoint {
         RatPoint::from(Point::new(x, y))
