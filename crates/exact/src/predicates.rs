@@ -3,7 +3,9 @@
 use crate::line::Line;
 use crate::point::{fits_bits, Point, RatPoint};
 use crate::reference;
-use crate::vector::{det3_sign_big, det3_sign_small, rat_point_small, BigVector, Vector};
+use crate::vector::{
+    det3_sign_big, det3_sign_small, rat_point_small, BigVector, Vector, HOMOGENEOUS_FAST_BITS,
+};
 use rug::Integer;
 use std::cmp::Ordering;
 
@@ -157,6 +159,42 @@ pub fn side_of_line_rat(l: &Line, p: &RatPoint) -> Side {
     if let Some(q) = p.to_point() {
         return side_of_line(l, q);
     }
+    if let Some(p) = rat_point_small(p) {
+        if let Some(s) = side_of_line_small(l.a(), l.b(), p) {
+            return s;
+        }
+    }
+    side_of_line_rat_big(l, p)
+}
+
+/// The homogeneous row `(x, y, 1)` of an input point, if both coordinates
+/// are below `2^HOMOGENEOUS_FAST_BITS` in magnitude.
+#[inline]
+pub(crate) fn point_row_small(a: Point) -> Option<[i128; 3]> {
+    let fits = |c: i128| c.unsigned_abs() < 1 << HOMOGENEOUS_FAST_BITS;
+    (fits(a.x) && fits(a.y)).then_some([a.x, a.y, 1])
+}
+
+/// The side of the directed line through `a` and `b` that the point with
+/// homogeneous row `p` (`W > 0`, entries below `2^HOMOGENEOUS_FAST_BITS`)
+/// lies on, or `None` when `a` or `b` has a coordinate beyond that bound.
+///
+/// Implementation note: the sign of the determinant of the rows
+/// `(a, 1)`, `(b, 1)`, `(X, Y, W)` is `W·((b − a) × (p − a))`, which has the
+/// sign of the affine cross product as `W > 0`. Every entry is below
+/// `2^HOMOGENEOUS_FAST_BITS`, so [`det3_sign_small`] is exact (its bound
+/// is derived at [`HOMOGENEOUS_FAST_BITS`]).
+#[inline]
+pub(crate) fn side_of_line_small(a: Point, b: Point, p: [i128; 3]) -> Option<Side> {
+    Some(Side::from_sign(det3_sign_small(
+        point_row_small(a)?,
+        point_row_small(b)?,
+        p,
+    )))
+}
+
+/// [`side_of_line_rat`] in GMP, for any point.
+pub(crate) fn side_of_line_rat_big(l: &Line, p: &RatPoint) -> Side {
     let (a, b) = (l.a(), l.b());
     // sign((b - a) × (p - a)) with p = (X/W, Y/W), W > 0, scaled by W. The
     // differences are taken in GMP: in i128 they overflow beyond 2^126.
@@ -164,4 +202,47 @@ pub fn side_of_line_rat(l: &Line, p: &RatPoint) -> Side {
     let toward = BigVector::toward(p, a);
     // toward = W·a − (X, Y) = −W·(p − a).
     Side::from_sign(toward.cross_sign(&d))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use proptest::prelude::*;
+
+    const B: i128 = 1 << HOMOGENEOUS_FAST_BITS;
+
+    /// Small values, values at the fast path's bound and values beyond it.
+    fn coord() -> impl Strategy<Value = i128> {
+        prop_oneof![-20i128..20, (-B + 1)..B, Just(B - 1), Just(-B + 1), Just(B)]
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(3000))]
+
+        /// The `i128` path of `side_of_line_rat` decides as GMP does, the
+        /// point off, near or on the line.
+        #[test]
+        fn side_of_line_small_agrees_with_gmp(
+            a in (coord(), coord()),
+            b in (coord(), coord()),
+            p in (coord(), coord(), prop_oneof![1i128..20, 1..B, Just(B - 1), Just(B)]),
+            on_line in prop::option::of((-9i128..9, 1i128..9)),
+        ) {
+            let (a, b) = (Point::new(a.0, a.1), Point::new(b.0, b.1));
+            let Some(l) = Line::new(a, b) else { return Ok(()) };
+            let (x, y, w) = match on_line {
+                Some((k, m)) => (a.x * m + k * (b.x - a.x), a.y * m + k * (b.y - a.y), m),
+                None => p,
+            };
+            let p = RatPoint::new(Integer::from(x), Integer::from(y), Integer::from(w))
+                .expect("w > 0");
+            let big = side_of_line_rat_big(&l, &p);
+            if let Some(row) = rat_point_small(&p) {
+                if let Some(small) = side_of_line_small(a, b, row) {
+                    prop_assert_eq!(small, big);
+                }
+            }
+            prop_assert_eq!(side_of_line_rat(&l, &p), big);
+        }
+    }
 }

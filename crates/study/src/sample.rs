@@ -386,30 +386,14 @@ pub struct Frac {
 }
 
 impl Frac {
+    /// `n / d` in lowest terms with `d > 0`; `None` if `d = 0` or a
+    /// negation overflows. Reduced by [`RatPoint::lowest_terms_i128`] (a
+    /// binary gcd, in 64 bits when the values fit), which keeps exactly
+    /// these terms: `(n, 0, d)` has the gcd of `n` and `d`.
     fn new(n: i128, d: i128) -> Option<Frac> {
-        if d == 0 {
-            return None;
-        }
-        let g = gcd_i128(n, d);
-        let (n, d) = (n / g, d / g);
-        if d < 0 {
-            Some(Frac {
-                n: n.checked_neg()?,
-                d: d.checked_neg()?,
-            })
-        } else {
-            Some(Frac { n, d })
-        }
+        let [n, _, d] = RatPoint::lowest_terms_i128(n, 0, d)?;
+        Some(Frac { n, d })
     }
-}
-
-fn gcd_i128(a: i128, b: i128) -> i128 {
-    let (mut a, mut b) = (a.unsigned_abs(), b.unsigned_abs());
-    while b != 0 {
-        (a, b) = (b, a % b);
-    }
-    // a ≤ max(|n|, |d|) ≤ 2^127, and a divides a nonzero d: at most |d|.
-    i128::try_from(a.max(1)).unwrap_or(1)
 }
 
 impl Q for Frac {

@@ -113,7 +113,9 @@ pub fn kernel_exact(ring: &[Point]) -> ConvexRegion {
         let Some(cut) = Line::new(ring[i], ring[(i + 1) % ring.len()]) else {
             continue;
         };
-        region = clip(&region, &cut);
+        if let Some(clipped) = clip(&region, &cut) {
+            region = clipped;
+        }
         if region.is_empty() {
             break;
         }
@@ -177,7 +179,9 @@ pub fn kernel_small(ring: &[Point]) -> Option<ConvexRegion> {
         let Some(cut) = Line::new(ring[i], ring[(i + 1) % ring.len()]) else {
             continue;
         };
-        region = clip_small(&region, &cut)?;
+        if let Some(clipped) = clip_small(&region, &cut)? {
+            region = clipped;
+        }
         if region.is_empty() {
             break;
         }
@@ -190,42 +194,56 @@ pub fn kernel_small(ring: &[Point]) -> Option<ConvexRegion> {
 }
 
 /// [`clip`] on `i128` points; `None` on overflow.
-fn clip_small(region: &[(Triple, Line)], cut: &Line) -> Option<Vec<(Triple, Line)>> {
+fn clip_small(region: &[(Triple, Line)], cut: &Line) -> Option<Option<Vec<(Triple, Line)>>> {
     clip_by(
         region,
         cut,
         |p| side_small(cut, p),
         wai_exact::construct_intersection_i128,
+        same_triple,
     )
 }
 
-/// Clip a convex region to the closed half-plane left of `cut`.
-fn clip(region: &[(RatPoint, Line)], cut: &Line) -> Vec<(RatPoint, Line)> {
+/// Whether two triples in lowest terms are one point: field by field,
+/// without the library comparison of byte blocks that `==` on the arrays
+/// may become.
+#[inline]
+fn same_triple(a: &Triple, b: &Triple) -> bool {
+    ((a[0] ^ b[0]) | (a[1] ^ b[1]) | (a[2] ^ b[2])) == 0
+}
+
+/// Clip a convex region to the closed half-plane left of `cut`; `None`
+/// when the region lies in it already (unchanged).
+fn clip(region: &[(RatPoint, Line)], cut: &Line) -> Option<Vec<(RatPoint, Line)>> {
     clip_by(
         region,
         cut,
         |p| Some(side_of_line_rat(cut, p)),
         |a, b| Some(construct_intersection(a, b)),
+        |a, b| a == b,
     )
     .expect("the GMP path never declines")
 }
 
 /// The clipping of [`clip`] and [`clip_small`] in terms of the point
-/// type's `side` of `cut` and the `meet` of two lines (`Some(None)`:
-/// parallel); `None` where either declines (an overflow).
-fn clip_by<P: Clone + PartialEq>(
+/// type's `side` of `cut`, the `meet` of two lines (`Some(None)`:
+/// parallel) and point equality `same`; `None` where either declines (an
+/// overflow), `Some(None)` when no vertex lies right of `cut` (the region
+/// is unchanged, and not copied).
+fn clip_by<P: Clone>(
     region: &[(P, Line)],
     cut: &Line,
     side: impl Fn(&P) -> Option<Side>,
     meet: impl Fn(&Line, &Line) -> Option<Option<P>>,
-) -> Option<Vec<(P, Line)>> {
+    same: impl Fn(&P, &P) -> bool,
+) -> Option<Option<Vec<(P, Line)>>> {
     let m = region.len();
     let sides = region
         .iter()
         .map(|(p, _)| side(p))
         .collect::<Option<Vec<Side>>>()?;
     if sides.iter().all(|&s| s != Side::Right) {
-        return Some(region.to_vec());
+        return Some(None);
     }
     let mut out: Vec<(P, Line)> = Vec::new();
     for i in 0..m {
@@ -254,11 +272,11 @@ fn clip_by<P: Clone + PartialEq>(
         }
     }
     // Exit and re-entry at one point, or a region shrunk to a point.
-    out.dedup_by(|a, b| a.0 == b.0);
-    while out.len() > 1 && out.first().map(|f| &f.0) == out.last().map(|l| &l.0) {
+    out.dedup_by(|a, b| same(&a.0, &b.0));
+    while out.len() > 1 && same(&out[0].0, &out[out.len() - 1].0) {
         out.pop();
     }
-    Some(out)
+    Some(Some(out))
 }
 
 #[cfg(test)]

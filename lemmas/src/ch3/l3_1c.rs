@@ -42,7 +42,8 @@ use serde_json::json;
 use std::cmp::Ordering;
 
 use wai_exact::{
-    orientation, orientation_rat, sees, side_of_line_rat, Orientation, Point, RatPoint, Side,
+    det3_sign_i128, orientation, orientation_rat, sees, side_of_line_rat, Orientation, Point,
+    RatPoint, Side,
 };
 use wai_map::Map;
 use wai_visibility::{EdgeKind, VisibilityPolygon};
@@ -95,8 +96,9 @@ pub fn check_polygon(map: &Map, vp: &VisibilityPolygon) -> Report {
     let mut report = Report::new(ID);
     let pts: Vec<RatPoint> = map.vertices().iter().map(|&x| RatPoint::from(x)).collect();
     let turns = Turns::new(map, vp.viewpoint(), &pts);
+    let edges = VpEdges::new(vp);
     for i in 0..vp.len() {
-        if edge_collinear_with_viewpoint(vp, i) {
+        if edges.collinear[i] {
             continue;
         }
         match kind_by_def(vp, i) {
@@ -111,7 +113,7 @@ pub fn check_polygon(map: &Map, vp: &VisibilityPolygon) -> Report {
         {
             report.hit(COLLINEAR);
         }
-        let problem = check_edge(map, &pts, &turns, vp, i);
+        let problem = check_edge(map, &pts, &turns, vp, &edges, i);
         report.record(problem.map(|(what, extra)| {
             let mut data = sample::replay(map, vp);
             data.insert("edge".into(), json!(i));
@@ -155,6 +157,8 @@ fn coords(q: &RatPoint) -> (Rational, Rational) {
 struct EdgeLine {
     a: (Rational, Rational),
     d: (Rational, Rational),
+    /// `a` and `b` as given.
+    ends: (Point, Point),
 }
 
 impl EdgeLine {
@@ -162,11 +166,28 @@ impl EdgeLine {
         EdgeLine {
             a: (Rational::from(a.x), Rational::from(a.y)),
             d: (Rational::from(b.x - a.x), Rational::from(b.y - a.y)),
+            ends: (a, b),
         }
     }
 
-    /// λ of a point known to lie on the line.
+    /// λ of a point known to lie on the line: for `q = (X, Y) / W`,
+    /// `((X − W·ax)·dx + (Y − W·ay)·dy) / (W·|d|²)`, in checked `i128`
+    /// arithmetic when every value fits (exact: an overflow takes GMP).
     fn param(&self, q: &RatPoint) -> Rational {
+        let small = || -> Option<(i128, i128)> {
+            let (a, b) = self.ends;
+            let (ax, ay) = (a.x, a.y);
+            let (dx, dy) = (b.x.checked_sub(a.x)?, b.y.checked_sub(a.y)?);
+            let (x, y, w) = (q.hx().to_i128()?, q.hy().to_i128()?, q.hw().to_i128()?);
+            let ux = x.checked_sub(w.checked_mul(ax)?)?;
+            let uy = y.checked_sub(w.checked_mul(ay)?)?;
+            let dot = ux.checked_mul(dx)?.checked_add(uy.checked_mul(dy)?)?;
+            let len2 = dx.checked_mul(dx)?.checked_add(dy.checked_mul(dy)?)?;
+            Some((dot, w.checked_mul(len2)?))
+        };
+        if let Some((num, den)) = small() {
+            return Rational::from((num, den));
+        }
         let (x, y) = coords(q);
         let (ux, uy) = (x - &self.a.0, y - &self.a.1);
         let dot = ux * &self.d.0 + uy * &self.d.1;
@@ -202,12 +223,58 @@ impl EdgeLine {
     }
 }
 
+/// What [`check_edge`] reads of V_p's edges and vertices for every edge it
+/// checks, computed once per polygon.
+struct VpEdges {
+    /// By edge: whether it is collinear with the viewpoint
+    /// ([`edge_collinear_with_viewpoint`]).
+    collinear: Vec<bool>,
+    /// By vertex: its homogeneous coordinates `(X, Y, W)` if they fit an
+    /// `i128`, for [`det3_sign_i128`].
+    rows: Vec<Option<[i128; 3]>>,
+}
+
+impl VpEdges {
+    fn new(vp: &VisibilityPolygon) -> VpEdges {
+        VpEdges {
+            collinear: (0..vp.len())
+                .map(|i| edge_collinear_with_viewpoint(vp, i))
+                .collect(),
+            rows: vp.vertices().iter().map(|x| row(&x.point)).collect(),
+        }
+    }
+
+    /// The orientation of map points `a`, `b` (as `pts` rows) and V_p's
+    /// vertex `j`: the exact determinant in `i128` when it fits
+    /// ([`det3_sign_i128`] checks every product), else GMP.
+    fn orientation(
+        &self,
+        (a, ra): (&RatPoint, Option<[i128; 3]>),
+        (b, rb): (&RatPoint, Option<[i128; 3]>),
+        vp: &VisibilityPolygon,
+        j: usize,
+    ) -> Orientation {
+        if let (Some(ra), Some(rb), Some(rj)) = (ra, rb, self.rows[j]) {
+            if let Some(s) = det3_sign_i128(ra, rb, rj) {
+                return Orientation::from_sign(s);
+            }
+        }
+        orientation_rat(a, b, &vp.vertices()[j].point)
+    }
+}
+
+/// The homogeneous coordinates of a rational point, if they fit an `i128`.
+fn row(q: &RatPoint) -> Option<[i128; 3]> {
+    Some([q.hx().to_i128()?, q.hy().to_i128()?, q.hw().to_i128()?])
+}
+
 /// The problem with non-spurious edge `i`, if any: a sentence and data.
 fn check_edge(
     map: &Map,
     pts: &[RatPoint],
     turns: &Turns<'_>,
     vp: &VisibilityPolygon,
+    edges: &VpEdges,
     i: usize,
 ) -> Option<(String, serde_json::Value)> {
     let n = vp.len();
@@ -245,12 +312,13 @@ fn check_edge(
     }
     // 2. No other non-spurious edge on e'.
     let (ea, eb) = (&pts[k], &pts[(k + 1) % map.n()]);
-    for j in (0..n).filter(|&j| j != i && !edge_collinear_with_viewpoint(vp, j)) {
+    let (ea, eb) = ((ea, row(ea)), (eb, row(eb)));
+    for j in (0..n).filter(|&j| j != i && !edges.collinear[j]) {
         let named = vp.edges()[j].map_edge == Some(k);
         // Both ends strictly on one side of e''s line: the midpoint too.
         let (oa, ob) = (
-            orientation_rat(ea, eb, &v[j].point),
-            orientation_rat(ea, eb, &v[(j + 1) % n].point),
+            edges.orientation(ea, eb, vp, j),
+            edges.orientation(ea, eb, vp, (j + 1) % n),
         );
         let off_line = oa == ob && oa != Orientation::Collinear;
         let on = !off_line && {
@@ -612,6 +680,30 @@ mod tests {
     use super::*;
     use crate::fixtures::l_room;
     use wai_visibility::{EdgeKind, OnMap, VisEdge, VisVertex, VisibilityIndex};
+
+    proptest::proptest! {
+        /// λ by the checked `i128` formula is the rational one, for points
+        /// of the line with any denominator, near and beyond `i128`.
+        #[test]
+        fn param_agrees_with_rationals(
+            a in (-(1i128 << 100) + 1..1 << 100, -(1i128 << 100) + 1..1 << 100),
+            d in (-1000i128..1000, -1000i128..1000),
+            k in -(1i128 << 70)..1 << 70,
+            m in 1i128..1 << 60,
+        ) {
+            proptest::prop_assume!(d != (0, 0));
+            let (a, b) = (Point::new(a.0, a.1), Point::new(a.0 + d.0, a.1 + d.1));
+            let line = EdgeLine::new(a, b);
+            // a + (k / m)·d
+            let q = RatPoint::new(
+                Integer::from(a.x) * m + Integer::from(k) * d.0,
+                Integer::from(a.y) * m + Integer::from(k) * d.1,
+                Integer::from(m),
+            )
+            .unwrap();
+            proptest::prop_assert_eq!(line.param(&q), Rational::from((k, m)));
+        }
+    }
 
     fn at(x: i128, y: i128) -> RatPoint {
         RatPoint::from(Point::new(x, y))

@@ -329,10 +329,13 @@ fn check_translated_with(
     let o = sk.origin();
     let (dx, dy) = (target.x - o.x, target.y - o.y);
     let q = translate(vp.viewpoint(), dx, dy);
-    let base = json!({"origin": [o.x.to_string(), o.y.to_string()],
-                      "target_origin": [target.x.to_string(), target.y.to_string()],
-                      "translated_viewpoint": q.to_string(),
-                      "translated_viewpoint_file_units": sample::point_json(map, &q)});
+    // A violation's data, built only for a violation.
+    let base = || {
+        json!({"origin": [o.x.to_string(), o.y.to_string()],
+               "target_origin": [target.x.to_string(), target.y.to_string()],
+               "translated_viewpoint": q.to_string(),
+               "translated_viewpoint_file_units": sample::point_json(map, &q)})
+    };
     if locate_rat(map.vertices(), &q) != Containment::Inside {
         if !embedding {
             return (report, None);
@@ -343,7 +346,7 @@ fn check_translated_with(
             format!(
                 "the translate {q} of p into the embedding at {target:?} is not inside the map"
             ),
-            base,
+            base(),
         )));
         return (report, Some(false));
     }
@@ -381,7 +384,7 @@ fn check_translated_with(
             .zip(vp.edges())
             .all(|(a, b)| a.kind == b.kind);
     report.record((same_skeleton != same_polygon).then(|| {
-        let mut extra = base.clone();
+        let mut extra = base();
         extra["same_skeleton"] = json!(same_skeleton);
         extra["same_polygon"] = json!(same_polygon);
         extra["vq"] = json!(vq
