@@ -102,16 +102,16 @@ impl SightFan {
         (c0, c1): (QPoint, QPoint),
     ) -> SightFan {
         let corners = witnesses.vertices();
+        let w0 = witnesses.inner_point();
         // The cell is inside h(a)'s line; its closure may touch the line
         // (a cell along a wall that h(a) continues).
         assert!(
-            turn(&v1, &v2, &witnesses.inner_point()) == Ordering::Greater
+            turn(&v1, &v2, &w0) == Ordering::Greater
                 && corners.iter().all(|u| turn(&v1, &v2, u) != Ordering::Less),
             "witness cell {cell} is not inside artificial edge {v1}–{v2}"
         );
         let ray_end = |u: &QPoint, v: &QPoint| line_cut(u, v, &c0, &c1);
         // Along c's line, from the s1 side to the s2 side.
-        let w0 = witnesses.inner_point();
         let origin = ray_end(&w0, &v1);
         let dir = ray_end(&w0, &v2).sub(&origin);
         let along = |p: &QPoint| p.sub(&origin).dot(&dir);

@@ -293,11 +293,13 @@ impl Piece {
             Piece::Point(p) => p.clone(),
             Piece::Segment(a, b) => a.add(b).scale(&Rational::from((1, 2))),
             Piece::Polygon(v) => {
-                let mut s = QPoint::new(Rational::new(), Rational::new());
+                // The vertices' mean, summed in place.
+                let (mut x, mut y) = (Rational::new(), Rational::new());
                 for p in v {
-                    s = s.add(p);
+                    x += &p.x;
+                    y += &p.y;
                 }
-                s.scale(&Rational::from((1, v.len())))
+                QPoint::new(x, y).scale(&Rational::from((1, v.len())))
             }
         }
     }
