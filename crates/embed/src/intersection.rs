@@ -46,15 +46,26 @@ pub struct SkeletonRing {
 impl SkeletonRing {
     /// From map points and the skeleton key's labels (`Some` = artificial).
     pub fn new(points: &[Point], artificial: Vec<bool>) -> SkeletonRing {
-        SkeletonRing::from_ring(
-            points.iter().map(|&p| QPoint::from(p)).collect(),
-            artificial,
-        )
+        let ring = points.iter().map(|&p| QPoint::from(p)).collect();
+        let small = points
+            .iter()
+            .map(|p| Some([fast::small_int(p.x)?, fast::small_int(p.y)?]))
+            .collect();
+        SkeletonRing::with_small(ring, artificial, small)
     }
 
     /// From rational points and, by edge, whether it is artificial.
     pub fn from_ring(ring: Vec<QPoint>, artificial: Vec<bool>) -> SkeletonRing {
         let small = fast::small_ring(&ring);
+        SkeletonRing::with_small(ring, artificial, small)
+    }
+
+    /// From the ring, its labels and its small integer form, if any.
+    fn with_small(
+        ring: Vec<QPoint>,
+        artificial: Vec<bool>,
+        small: Option<Vec<fast::I>>,
+    ) -> SkeletonRing {
         let mut small_box = [i64::MAX, i64::MAX, i64::MIN, i64::MIN];
         for v in small.iter().flatten() {
             small_box = [

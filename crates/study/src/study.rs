@@ -664,22 +664,46 @@ impl<'m> Study<'m> {
     pub fn skeleton_pairs(&self) -> &[Vec<SkeletonPair>] {
         self.skeleton_pairs.get_or_init(|| {
             let witnesses = self.witnesses();
-            let rings = self.skeleton_rings();
+            let embeddings = self.embeddings();
+            let keys = self.decomposition().skeletons();
             self.timer.stage("skeleton pairs", || {
+                // The study's skeleton rings if made already (the chapter 4
+                // claims make them first), else this class's valid ones
+                // made here: the same rings, h(V◇) of [`Study::embeddings`].
+                let built = self.rings.get();
                 witnesses
                     .iter()
-                    .zip(rings)
-                    .map(|(ws, rings)| {
-                        // The rings of the valid embeddings are h(V◇) of
-                        // [`Study::embeddings`] (the others are empty).
+                    .zip(embeddings)
+                    .enumerate()
+                    .map(|(class, (ws, hs))| {
                         let valid: Vec<usize> =
                             (0..ws.len()).filter(|&i| ws[i].is_valid()).collect();
+                        if valid.len() < 2 {
+                            return Vec::new();
+                        }
+                        let own: Vec<SkeletonRing> = match built {
+                            Some(_) => Vec::new(),
+                            None => {
+                                let artificial: Vec<bool> =
+                                    keys[class].labels.iter().map(Option::is_some).collect();
+                                valid
+                                    .iter()
+                                    .map(|&i| {
+                                        SkeletonRing::new(hs[i].polygon(), artificial.clone())
+                                    })
+                                    .collect()
+                            }
+                        };
+                        let ring = |x: usize| match built {
+                            Some(r) => &r[class][valid[x]],
+                            None => &own[x],
+                        };
                         let mut out = Vec::new();
-                        for (x, &a) in valid.iter().enumerate() {
-                            for &b in &valid[x + 1..] {
-                                if rings[a].boxes_meet(&rings[b]) {
-                                    let overlap = rings[a].interiors_overlap(&rings[b]);
-                                    out.push((a, b, overlap));
+                        for x in 0..valid.len() {
+                            for y in x + 1..valid.len() {
+                                if ring(x).boxes_meet(ring(y)) {
+                                    let overlap = ring(x).interiors_overlap(ring(y));
+                                    out.push((valid[x], valid[y], overlap));
                                 }
                             }
                         }

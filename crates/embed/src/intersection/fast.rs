@@ -47,6 +47,13 @@ pub(crate) fn small_ring(r: &[QPoint]) -> Option<Vec<I>> {
     r.iter().map(small).collect()
 }
 
+/// An integer coordinate as a small one ([`FAST_BITS`]), if it is one.
+pub(crate) fn small_int(v: i128) -> Option<i64> {
+    i64::try_from(v)
+        .ok()
+        .filter(|v| v.unsigned_abs() < 1u64 << FAST_BITS)
+}
+
 /// The point as a small integer point, if it is one.
 pub(crate) fn small(p: &QPoint) -> Option<I> {
     let c = |q: &Rational| -> Option<i64> {
