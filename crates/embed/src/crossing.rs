@@ -83,6 +83,73 @@ pub struct Crossing {
     pub second: (QPoint, QPoint),
 }
 
+/// The end on c's line (`ray_end`) of the ray from a corner through `v`
+/// of least (`first`) or greatest `along`, over the corners whose rays are
+/// not parallel to `c_dir`: the points compared one by one.
+fn extreme_by_points(
+    corners: &[QPoint],
+    v: &QPoint,
+    first: bool,
+    c_dir: &QPoint,
+    ray_end: &impl Fn(&QPoint, &QPoint) -> QPoint,
+    along: &impl Fn(&QPoint) -> Rational,
+) -> QPoint {
+    let ends = corners
+        .iter()
+        .filter(|u| v.sub(u).cross_sign(c_dir) != Ordering::Equal)
+        .map(|u| ray_end(u, v));
+    let best = if first {
+        ends.min_by_key(|p| along(p))
+    } else {
+        ends.max_by_key(|p| along(p))
+    };
+    best.expect("a cell has a vertex")
+}
+
+/// [`extreme_by_points`] when `rising`, the sign of `c_dir · dir`, is not
+/// zero: the corner of least or greatest parameter s on c's line
+/// (`c.0 + s·c.1`), ordered as `along` is, and the end of its ray only.
+fn extreme_by_parameter(
+    corners: &[QPoint],
+    v: &QPoint,
+    first: bool,
+    (c0, c_dir): (&QPoint, &QPoint),
+    rising: Ordering,
+    ray_end: &impl Fn(&QPoint, &QPoint) -> QPoint,
+) -> QPoint {
+    let vc = v.sub(c0);
+    // A corner whose ray runs parallel to c's line is skipped: the cell's
+    // other rays all reach c, so its limit is no extreme.
+    let mut best: Option<(Rational, &QPoint)> = None;
+    for u in corners {
+        let w = u.sub(v);
+        let den = c_dir.cross(&w);
+        if den == 0 {
+            continue;
+        }
+        let s = vc.cross(&w) / den;
+        // The least `along` when `first`, else the greatest.
+        let better = best.as_ref().is_none_or(|(b, _)| {
+            let o = s.cmp(b);
+            let o = if rising == Ordering::Less {
+                o.reverse()
+            } else {
+                o
+            };
+            if first {
+                o == Ordering::Less
+            } else {
+                o == Ordering::Greater
+            }
+        });
+        if better {
+            best = Some((s, u));
+        }
+    }
+    let (_, u) = best.expect("a cell has a vertex");
+    ray_end(u, v)
+}
+
 impl SightFan {
     /// The lines of sight from the witness cell `witnesses` (index `cell`)
     /// through the artificial edge `artificial`, from `v1` to `v2`
@@ -102,33 +169,31 @@ impl SightFan {
         (c0, c1): (QPoint, QPoint),
     ) -> SightFan {
         let corners = witnesses.vertices();
+        let w0 = witnesses.inner_point();
         // The cell is inside h(a)'s line; its closure may touch the line
         // (a cell along a wall that h(a) continues).
         assert!(
-            turn(&v1, &v2, &witnesses.inner_point()) == Ordering::Greater
+            turn(&v1, &v2, &w0) == Ordering::Greater
                 && corners.iter().all(|u| turn(&v1, &v2, u) != Ordering::Less),
             "witness cell {cell} is not inside artificial edge {v1}–{v2}"
         );
         let ray_end = |u: &QPoint, v: &QPoint| line_cut(u, v, &c0, &c1);
         // Along c's line, from the s1 side to the s2 side.
-        let w0 = witnesses.inner_point();
         let origin = ray_end(&w0, &v1);
         let dir = ray_end(&w0, &v2).sub(&origin);
         let along = |p: &QPoint| p.sub(&origin).dot(&dir);
         let c_dir = c1.sub(&c0);
+        // The ray from a corner u through v meets c's line at c0 + s·c_dir
+        // with s = ((v − c0) × (u − v)) / (c_dir × (u − v)); `along` is
+        // (s − s_origin)·(c_dir · dir), so when c_dir · dir ≠ 0 the extreme
+        // corner is the one of least or greatest s, found without the
+        // points, and corners of equal s reach the same point.
+        let rising = c_dir.dot(&dir).cmp0();
         let extreme = |v: &QPoint, first: bool| -> QPoint {
-            // A corner whose ray runs parallel to c's line is skipped: the
-            // cell's other rays all reach c, so its limit is no extreme.
-            let ends = corners
-                .iter()
-                .filter(|u| v.sub(u).cross_sign(&c_dir) != Ordering::Equal)
-                .map(|u| ray_end(u, v));
-            let best = if first {
-                ends.min_by_key(|p| along(p))
-            } else {
-                ends.max_by_key(|p| along(p))
-            };
-            best.expect("a cell has a vertex")
+            if rising == Ordering::Equal {
+                return extreme_by_points(&corners, v, first, &c_dir, &ray_end, &along);
+            }
+            extreme_by_parameter(&corners, v, first, (&c0, &c_dir), rising, &ray_end)
         };
         let (t1, t2) = (extreme(&v1, true), extreme(&v2, false));
         for t in [&t1, &t2] {
@@ -467,4 +532,63 @@ pub fn crossing(ring: &[Point], f: &SightFan, g: &SightFan, beyond_only: bool) -
         second: g.sight_through(ring, &at),
         at,
     })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn pt(x: i64, y: i64) -> QPoint {
+        QPoint::new(Rational::from(x), Rational::from(y))
+    }
+
+    /// The extreme ray end by parameter is the one found by comparing the
+    /// points, for lines of either direction, either `along` sense, and
+    /// corners with ties and rays parallel to the line.
+    #[test]
+    fn extreme_by_parameter_is_extreme_by_points() {
+        let corners: Vec<Vec<QPoint>> = vec![
+            vec![pt(0, 1), pt(2, 1), pt(2, 3), pt(0, 3)],
+            vec![pt(1, 1), pt(3, 2), pt(1, 4)],
+            vec![pt(0, 2), pt(4, 2)],
+            vec![pt(-1, 1), pt(1, 3), pt(3, 5), pt(0, 2)],
+            vec![pt(2, 2)],
+        ];
+        let lines = [
+            (pt(-10, 10), pt(10, 10)),
+            (pt(10, 10), pt(-10, 10)),
+            (pt(-10, 8), pt(10, 12)),
+            (pt(5, 20), pt(-3, 9)),
+        ];
+        let mut compared = 0;
+        for (c0, c1) in &lines {
+            let ray_end = |u: &QPoint, v: &QPoint| line_cut(u, v, c0, c1);
+            let c_dir = c1.sub(c0);
+            for (o0, o1) in [(pt(-1, 0), pt(1, 0)), (pt(1, 0), pt(-1, 0))] {
+                let (origin, end) = (ray_end(&pt(0, -2), &o0), ray_end(&pt(0, -2), &o1));
+                let dir = end.sub(&origin);
+                let along = |p: &QPoint| p.sub(&origin).dot(&dir);
+                let rising = c_dir.dot(&dir).cmp0();
+                assert_ne!(rising, Ordering::Equal);
+                for cs in &corners {
+                    for v in [pt(1, 6), pt(-2, 6), pt(3, 7), pt(0, 5)] {
+                        if cs
+                            .iter()
+                            .all(|u| v.sub(u).cross_sign(&c_dir) == Ordering::Equal)
+                        {
+                            continue;
+                        }
+                        for first in [true, false] {
+                            assert_eq!(
+                                extreme_by_parameter(cs, &v, first, (c0, &c_dir), rising, &ray_end),
+                                extreme_by_points(cs, &v, first, &c_dir, &ray_end, &along),
+                            );
+                            compared += 1;
+                        }
+                    }
+                }
+            }
+        }
+        assert!(compared > 100, "{compared}");
+    }
 }

@@ -27,18 +27,59 @@ use wai_exact::{Point, QPoint};
 
 /// An embedded skeleton polygon h(V◇): its vertices counter-clockwise and,
 /// by edge (from vertex i to i + 1), whether the edge is artificial.
+///
+/// The ring is converted to small integer points ([`FAST_BITS`]) once,
+/// when it is made: the ring tests below (intersections, crossings of
+/// artificial edges, pieces inside, overlaps) run on the integer form
+/// whenever both rings have one, and a study asks them of the same rings
+/// thousands of times.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct SkeletonRing {
     pub ring: Vec<QPoint>,
     pub artificial: Vec<bool>,
+    /// `ring` as small integer points, if every vertex is one.
+    small: Option<Vec<fast::I>>,
+    /// The bounding box `[x_lo, y_lo, x_hi, y_hi]` of `small`.
+    small_box: [i64; 4],
 }
 
 impl SkeletonRing {
     /// From map points and the skeleton key's labels (`Some` = artificial).
     pub fn new(points: &[Point], artificial: Vec<bool>) -> SkeletonRing {
+        let ring = points.iter().map(|&p| QPoint::from(p)).collect();
+        let small = points
+            .iter()
+            .map(|p| Some([fast::small_int(p.x)?, fast::small_int(p.y)?]))
+            .collect();
+        SkeletonRing::with_small(ring, artificial, small)
+    }
+
+    /// From rational points and, by edge, whether it is artificial.
+    pub fn from_ring(ring: Vec<QPoint>, artificial: Vec<bool>) -> SkeletonRing {
+        let small = fast::small_ring(&ring);
+        SkeletonRing::with_small(ring, artificial, small)
+    }
+
+    /// From the ring, its labels and its small integer form, if any.
+    fn with_small(
+        ring: Vec<QPoint>,
+        artificial: Vec<bool>,
+        small: Option<Vec<fast::I>>,
+    ) -> SkeletonRing {
+        let mut small_box = [i64::MAX, i64::MAX, i64::MIN, i64::MIN];
+        for v in small.iter().flatten() {
+            small_box = [
+                small_box[0].min(v[0]),
+                small_box[1].min(v[1]),
+                small_box[2].max(v[0]),
+                small_box[3].max(v[1]),
+            ];
+        }
         SkeletonRing {
-            ring: points.iter().map(|&p| QPoint::from(p)).collect(),
+            ring,
             artificial,
+            small,
+            small_box,
         }
     }
 
@@ -49,6 +90,76 @@ impl SkeletonRing {
     /// The artificial edges.
     pub fn artificial_edges(&self) -> impl Iterator<Item = usize> + '_ {
         (0..self.ring.len()).filter(|&i| self.artificial[i])
+    }
+
+    /// Both rings in small integer points, if both have them.
+    fn both_small<'a>(&'a self, o: &'a SkeletonRing) -> Option<(&'a [fast::I], &'a [fast::I])> {
+        Some((self.small.as_deref()?, o.small.as_deref()?))
+    }
+
+    /// Whether the closed bounding boxes of two non-empty rings share a
+    /// point ([`crate::Bounds::meets_box`] of their boxes).
+    pub fn boxes_meet(&self, o: &SkeletonRing) -> bool {
+        if self.both_small(o).is_some() && !self.ring.is_empty() && !o.ring.is_empty() {
+            let (a, b) = (self.small_box, o.small_box);
+            return !(a[2] < b[0] || b[2] < a[0] || a[3] < b[1] || b[3] < a[1]);
+        }
+        crate::Bounds::of(&self.ring).meets_box(&crate::Bounds::of(&o.ring))
+    }
+
+    /// [`crate::interiors_overlap`] of the two rings.
+    pub fn interiors_overlap(&self, o: &SkeletonRing) -> bool {
+        match self.both_small(o) {
+            Some((p, q)) if !p.is_empty() && !q.is_empty() => {
+                // The same box test as `interiors_overlap`: boxes sharing
+                // no interior point.
+                let (a, b) = (self.small_box, o.small_box);
+                if a[2] <= b[0] || b[2] <= a[0] || a[3] <= b[1] || b[3] <= a[1] {
+                    return false;
+                }
+                fast_overlaps(p, q)
+            }
+            _ => crate::interiors_overlap(&self.ring, &o.ring),
+        }
+    }
+
+    /// Whether edge `i` of this ring and edge `j` of `o` meet other than
+    /// in a common end ([`edges_meet`]).
+    pub fn edges_meet(&self, i: usize, o: &SkeletonRing, j: usize) -> bool {
+        match self.both_small(o) {
+            Some((p, q)) => fast::edges_meet(
+                [p[i], p[fast::next(i, p.len())]],
+                [q[j], q[fast::next(j, q.len())]],
+            ),
+            None => edges_meet_rational(self.edge(i), o.edge(j)),
+        }
+    }
+
+    /// Whether the boundaries of the two rings share a point.
+    pub fn boundaries_meet(&self, o: &SkeletonRing) -> bool {
+        let Some((p, q)) = self.both_small(o) else {
+            let (p, q) = (&self.ring, &o.ring);
+            let (np, nq) = (p.len(), q.len());
+            return (0..np).any(|i| {
+                (0..nq).any(|j| segments_meet(&p[i], &p[(i + 1) % np], &q[j], &q[(j + 1) % nq]))
+            });
+        };
+        let (np, nq) = (p.len(), q.len());
+        (0..np).any(|i| {
+            let (a, b) = (p[i], p[fast::next(i, np)]);
+            (0..nq).any(|j| fast::segments_meet(a, b, q[j], q[fast::next(j, nq)]))
+        })
+    }
+
+    /// [`pieces_inside`] of edge `i` of this ring in the polygon `o`.
+    pub fn edge_pieces_inside(&self, i: usize, o: &SkeletonRing) -> usize {
+        match self.both_small(o) {
+            Some((p, q)) => fast::pieces_inside(p[i], p[fast::next(i, p.len())], q),
+            None => {
+                let (a, b) = self.edge(i);
+                pieces_inside_rational(a, b, &o.ring)
+            }
+        }
     }
 }
 
@@ -96,7 +207,7 @@ pub fn edges_meet_rational(a: (&QPoint, &QPoint), b: (&QPoint, &QPoint)) -> bool
 pub fn artificial_crossings(ring: &SkeletonRing, i: usize, other: &SkeletonRing) -> Vec<usize> {
     other
         .artificial_edges()
-        .filter(|&j| edges_meet(ring.edge(i), other.edge(j)))
+        .filter(|&j| ring.edges_meet(i, other, j))
         .collect()
 }
 
@@ -271,6 +382,15 @@ impl Intersection {
         }
     }
 
+    /// [`Intersection::of`] of two skeleton rings, on their integer forms
+    /// when both have one.
+    pub fn of_rings(p: &SkeletonRing, q: &SkeletonRing) -> Intersection {
+        match p.both_small(q) {
+            Some((p, q)) => fast::intersection(p, q),
+            None => Intersection::of_rational(&p.ring, &q.ring),
+        }
+    }
+
     /// [`Intersection::of`] in GMP rationals.
     pub fn of_rational(p: &[QPoint], q: &[QPoint]) -> Intersection {
         let mut pieces = boundary_pieces(p, q, true, true);
@@ -306,6 +426,12 @@ impl Intersection {
             cycles.push(edges_of(cycle));
         }
         Intersection::from_cycles(cycles)
+    }
+
+    /// From the boundary's cycles and how many of them run
+    /// counter-clockwise.
+    fn with_components(cycles: Vec<Vec<BoundaryEdge>>, components: usize) -> Intersection {
+        Intersection { cycles, components }
     }
 
     /// From the boundary's cycles, counting the counter-clockwise ones.
@@ -458,6 +584,66 @@ mod tests {
         // Touching along an edge only: nothing.
         let beside = ring(&[(6, 0), (8, 0), (8, 2), (6, 2)]);
         assert_eq!(Intersection::of(&u, &beside).components(), 0);
+    }
+
+    /// The ring tests on the rings' cached integer form agree with the
+    /// same tests on their rational points, on rings that share vertices,
+    /// run along each other's edges, touch in corners and cross.
+    #[test]
+    fn ring_tests_on_the_integer_form_agree_with_rationals() {
+        let shapes: Vec<Vec<(i64, i64)>> = vec![
+            vec![(0, 0), (4, 0), (4, 4), (0, 4)],
+            vec![
+                (0, 0),
+                (6, 0),
+                (6, 6),
+                (4, 6),
+                (4, 2),
+                (2, 2),
+                (2, 6),
+                (0, 6),
+            ],
+            vec![(-1, 3), (7, 3), (7, 5), (-1, 5)],
+            vec![(0, 0), (5, 1), (2, 4)],
+            vec![(3, -1), (5, 1), (1, 5), (-1, 3)],
+        ];
+        let shifts = [(0, 0), (2, 2), (4, 0), (1, 3), (-3, 1), (6, 6)];
+        let mut rings = Vec::new();
+        for shape in &shapes {
+            for &(dx, dy) in &shifts {
+                let moved: Vec<(i64, i64)> = shape.iter().map(|&(x, y)| (x + dx, y + dy)).collect();
+                let n = moved.len();
+                rings.push(SkeletonRing::from_ring(ring(&moved), vec![true; n]));
+            }
+        }
+        let rational = |r: &SkeletonRing| SkeletonRing {
+            small: None,
+            ..r.clone()
+        };
+        for p in &rings {
+            assert!(p.small.is_some());
+            for q in &rings {
+                let (rp, rq) = (rational(p), rational(q));
+                let (x, y) = (
+                    Intersection::of_rings(p, q),
+                    Intersection::of_rings(&rp, &rq),
+                );
+                assert_eq!(x.cycles, y.cycles);
+                assert_eq!(x.components(), y.components());
+                assert_eq!(p.boxes_meet(q), rp.boxes_meet(&rq));
+                assert_eq!(
+                    p.interiors_overlap(q),
+                    crate::interiors_overlap_rational(&p.ring, &q.ring)
+                );
+                assert_eq!(p.boundaries_meet(q), rp.boundaries_meet(&rq));
+                for i in 0..p.ring.len() {
+                    assert_eq!(p.edge_pieces_inside(i, q), rp.edge_pieces_inside(i, &rq));
+                    for j in 0..q.ring.len() {
+                        assert_eq!(p.edges_meet(i, q, j), rp.edges_meet(i, &rq, j));
+                    }
+                }
+            }
+        }
     }
 
     #[test]

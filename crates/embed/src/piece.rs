@@ -202,11 +202,19 @@ impl Bounds {
 
 /// The least and greatest of `n · v` over `vertices`.
 pub fn projection(n: &QPoint, vertices: &[QPoint]) -> (Rational, Rational) {
-    let proj: Vec<Rational> = vertices.iter().map(|v| n.dot(v)).collect();
-    (
-        proj.iter().min().cloned().unwrap_or_default(),
-        proj.iter().max().cloned().unwrap_or_default(),
-    )
+    let mut it = vertices.iter().map(|v| n.dot(v));
+    let Some(first) = it.next() else {
+        return (Rational::new(), Rational::new());
+    };
+    let (mut lo, mut hi) = (first.clone(), first);
+    for x in it {
+        if x < lo {
+            lo = x;
+        } else if x > hi {
+            hi = x;
+        }
+    }
+    (lo, hi)
 }
 
 /// Offsets strictly between `lo` and `hi` and between any two consecutive
@@ -293,11 +301,13 @@ impl Piece {
             Piece::Point(p) => p.clone(),
             Piece::Segment(a, b) => a.add(b).scale(&Rational::from((1, 2))),
             Piece::Polygon(v) => {
-                let mut s = QPoint::new(Rational::new(), Rational::new());
+                // The vertices' mean, summed in place.
+                let (mut x, mut y) = (Rational::new(), Rational::new());
                 for p in v {
-                    s = s.add(p);
+                    x += &p.x;
+                    y += &p.y;
                 }
-                s.scale(&Rational::from((1, v.len())))
+                QPoint::new(x, y).scale(&Rational::from((1, v.len())))
             }
         }
     }
@@ -514,14 +524,15 @@ impl<'p> Parallel<'p> {
 /// points. Points on a line are left out (see [`Piece::split`]).
 pub fn part_points(pieces: &[Piece], lines: &[(QPoint, QPoint)]) -> Vec<QPoint> {
     let mut parts: Vec<Piece> = pieces.to_vec();
+    let mut next = Vec::with_capacity(parts.len());
     for (a, b) in lines {
-        parts = parts
-            .into_iter()
-            .flat_map(|p| match p.split(a, b) {
-                Some((l, r)) => vec![l, r],
-                None => vec![p],
-            })
-            .collect();
+        for p in parts.drain(..) {
+            match p.split(a, b) {
+                Some((l, r)) => next.extend([l, r]),
+                None => next.push(p),
+            }
+        }
+        std::mem::swap(&mut parts, &mut next);
     }
     parts.iter().map(Piece::inner_point).collect()
 }

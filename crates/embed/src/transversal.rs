@@ -24,7 +24,8 @@ pub fn transversal(a: &Piece, b: &Piece, c: &Piece) -> Option<(QPoint, QPoint)> 
         c.span(p0, d)?;
         Some((p0.along(d, &sa.inner()), p0.along(d, &sb.inner())))
     };
-    let h = convex_hull(a.vertices().into_iter().chain(b.vertices()).collect());
+    let (va, vb, vc) = (a.vertices(), b.vertices(), c.vertices());
+    let h = convex_hull(va.iter().chain(&vb).cloned().collect());
     if h.len() <= 2 {
         // a and b on one line (or both one point: no line at all).
         return match h.as_slice() {
@@ -38,9 +39,9 @@ pub fn transversal(a: &Piece, b: &Piece, c: &Piece) -> Option<(QPoint, QPoint)> 
         }
         _ => None,
     };
-    let mut e: Vec<QPoint> = a.vertices();
-    e.extend(b.vertices());
-    e.extend(c.vertices());
+    let mut e: Vec<QPoint> = va.clone();
+    e.extend(vb.iter().cloned());
+    e.extend(vc.iter().cloned());
     e.sort();
     e.dedup();
     let mut dirs: Vec<QPoint> = axes().to_vec();
@@ -59,9 +60,9 @@ pub fn transversal(a: &Piece, b: &Piece, c: &Piece) -> Option<(QPoint, QPoint)> 
             Some(f) => vec![n.dot(f)],
             None => {
                 let (ra, rb, rc) = (
-                    projection(&n, &a.vertices()),
-                    projection(&n, &b.vertices()),
-                    projection(&n, &c.vertices()),
+                    projection(&n, &va),
+                    projection(&n, &vb),
+                    projection(&n, &vc),
                 );
                 let lo = ra.0.max(rb.0).max(rc.0);
                 let hi = ra.1.min(rb.1).min(rc.1);

@@ -17,10 +17,9 @@ use wai_cells::{Arrangement, Decomposition, VisibilityRay};
 use wai_embed::intersection::{edge_type, EdgeType};
 use wai_embed::wedge::{classify_by_lines, embedding_wedge_lines, CellEdgeKind};
 use wai_embed::{
-    crossing, gap_chains, interiors_overlap, kernels_overlap, sight_fans, witness_regions,
-    witness_views_by_rule, Bounds, CandidateSets, Crossing, EmbeddedEdge, Embedder, Embedding,
-    GapChain, GapRelation, Intersection, Interweavement, Mutual, SightFan, Sightlines,
-    SkeletonRing, Witnesses,
+    crossing, gap_chains, kernels_overlap, sight_fans, witness_regions, witness_views_by_rule,
+    CandidateSets, Crossing, EmbeddedEdge, Embedder, Embedding, GapChain, GapRelation,
+    Intersection, Interweavement, Mutual, SightFan, Sightlines, SkeletonRing, Witnesses,
 };
 use wai_exact::QPoint;
 use wai_exact::RatPoint;
@@ -46,6 +45,9 @@ pub struct Study<'m> {
     embeddings: OnceCell<Vec<Vec<Embedded>>>,
     /// By class, by embedding: the witness regions (Def 4.1).
     witnesses: OnceCell<Vec<Vec<Witnesses>>>,
+    /// By class, by embedding: the witness regions' pieces
+    /// ([`Witnesses::pieces`]), copied out once.
+    witness_pieces: OnceCell<Vec<Vec<Vec<wai_embed::Piece>>>>,
     sightlines: OnceCell<Sightlines<'m>>,
     /// Every pair of valid embeddings of one skeleton whose skeleton
     /// polygons overlap, with the verdict on their witnesses.
@@ -136,7 +138,8 @@ impl EmbeddingPair {
 
 /// Two valid embeddings of one class, by index in [`Study::embeddings`],
 /// `a < b`, whose skeleton polygons' bounding boxes meet, and whether the
-/// polygons' interiors overlap (`wai_embed::interiors_overlap`).
+/// polygons' interiors overlap (`wai_embed::interiors_overlap`, on the
+/// rings' integer form: [`SkeletonRing::interiors_overlap`]).
 pub type SkeletonPair = (usize, usize, bool);
 
 /// Two different valid embeddings of one skeleton whose embedded skeleton
@@ -289,6 +292,7 @@ impl<'m> Study<'m> {
             polygons: RefCell::new(BTreeMap::new()),
             embeddings: OnceCell::new(),
             witnesses: OnceCell::new(),
+            witness_pieces: OnceCell::new(),
             sightlines: OnceCell::new(),
             overlapping: OnceCell::new(),
             touching: OnceCell::new(),
@@ -429,6 +433,18 @@ impl<'m> Study<'m> {
         })
     }
 
+    /// The pieces of the witness region of embedding `i` of class `class`
+    /// ([`Witnesses::pieces`] of [`Study::witnesses`]), made once for all
+    /// the checkers that read them.
+    pub fn witness_pieces(&self, class: usize, i: usize) -> &[wai_embed::Piece] {
+        &self.witness_pieces.get_or_init(|| {
+            self.witnesses()
+                .iter()
+                .map(|ws| ws.iter().map(Witnesses::pieces).collect())
+                .collect()
+        })[class][i]
+    }
+
     /// The map prepared for exact mutual-visibility tests of regions.
     pub fn sightlines(&self) -> &Sightlines<'m> {
         self.sightlines
@@ -441,7 +457,6 @@ impl<'m> Study<'m> {
     pub fn overlapping_pairs(&self) -> &[OverlappingPair] {
         self.overlapping.get_or_init(|| {
             self.timer.stage("overlapping pairs", || {
-                let witnesses = self.witnesses();
                 let embeddings = self.embeddings();
                 self.embedding_pairs()
                     .iter()
@@ -453,10 +468,10 @@ impl<'m> Study<'m> {
                             embeddings[class][a].kernel(),
                             embeddings[class][b].kernel(),
                         );
-                        let ws = &witnesses[class];
-                        let sight = self
-                            .sightlines()
-                            .regions_by_lines(&ws[a].pieces(), &ws[b].pieces());
+                        let sight = self.sightlines().regions_by_lines(
+                            self.witness_pieces(class, a),
+                            self.witness_pieces(class, b),
+                        );
                         OverlappingPair {
                             class,
                             a,
@@ -478,24 +493,19 @@ impl<'m> Study<'m> {
         self.touching.get_or_init(|| {
             self.timer.stage("touching pairs", || {
                 let rings = self.skeleton_rings();
-                let witnesses = self.witnesses();
                 self.embedding_pairs()
                     .iter()
                     .enumerate()
                     .filter(|(_, p)| p.same_skeleton() && !p.overlap())
                     .filter(|(_, p)| {
-                        let (r, s) = (
-                            &rings[p.first.0][p.first.1].ring,
-                            &rings[p.second.0][p.second.1].ring,
-                        );
-                        boundaries_meet(r, s)
+                        rings[p.first.0][p.first.1].boundaries_meet(&rings[p.second.0][p.second.1])
                     })
                     .map(|(pair, p)| {
                         let (class, a, b) = (p.first.0, p.first.1, p.second.1);
-                        let ws = &witnesses[class];
-                        let sight = self
-                            .sightlines()
-                            .regions_by_lines(&ws[a].pieces(), &ws[b].pieces());
+                        let sight = self.sightlines().regions_by_lines(
+                            self.witness_pieces(class, a),
+                            self.witness_pieces(class, b),
+                        );
                         TouchingPair {
                             class,
                             a,
@@ -522,7 +532,7 @@ impl<'m> Study<'m> {
                     &rings[pair.first.0][pair.first.1],
                     &rings[pair.second.0][pair.second.1],
                 );
-                Intersection::of(&p.ring, &q.ring)
+                Intersection::of_rings(p, q)
             })
         }))
     }
@@ -610,10 +620,7 @@ impl<'m> Study<'m> {
                     .collect();
                 let cross = self.map.n() <= CROSS_SKELETON_MAX_N;
                 let same = self.skeleton_pairs();
-                let bounds: Vec<Bounds> = valid
-                    .iter()
-                    .map(|&(c, i)| Bounds::of(&rings[c][i].ring))
-                    .collect();
+                let ring = |k: usize| &rings[valid[k].0][valid[k].1];
                 let mut out = Vec::new();
                 for a in 0..valid.len() {
                     for b in a + 1..valid.len() {
@@ -621,7 +628,7 @@ impl<'m> Study<'m> {
                         if !one_class && !cross {
                             continue;
                         }
-                        if !bounds[a].meets_box(&bounds[b]) {
+                        if !ring(a).boxes_meet(ring(b)) {
                             continue;
                         }
                         // A pair of one class: its verdict is the class's.
@@ -634,11 +641,7 @@ impl<'m> Study<'m> {
                                 .expect("a pair of one class whose boxes meet");
                             of_class[at].2
                         } else {
-                            let (p, q) = (
-                                &rings[valid[a].0][valid[a].1],
-                                &rings[valid[b].0][valid[b].1],
-                            );
-                            interiors_overlap(&p.ring, &q.ring)
+                            ring(a).interiors_overlap(ring(b))
                         };
                         out.push(EmbeddingPair {
                             first: valid[a],
@@ -662,30 +665,45 @@ impl<'m> Study<'m> {
         self.skeleton_pairs.get_or_init(|| {
             let witnesses = self.witnesses();
             let embeddings = self.embeddings();
+            let keys = self.decomposition().skeletons();
             self.timer.stage("skeleton pairs", || {
+                // The study's skeleton rings if made already (the chapter 4
+                // claims make them first), else this class's valid ones
+                // made here: the same rings, h(V◇) of [`Study::embeddings`].
+                let built = self.rings.get();
                 witnesses
                     .iter()
                     .zip(embeddings)
-                    .map(|(ws, hs)| {
+                    .enumerate()
+                    .map(|(class, (ws, hs))| {
                         let valid: Vec<usize> =
                             (0..ws.len()).filter(|&i| ws[i].is_valid()).collect();
                         if valid.len() < 2 {
                             return Vec::new();
                         }
-                        let rings: Vec<Vec<QPoint>> = valid
-                            .iter()
-                            .map(|&i| {
-                                let ring = hs[i].embedding.polygon(self.map);
-                                ring.into_iter().map(QPoint::from).collect()
-                            })
-                            .collect();
-                        let bounds: Vec<Bounds> = rings.iter().map(|r| Bounds::of(r)).collect();
+                        let own: Vec<SkeletonRing> = match built {
+                            Some(_) => Vec::new(),
+                            None => {
+                                let artificial: Vec<bool> =
+                                    keys[class].labels.iter().map(Option::is_some).collect();
+                                valid
+                                    .iter()
+                                    .map(|&i| {
+                                        SkeletonRing::new(hs[i].polygon(), artificial.clone())
+                                    })
+                                    .collect()
+                            }
+                        };
+                        let ring = |x: usize| match built {
+                            Some(r) => &r[class][valid[x]],
+                            None => &own[x],
+                        };
                         let mut out = Vec::new();
-                        for a in 0..valid.len() {
-                            for b in a + 1..valid.len() {
-                                if bounds[a].meets_box(&bounds[b]) {
-                                    let overlap = interiors_overlap(&rings[a], &rings[b]);
-                                    out.push((valid[a], valid[b], overlap));
+                        for x in 0..valid.len() {
+                            for y in x + 1..valid.len() {
+                                if ring(x).boxes_meet(ring(y)) {
+                                    let overlap = ring(x).interiors_overlap(ring(y));
+                                    out.push((valid[x], valid[y], overlap));
                                 }
                             }
                         }
@@ -996,16 +1014,6 @@ impl<'m> Study<'m> {
         self.polygons.borrow_mut().insert(limit, Rc::clone(&v));
         v
     }
-}
-
-/// Whether the boundaries of two closed polygons share a point.
-fn boundaries_meet(p: &[QPoint], q: &[QPoint]) -> bool {
-    let (np, nq) = (p.len(), q.len());
-    (0..np).any(|i| {
-        (0..nq).any(|j| {
-            wai_embed::piece::segments_meet(&p[i], &p[(i + 1) % np], &q[j], &q[(j + 1) % nq])
-        })
-    })
 }
 
 /// V*_p at `p` in map terms, or why it cannot be built.

@@ -54,10 +54,14 @@ fn check_study(study: &Study<'_>) -> Report {
         let x = study
             .intersection(&study.embedding_pairs()[pair.pair])
             .expect("an overlapping pair has an intersection");
-        let ws = &study.witnesses()[pair.class];
         report.hit(kernel_case(pair.kernels_overlap));
         report.record(
-            check(x, &ws[pair.a].pieces(), &ws[pair.b].pieces()).map(|mut v| {
+            check(
+                x,
+                study.witness_pieces(pair.class, pair.a),
+                study.witness_pieces(pair.class, pair.b),
+            )
+            .map(|mut v| {
                 v.data["class"] = json!(pair.class);
                 v.data["pair"] = json!([pair.a, pair.b]);
                 v

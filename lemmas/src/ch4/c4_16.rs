@@ -60,13 +60,15 @@ fn check_study(study: &Study<'_>) -> Report {
         let x = study
             .intersection(&study.embedding_pairs()[pair.pair])
             .expect("an overlapping pair has an intersection");
-        let ws = &study.witnesses()[pair.class];
-        let (w, w2) = (ws[pair.a].pieces(), ws[pair.b].pieces());
+        let (w, w2) = (
+            study.witness_pieces(pair.class, pair.a),
+            study.witness_pieces(pair.class, pair.b),
+        );
         report.hit(kernel_case(pair.kernels_overlap));
-        if let Some(case) = side(x, &t, &w, &w2) {
+        if let Some(case) = side(x, &t, w, w2) {
             report.hit(case);
         }
-        report.record(check(x, &t, &w, &w2).map(|mut v| {
+        report.record(check(x, &t, w, w2).map(|mut v| {
             v.data["class"] = json!(pair.class);
             v.data["pair"] = json!([pair.a, pair.b]);
             v

@@ -150,14 +150,8 @@ mod tests {
     fn a_map_vertex_on_the_polygon_is_seen() {
         // Two squares overlapping in a corner square, every edge
         // artificial: the corner (2, 2) is a map vertex or not.
-        let p = SkeletonRing {
-            ring: ints(&[(0, 0), (4, 0), (4, 4), (0, 4)]),
-            artificial: vec![true; 4],
-        };
-        let q = SkeletonRing {
-            ring: ints(&[(2, 2), (6, 2), (6, 6), (2, 6)]),
-            artificial: vec![true; 4],
-        };
+        let p = SkeletonRing::from_ring(ints(&[(0, 0), (4, 0), (4, 4), (0, 4)]), vec![true; 4]);
+        let q = SkeletonRing::from_ring(ints(&[(2, 2), (6, 2), (6, 6), (2, 6)]), vec![true; 4]);
         let x = Intersection::of(&p.ring, &q.ring);
         let corner: HashSet<QPoint> = ints(&[(2, 2)]).into_iter().collect();
         let types = super::super::l4_7::types(&x, &p, &q, &corner);

@@ -22,7 +22,7 @@
 
 use rug::Rational;
 use serde_json::json;
-use wai_embed::intersection::{artificial_crossings, pieces_inside};
+use wai_embed::intersection::artificial_crossings;
 use wai_embed::SkeletonRing;
 
 use crate::framework::{Case, Checker, Report, Violation};
@@ -75,7 +75,7 @@ pub fn check_edges(p: &SkeletonRing, q: &SkeletonRing) -> Report {
     for i in p.artificial_edges() {
         let meets = artificial_crossings(p, i, q);
         let (a, b) = p.edge(i);
-        let inside = pieces_inside(a, b, &q.ring);
+        let inside = p.edge_pieces_inside(i, q);
         if let Some(case) = CROSSINGS.get(meets.len()) {
             report.hit(case);
         }

@@ -51,8 +51,8 @@ fn check_study(study: &Study<'_>) -> Report {
         }
         for (one, other) in [(pair.first, pair.second), (pair.second, pair.first)] {
             let (p, q) = (&rings[one.0][one.1], &rings[other.0][other.1]);
-            let witnesses = study.witnesses()[one.0][one.1].pieces();
-            let mut r = check(p, q, &witnesses);
+            let witnesses = study.witness_pieces(one.0, one.1);
+            let mut r = check(p, q, witnesses);
             r.tag("pair", || json!([one, other]));
             report.absorb(r);
         }

@@ -23,7 +23,7 @@
 //! count.
 
 use serde_json::json;
-use wai_embed::intersection::{edges_meet, left_right};
+use wai_embed::intersection::left_right;
 use wai_embed::piece::part_points;
 use wai_embed::SkeletonRing;
 use wai_exact::QPoint;
@@ -75,14 +75,8 @@ fn check_study(study: &Study<'_>) -> Report {
         );
         let meeting = meeting_pairs(p, q);
         let lines = lines_of(p, q, &meeting);
-        let ws = part_points(
-            &study.witnesses()[pair.first.0][pair.first.1].pieces(),
-            &lines,
-        );
-        let ws2 = part_points(
-            &study.witnesses()[pair.second.0][pair.second.1].pieces(),
-            &lines,
-        );
+        let ws = part_points(study.witness_pieces(pair.first.0, pair.first.1), &lines);
+        let ws2 = part_points(study.witness_pieces(pair.second.0, pair.second.1), &lines);
         for w in &ws {
             for w2 in &ws2 {
                 let mut r = check_meeting(p, q, &meeting, w, w2);
@@ -95,11 +89,11 @@ fn check_study(study: &Study<'_>) -> Report {
 }
 
 /// The pairs (i, j) of an artificial edge of `p` and one of `q` that
-/// meet ([`edges_meet`]).
+/// meet ([`SkeletonRing::edges_meet`], as [`wai_embed::intersection::edges_meet`]).
 pub fn meeting_pairs(p: &SkeletonRing, q: &SkeletonRing) -> Vec<(usize, usize)> {
     p.artificial_edges()
         .flat_map(|i| q.artificial_edges().map(move |j| (i, j)))
-        .filter(|&(i, j)| edges_meet(p.edge(i), q.edge(j)))
+        .filter(|&(i, j)| p.edges_meet(i, q, j))
         .collect()
 }
 

@@ -47,6 +47,13 @@ pub(crate) fn small_ring(r: &[QPoint]) -> Option<Vec<I>> {
     r.iter().map(small).collect()
 }
 
+/// An integer coordinate as a small one ([`FAST_BITS`]), if it is one.
+pub(crate) fn small_int(v: i128) -> Option<i64> {
+    i64::try_from(v)
+        .ok()
+        .filter(|v| v.unsigned_abs() < 1u64 << FAST_BITS)
+}
+
 /// The point as a small integer point, if it is one.
 pub(crate) fn small(p: &QPoint) -> Option<I> {
     let c = |q: &Rational| -> Option<i64> {
@@ -84,7 +91,7 @@ fn dot(u: [i128; 2], v: [i128; 2]) -> i128 {
 /// The index after `j` around a ring of `n` (no division: this runs
 /// once per edge pair).
 #[inline]
-fn next(j: usize, n: usize) -> usize {
+pub(crate) fn next(j: usize, n: usize) -> usize {
     if j + 1 == n {
         0
     } else {
@@ -202,14 +209,34 @@ fn segment_cuts(a: I, b: I, c: I, e: I, out: &mut Vec<Frac>) {
 /// The cuts of `a → b` by the boundary of `q`, with 0 and 1, sorted,
 /// without repeats.
 fn cuts(a: I, b: I, q: &[I]) -> Vec<Frac> {
-    let mut cuts = Vec::with_capacity(8);
-    cuts.extend([Frac::ZERO, Frac::ONE]);
-    for j in 0..q.len() {
-        segment_cuts(a, b, q[j], q[next(j, q.len())], &mut cuts);
+    let mut out = Vec::with_capacity(8);
+    cuts_into(a, b, q, &mut out);
+    out
+}
+
+/// [`cuts`] into `out` (cleared first), so that a caller cutting many
+/// edges reuses one buffer.
+fn cuts_into(a: I, b: I, q: &[I], out: &mut Vec<Frac>) {
+    out.clear();
+    out.extend([Frac::ZERO, Frac::ONE]);
+    // The box of `ab`: an edge of `q` entirely beyond it on one side
+    // cannot meet it, and is skipped before the orientation tests (the
+    // same first test `segments_meet` makes).
+    let (xl, xh) = (a[0].min(b[0]), a[0].max(b[0]));
+    let (yl, yh) = (a[1].min(b[1]), a[1].max(b[1]));
+    let n = q.len();
+    for j in 0..n {
+        let (c, e) = (q[j], q[next(j, n)]);
+        if c[0].max(e[0]) < xl || c[0].min(e[0]) > xh || c[1].max(e[1]) < yl || c[1].min(e[1]) > yh
+        {
+            continue;
+        }
+        segment_cuts(a, b, c, e, out);
     }
-    cuts.sort_by(|x, y| x.cmp(*y));
-    cuts.dedup_by(|x, y| x.cmp(*y) == Ordering::Equal);
-    cuts
+    if out.len() > 2 {
+        out.sort_by(|x, y| x.cmp(*y));
+        out.dedup_by(|x, y| x.cmp(*y) == Ordering::Equal);
+    }
 }
 
 /// The point `a + t·(b − a)`, homogeneous `(X, Y, W)`, `W > 0`.
@@ -329,6 +356,10 @@ struct Stretch {
     from: [i128; 3],
     to: [i128; 3],
     dir: [i128; 2],
+    /// `from × to`, twice the signed area it adds to its cycle's: with
+    /// `from = a + t0·d` and `to = a + t1·d` on the edge `a → a + d`, it
+    /// is `(t1 − t0)·(a × d)`.
+    area: Area,
     on_p: Option<usize>,
     on_q: Option<usize>,
 }
@@ -336,13 +367,14 @@ struct Stretch {
 /// [`super`]'s `boundary_pieces` on small rings.
 fn boundary_pieces(p: &[I], q: &[I], p_is_first: bool, shared: bool, out: &mut Vec<Stretch>) {
     let bounds = Bounds::of(q);
+    let mut cuts = Vec::with_capacity(8);
     for i in 0..p.len() {
         let (a, b) = (p[i], p[next(i, p.len())]);
         if bounds.misses(a, b) {
             continue; // outside q's box: every piece would be outside q
         }
         let d = sub(b, a);
-        let cuts = cuts(a, b, q);
+        cuts_into(a, b, q, &mut cuts);
         for w in cuts.windows(2) {
             let other = match locate(q, at(a, b, w[0].mediant(w[1]))) {
                 Locus::Inside => None,
@@ -364,9 +396,61 @@ fn boundary_pieces(p: &[I], q: &[I], p_is_first: bool, shared: bool, out: &mut V
                 from: reduced(at(a, b, w[0])),
                 to: reduced(at(a, b, w[1])),
                 dir: d,
+                area: Area::of(w[0], w[1], cross([a[0].into(), a[1].into()], d)),
                 on_p,
                 on_q,
             });
+        }
+    }
+}
+
+/// `(t1 − t0)·c` for two cut parameters and an integer `c = a × d`
+/// (`|c| < 2^29·2^30·2 = 2^60`): the integer itself when both parameters
+/// are whole (`d = 1`: the ends of the edge), else the fraction
+/// `(n1·d0 − n0·d1)·c / (d0·d1)` with numerator and denominator each
+/// below `2^122` (as `0 ≤ n ≤ d < 2^61`, the module's note) before the
+/// factor `c`, which is applied in GMP.
+#[derive(Clone, Debug)]
+enum Area {
+    Whole(i128),
+    Part { n: i128, d: i128, c: i128 },
+}
+
+impl Area {
+    fn of(t0: Frac, t1: Frac, c: i128) -> Area {
+        if t0.d == 1 && t1.d == 1 {
+            return Area::Whole(mul(t1.n - t0.n, c));
+        }
+        Area::Part {
+            n: mul(t1.n, t0.d) - mul(t0.n, t1.d),
+            d: mul(t0.d, t1.d),
+            c,
+        }
+    }
+}
+
+/// Whether a cycle of stretches runs counter-clockwise: the sign of the
+/// sum of their [`Area`]s. The whole terms are summed in `i128` (each
+/// below `2^61` in size, a cycle has far fewer than `2^60` of them), the
+/// others in GMP rationals, only when there are any.
+fn counter_clockwise<'a>(cycle: impl Iterator<Item = &'a Stretch>) -> bool {
+    let mut whole: i128 = 0;
+    let mut part: Option<Rational> = None;
+    for s in cycle {
+        match s.area {
+            Area::Whole(v) => whole += v,
+            Area::Part { n, d, c } => {
+                let mut r = Rational::from((n, d));
+                r *= c;
+                *part.get_or_insert_with(Rational::new) += r;
+            }
+        }
+    }
+    match part {
+        None => whole > 0,
+        Some(mut r) => {
+            r += whole;
+            r > 0
         }
     }
 }
@@ -387,6 +471,7 @@ pub(crate) fn intersection(p: &[I], q: &[I]) -> Intersection {
     boundary_pieces(q, p, false, false, &mut pieces);
     let mut used = vec![false; pieces.len()];
     let mut cycles = Vec::new();
+    let mut components = 0;
     for start in 0..pieces.len() {
         if used[start] {
             continue;
@@ -408,6 +493,9 @@ pub(crate) fn intersection(p: &[I], q: &[I]) -> Intersection {
                 None => break,
             }
         }
+        if counter_clockwise(cycle.iter().map(|&k| &pieces[k])) {
+            components += 1;
+        }
         cycles.push(
             cycle
                 .into_iter()
@@ -423,20 +511,22 @@ pub(crate) fn intersection(p: &[I], q: &[I]) -> Intersection {
                 .collect(),
         );
     }
-    Intersection::from_cycles(cycles)
+    Intersection::with_components(cycles, components)
 }
 
 /// [`crate::witness::interiors_overlap`]'s test of the edges of `p`
 /// against `q` on small rings.
 pub(crate) fn one_side_overlaps(p: &[I], q: &[I]) -> bool {
     let bounds = Bounds::of(q);
+    let mut cuts = Vec::with_capacity(8);
     for i in 0..p.len() {
         let (a, b) = (p[i], p[next(i, p.len())]);
         if bounds.misses(a, b) {
             continue;
         }
         let d = sub(b, a);
-        for w in cuts(a, b, q).windows(2) {
+        cuts_into(a, b, q, &mut cuts);
+        for w in cuts.windows(2) {
             match locate(q, at(a, b, w[0].mediant(w[1]))) {
                 Locus::Inside => return true,
                 Locus::Outside => {}
