@@ -29,6 +29,7 @@ use std::cmp::Ordering;
 
 use rug::{Integer, Rational};
 use serde_json::{json, Value};
+use wai_cells::{Arrangement, Support};
 use wai_exact::{
     construct_intersection, locate_rat, orientation_rat, Containment, Line, Orientation, Point,
     RatPoint,
@@ -339,6 +340,16 @@ trait Q: Clone + Sized {
     fn point(x: &Self, y: &Self) -> Option<RatPoint>;
     /// The coordinates of `p`.
     fn of(p: &RatPoint) -> Option<(Self, Self)>;
+    /// [`simplest`] of `a < b`.
+    fn simplest_in(a: &Self, b: &Self) -> Option<Self> {
+        simplest(a, b)
+    }
+    /// The ordinate at `x` of the line through `a` and `b` (not vertical),
+    /// when a representation has a shortcut for it; `None` to have it
+    /// computed step by step.
+    fn line_y(_a: &RatPoint, _b: &RatPoint, _x: &Self) -> Option<Self> {
+        None
+    }
 }
 
 impl Q for Rational {
@@ -436,6 +447,24 @@ impl Q for Frac {
             x.d.checked_mul(y.d)?,
         )
     }
+    fn simplest_in(a: &Self, b: &Self) -> Option<Self> {
+        simplest_frac(a, b)
+    }
+    /// The line through `a = (ax, ay, aw)` and `b` is `l·(X, Y, W) = 0`
+    /// with `l = a × b`, so the ordinate at `x = n / d` is
+    /// `−(l0·n + l2·d) / (l1·d)` (`l1 = aw·bx − ax·bw ≠ 0` as the line is
+    /// not vertical): one reduction instead of one per step. Checked, so
+    /// `None` (then step by step) on overflow.
+    fn line_y(a: &RatPoint, b: &RatPoint, x: &Self) -> Option<Self> {
+        let [ax, ay, aw] = [a.hx().to_i128()?, a.hy().to_i128()?, a.hw().to_i128()?];
+        let [bx, by, bw] = [b.hx().to_i128()?, b.hy().to_i128()?, b.hw().to_i128()?];
+        let l0 = ay.checked_mul(bw)?.checked_sub(aw.checked_mul(by)?)?;
+        let l1 = aw.checked_mul(bx)?.checked_sub(ax.checked_mul(bw)?)?;
+        let l2 = ax.checked_mul(by)?.checked_sub(ay.checked_mul(bx)?)?;
+        let num = l0.checked_mul(x.n)?.checked_add(l2.checked_mul(x.d)?)?;
+        let den = l1.checked_mul(x.d)?;
+        Frac::new(num.checked_neg()?, den)
+    }
     fn of(p: &RatPoint) -> Option<(Self, Self)> {
         let w = p.hw().to_i128()?;
         Some((
@@ -479,6 +508,43 @@ fn simplest<T: Q>(a: &T, b: &T) -> Option<T> {
     f.add(&one.div(&inner)?)
 }
 
+/// [`simplest`] in [`Frac`] without reductions: every fraction it forms
+/// is in lowest terms already. For `a = n/d` in lowest terms and an
+/// integer `f`, `a − f = (n − f·d)/d` has `gcd(n − f·d, d) = gcd(n, d) =
+/// 1`, its reciprocal likewise; and `f + 1/(p/q) = (f·p + q)/p` with
+/// `gcd(f·p + q, p) = gcd(q, p) = 1`. The same steps as [`simplest`],
+/// so the same value; `None` on `i128` overflow.
+fn simplest_frac(a: &Frac, b: &Frac) -> Option<Frac> {
+    let f = a.n.div_euclid(a.d);
+    let above = f.checked_add(1)?;
+    // above < b
+    if above.checked_mul(b.d)? < b.n {
+        let below = b.n.div_euclid(b.d);
+        let below = if b.d == 1 { below - 1 } else { below };
+        let v = if above > 0 {
+            above
+        } else if below < 0 {
+            below
+        } else {
+            0
+        };
+        return Some(Frac::int(v));
+    }
+    // a − f = fa_n / a.d in [0, 1), b − f = fb_n / b.d in (0, 1].
+    let fa_n = a.n.checked_sub(f.checked_mul(a.d)?)?;
+    let fb_n = b.n.checked_sub(f.checked_mul(b.d)?)?;
+    let hi_inv = Frac { n: b.d, d: fb_n };
+    let inner = if fa_n == 0 {
+        Frac::int(hi_inv.n.div_euclid(hi_inv.d).checked_add(1)?)
+    } else {
+        simplest_frac(&hi_inv, &Frac { n: a.d, d: fa_n })?
+    };
+    Some(Frac {
+        n: f.checked_mul(inner.n)?.checked_add(inner.d)?,
+        d: inner.n,
+    })
+}
+
 /// Two points inside the open convex polygon `ring` (counter-clockwise,
 /// positive area) with small denominators, so that queries at them stay on
 /// the integer fast paths: x1 the simplest rational strictly inside the
@@ -487,11 +553,16 @@ fn simplest<T: Q>(a: &T, b: &T) -> Option<T> {
 /// polygon has no interior (its x-range or a span is empty). Computed in
 /// `i128` fractions, or in GMP where those overflow (the same points).
 pub fn simple_interior_points(ring: &[RatPoint]) -> Option<[RatPoint; 2]> {
-    interior_points_in::<Frac>(ring, true)
-        .unwrap_or_else(|| {
-            interior_points_in::<Rational>(ring, true).expect("GMP does not overflow")
-        })
-        .map(|(p, q)| [p, q.expect("asked for")])
+    let (p, q) = simple_interior_points_or_one(ring)?;
+    Some([p, q?])
+}
+
+/// [`simple_interior_points`], with the first point alone (the same as
+/// [`simple_interior_point`]) where the polygon has no second.
+pub fn simple_interior_points_or_one(ring: &[RatPoint]) -> Option<(RatPoint, Option<RatPoint>)> {
+    interior_points_in::<Frac>(ring, true).unwrap_or_else(|| {
+        interior_points_in::<Rational>(ring, true).expect("GMP does not overflow")
+    })
 }
 
 /// The first point of [`simple_interior_points`] alone.
@@ -503,8 +574,9 @@ pub fn simple_interior_point(ring: &[RatPoint]) -> Option<RatPoint> {
         .map(|(p, _)| p)
 }
 
-/// [`simple_interior_points`] in `T` (the second point only if `both`):
-/// `None` on overflow, `Some(None)` if the polygon has no interior.
+/// [`simple_interior_points_or_one`] in `T` (the second point only if
+/// `both`): `None` on overflow, `Some(None)` if the polygon has no
+/// interior.
 #[allow(clippy::type_complexity)]
 fn interior_points_in<T: Q>(
     ring: &[RatPoint],
@@ -541,8 +613,13 @@ fn interior_points_in<T: Q>(
             if !inside || l.0.cmp(&r.0)? == Ordering::Equal {
                 continue;
             }
-            let t = x.sub(&l.0)?.div(&r.0.sub(&l.0)?)?;
-            let y = r.1.sub(&l.1)?.mul(&t)?.add(&l.1)?;
+            let y = match T::line_y(&ring[i], &ring[(i + 1) % k], x) {
+                Some(y) => y,
+                None => {
+                    let t = x.sub(&l.0)?.div(&r.0.sub(&l.0)?)?;
+                    r.1.sub(&l.1)?.mul(&t)?.add(&l.1)?
+                }
+            };
             span = Some(match span {
                 None => (y.clone(), y),
                 Some((ylo, yhi)) => {
@@ -566,17 +643,17 @@ fn interior_points_in<T: Q>(
         let Some((ylo, yhi)) = span(x)? else {
             return Some(None);
         };
-        Some(Some(T::point(x, &simplest(&ylo, &yhi)?)?))
+        Some(Some(T::point(x, &T::simplest_in(&ylo, &yhi)?)?))
     };
-    let x1 = simplest(&lo, &hi)?;
+    let x1 = T::simplest_in(&lo, &hi)?;
     let Some(p1) = at(&x1)? else {
         return Some(None);
     };
     if !both {
         return Some(Some((p1, None)));
     }
-    let x2 = simplest(&x1, &hi)?;
-    Some(at(&x2)?.map(|p2| (p1, Some(p2))))
+    let x2 = T::simplest_in(&x1, &hi)?;
+    Some(Some((p1, at(&x2)?)))
 }
 
 /// Three points of the open segment from `a` to `b` (distinct points on
@@ -634,17 +711,41 @@ fn segment_points_in<T: Q>(
     };
     let increasing = ua.cmp(ub)? == Ordering::Less;
     let (lo, hi) = if increasing { (ua, ub) } else { (ub, ua) };
-    let mid = simplest(lo, hi)?;
+    let mid = T::simplest_in(lo, hi)?;
     if !all {
         return Some(vec![point(&mid)?]);
     }
-    let (first, last) = (simplest(lo, &mid)?, simplest(&mid, hi)?);
+    let (first, last) = (T::simplest_in(lo, &mid)?, T::simplest_in(&mid, hi)?);
     let (near_a, near_b) = if increasing {
         (first, last)
     } else {
         (last, first)
     };
     Some(vec![point(&near_a)?, point(&mid)?, point(&near_b)?])
+}
+
+/// The ends of arrangement edge `e` and two integer points of its line
+/// (of its first ray, or of its map edge).
+pub fn arrangement_edge_line(
+    arr: &Arrangement,
+    e: usize,
+) -> (&RatPoint, &RatPoint, (Point, Point)) {
+    let (a, b) = (
+        arr.point(arr.half_edge(2 * e).origin),
+        arr.point(arr.dest(2 * e)),
+    );
+    let line = match arr.edge_rays(e).first() {
+        Some(&r) => (arr.rays()[r].line.a(), arr.rays()[r].line.b()),
+        None => {
+            // A map edge: its own end points.
+            let Support::MapEdge(i) = arr.edge_support(e) else {
+                unreachable!("an edge is on a map edge or covered by rays")
+            };
+            let v = arr.map().vertices();
+            (v[i], v[(i + 1) % v.len()])
+        }
+    };
+    (a, b, line)
 }
 
 /// Whether vertex `i` of V_p is reflex in V_p (a clockwise turn).
@@ -738,7 +839,60 @@ mod tests {
             let f = simplest(&fa, &fb).unwrap();
             let g = simplest_between(&ra, &rb);
             assert_eq!(Rational::from((f.n, f.d)), g);
+            assert_eq!(simplest_frac(&fa, &fb), Some(f));
         }
+    }
+
+    /// The reduction-free [`simplest_frac`] and [`Frac::line_y`] against
+    /// GMP on many pseudo-random fractions, small and near the `i128`
+    /// range (where they may decline, never differ).
+    #[test]
+    fn shortcuts_agree_with_gmp() {
+        let mut state = 0x9e37_79b9_7f4a_7c15_u64;
+        let mut next = |bits: u32| -> i128 {
+            state = state
+                .wrapping_mul(6_364_136_223_846_793_005)
+                .wrapping_add(1_442_695_040_888_963_407);
+            let v = i128::from(state >> 1) ^ (i128::from(state) << 40);
+            v % (1i128 << bits)
+        };
+        let mut answered = 0;
+        for round in 0..20_000 {
+            let bits = [8, 20, 40, 62, 100][round % 5];
+            let (n1, d1) = (next(bits), next(bits).abs() + 1);
+            let (n2, d2) = (next(bits), next(bits).abs() + 1);
+            let (a, b) = (Rational::from((n1, d1)), Rational::from((n2, d2)));
+            if a != b {
+                let (lo, hi) = if a < b { (a, b) } else { (b, a) };
+                let want = simplest::<Rational>(&lo, &hi).unwrap();
+                let (fl, fh) = (
+                    Frac::new(lo.numer().to_i128().unwrap(), lo.denom().to_i128().unwrap()),
+                    Frac::new(hi.numer().to_i128().unwrap(), hi.denom().to_i128().unwrap()),
+                );
+                if let Some(f) = simplest_frac(&fl.unwrap(), &fh.unwrap()) {
+                    assert_eq!(Rational::from((f.n, f.d)), want);
+                    answered += 1;
+                }
+            }
+            let p = |x: i128, y: i128, w: i128| RatPoint::from_i128(x, y, w.abs() + 1).unwrap();
+            let (pa, pb) = (
+                p(next(bits), next(bits), next(bits)),
+                p(next(bits), next(bits), next(bits)),
+            );
+            let (ca, cb) = (coords(&pa), coords(&pb));
+            if ca.0 == cb.0 {
+                continue;
+            }
+            let x = Frac::new(next(bits), next(bits).abs() + 1).unwrap();
+            let rx = Rational::from((x.n, x.d));
+            let want = Rational::from(&cb.1 - &ca.1) * (rx - &ca.0) / Rational::from(&cb.0 - &ca.0)
+                + &ca.1;
+            if let Some(y) = Frac::line_y(&pa, &pb, &x) {
+                assert_eq!(Rational::from((y.n, y.d)), want);
+                answered += 1;
+            }
+        }
+        assert!(answered > 10_000, "{answered}");
     }
 
     #[test]

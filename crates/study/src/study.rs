@@ -91,6 +91,15 @@ pub struct Study<'m> {
     map_points: OnceCell<HashSet<QPoint>>,
     /// The time each stage took.
     timer: Timer,
+    /// Sample points of arrangement faces, by face
+    /// ([`Study::cell_sample_points`]).
+    cell_samples: RefCell<FxHashMap<usize, Rc<Vec<RatPoint>>>>,
+    /// Sample points of arrangement edges, by edge
+    /// ([`Study::edge_sample_points`]).
+    edge_samples: RefCell<FxHashMap<usize, Rc<[RatPoint; 3]>>>,
+    /// Middle sample points of arrangement edges, by edge
+    /// ([`Study::edge_sample_point`]).
+    edge_middles: RefCell<FxHashMap<usize, RatPoint>>,
 }
 
 /// V*_p of a point p computed afresh (a visibility query and Def 3.7, not
@@ -312,6 +321,9 @@ impl<'m> Study<'m> {
             crossings: RefCell::new(HashMap::new()),
             map_points: OnceCell::new(),
             timer: Timer::default(),
+            cell_samples: RefCell::default(),
+            edge_samples: RefCell::default(),
+            edge_middles: RefCell::default(),
         }
     }
 
@@ -381,6 +393,50 @@ impl<'m> Study<'m> {
                 })
                 .collect()
         })
+    }
+
+    /// [`sample::simple_interior_points_or_one`] of arrangement face `f`,
+    /// once per face per study (T3.3b and A3.6 sample the same points):
+    /// both points, the first alone, or none if the face has no interior.
+    pub fn cell_sample_points(&self, f: usize) -> Rc<Vec<RatPoint>> {
+        if let Some(s) = self.cell_samples.borrow().get(&f) {
+            return Rc::clone(s);
+        }
+        let ring = self.arrangement().face_points(f);
+        let s = Rc::new(match sample::simple_interior_points_or_one(&ring) {
+            None => vec![],
+            Some((p, None)) => vec![p],
+            Some((p, Some(q))) => vec![p, q],
+        });
+        self.cell_samples.borrow_mut().insert(f, Rc::clone(&s));
+        s
+    }
+
+    /// [`sample::simple_segment_points`] of arrangement edge `e` (on the
+    /// line of [`sample::arrangement_edge_line`]), once per edge per study.
+    pub fn edge_sample_points(&self, e: usize) -> Rc<[RatPoint; 3]> {
+        if let Some(s) = self.edge_samples.borrow().get(&e) {
+            return Rc::clone(s);
+        }
+        let (a, b, line) = sample::arrangement_edge_line(self.arrangement(), e);
+        let s = Rc::new(sample::simple_segment_points(a, b, line));
+        self.edge_samples.borrow_mut().insert(e, Rc::clone(&s));
+        s
+    }
+
+    /// The middle one of [`Study::edge_sample_points`]
+    /// ([`sample::simple_segment_point`]), once per edge per study.
+    pub fn edge_sample_point(&self, e: usize) -> RatPoint {
+        if let Some(s) = self.edge_samples.borrow().get(&e) {
+            return s[1].clone();
+        }
+        if let Some(p) = self.edge_middles.borrow().get(&e) {
+            return p.clone();
+        }
+        let (a, b, line) = sample::arrangement_edge_line(self.arrangement(), e);
+        let p = sample::simple_segment_point(a, b, line);
+        self.edge_middles.borrow_mut().insert(e, p.clone());
+        p
     }
 
     /// The decomposition's arrangement of map edges and rays.

@@ -63,7 +63,7 @@ use wai_visibility::MapSkeleton;
 
 use std::rc::Rc;
 
-use super::t3_3b::{edge_point, fresh_json};
+use super::t3_3b::fresh_json;
 use crate::framework::{Case, Checker, Known, Report, Violation};
 use wai_study::sample;
 use wai_study::FreshSkeleton;
@@ -193,9 +193,10 @@ fn check_arrangement(study: &Study<'_>, plant: Option<(FaceId, MapSkeleton)>) ->
     let outer: Rc<FreshSkeleton> = Rc::new(Err("the outer face".into()));
     let mut cell: Vec<Rc<FreshSkeleton>> = vec![outer; arr.face_count()];
     for f in arr.cells() {
-        let ring: Vec<RatPoint> = arr.face_points(f);
-        cell[f] = match sample::simple_interior_point(&ring) {
-            Some(p) => at(&p),
+        // T3.3b's sample points of the cell (the first, the same as
+        // `sample::simple_interior_point`), shared through the study.
+        cell[f] = match study.cell_sample_points(f).first() {
+            Some(p) => at(p),
             None => Rc::new(Err(format!("cell {f} has no interior point"))),
         };
     }
@@ -218,7 +219,7 @@ fn check_arrangement(study: &Study<'_>, plant: Option<(FaceId, MapSkeleton)>) ->
             continue;
         }
         let (a, b) = (arr.half_edge(2 * e).origin, arr.dest(2 * e));
-        let p = edge_point(arr, e);
+        let p = study.edge_sample_point(e);
         let (f0, f1) = (arr.half_edge(2 * e).face, arr.half_edge(2 * e + 1).face);
         let owner = arr.owner_of_edge(e);
         let at = at(&p);

@@ -47,8 +47,8 @@
 //! 2-cell shares).
 
 use serde_json::{json, Value};
-use wai_cells::{Arrangement, LowerSite, Support};
-use wai_exact::{Point, RatPoint};
+use wai_cells::{Arrangement, LowerSite};
+use wai_exact::RatPoint;
 use wai_map::Map;
 use wai_study::FreshSkeleton;
 use wai_visibility::SkeletonKey;
@@ -107,15 +107,16 @@ fn check_study(study: &Study<'_>) -> Report {
     let arr = d.arrangement();
     for f in arr.cells() {
         report.hit(CELL_2);
-        let ring: Vec<RatPoint> = arr.face_points(f);
-        let Some(points) = sample::simple_interior_points(&ring) else {
+        let points = study.cell_sample_points(f);
+        if points.len() < 2 {
+            let ring: Vec<RatPoint> = arr.face_points(f);
             report.record(Some(Violation::with_data(
                 format!("map {name}, cell {f}: no interior point"),
                 json!({"map": name, "kind": NO_SKELETON, "cell": f,
                        "cell_vertices": ring.iter().map(ToString::to_string).collect::<Vec<_>>()}),
             )));
             continue;
-        };
+        }
         let claimed = (d.origin_of(f), &d.skeletons()[d.skeleton_of(f)]);
         report.absorb(check_cell_points(study, Cell::Face(f), claimed, &points));
     }
@@ -124,7 +125,7 @@ fn check_study(study: &Study<'_>) -> Report {
         let (cell, points) = match c.site {
             LowerSite::Edge(e) => {
                 report.hit(CELL_1);
-                (Cell::Edge(e), edge_points(arr, e).to_vec())
+                (Cell::Edge(e), study.edge_sample_points(e).to_vec())
             }
             LowerSite::Vertex(v) => {
                 report.hit(CELL_0);
@@ -140,35 +141,15 @@ fn check_study(study: &Study<'_>) -> Report {
 /// denominators ([`sample::simple_segment_points`]): the middle one is
 /// the simplest point of the edge ([`edge_point`]).
 pub fn edge_points(arr: &Arrangement, e: usize) -> [RatPoint; 3] {
-    let (a, b, line) = edge_line(arr, e);
+    let (a, b, line) = sample::arrangement_edge_line(arr, e);
     sample::simple_segment_points(a, b, line)
 }
 
 /// The simplest point of the open arrangement edge `e`: the middle one of
 /// [`edge_points`].
 pub fn edge_point(arr: &Arrangement, e: usize) -> RatPoint {
-    let (a, b, line) = edge_line(arr, e);
+    let (a, b, line) = sample::arrangement_edge_line(arr, e);
     sample::simple_segment_point(a, b, line)
-}
-
-/// The ends of arrangement edge `e` and two integer points of its line.
-fn edge_line(arr: &Arrangement, e: usize) -> (&RatPoint, &RatPoint, (Point, Point)) {
-    let (a, b) = (
-        arr.point(arr.half_edge(2 * e).origin),
-        arr.point(arr.dest(2 * e)),
-    );
-    let line = match arr.edge_rays(e).first() {
-        Some(&r) => (arr.rays()[r].line.a(), arr.rays()[r].line.b()),
-        None => {
-            // A map edge: its own end points.
-            let Support::MapEdge(i) = arr.edge_support(e) else {
-                unreachable!("an edge is on a map edge or covered by rays")
-            };
-            let v = arr.map().vertices();
-            (v[i], v[(i + 1) % v.len()])
-        }
-    };
-    (a, b, line)
 }
 
 /// A cell of the decomposition, by dimension.
