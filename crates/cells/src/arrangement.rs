@@ -182,16 +182,45 @@ pub(crate) fn along(d: Vector, p: &RatPoint) -> Rational {
 /// (closed), in parallel: boxes in order of their left sides, each against
 /// those after it until one starts right of its right side. The `Some`
 /// results, in that order.
+///
+/// When every coordinate fits an `i64` (every map below 2^61, so nearly
+/// always) the scan compares `i64` copies of the boxes: the same order and
+/// the same comparisons, at half the width.
 pub(crate) fn meeting_pairs<T: Send>(
     boxes: &[[i128; 4]],
     f: impl Fn(usize, usize) -> Option<T> + Sync,
 ) -> Vec<T> {
     let mut order: Vec<usize> = (0..boxes.len()).collect();
     order.sort_by_key(|&i| boxes[i][0]);
+    let narrow = |b: &[i128; 4]| -> Option<[i64; 4]> {
+        Some([
+            i64::try_from(b[0]).ok()?,
+            i64::try_from(b[1]).ok()?,
+            i64::try_from(b[2]).ok()?,
+            i64::try_from(b[3]).ok()?,
+        ])
+    };
     // The boxes in that order, side by side: the scans read them in turn.
-    let sorted: Vec<[i128; 4]> = order.iter().map(|&i| boxes[i]).collect();
-    let (order, sorted) = (&order, &sorted);
-    let f = &f;
+    match order
+        .iter()
+        .map(|&i| narrow(&boxes[i]))
+        .collect::<Option<Vec<_>>>()
+    {
+        Some(sorted) => scan_pairs::<i64, T>(&order, &sorted, &f),
+        None => {
+            let sorted: Vec<[i128; 4]> = order.iter().map(|&i| boxes[i]).collect();
+            scan_pairs::<i128, T>(&order, &sorted, &f)
+        }
+    }
+}
+
+/// The scan of [`meeting_pairs`] over its boxes `sorted` by left side
+/// (`order`: their indices).
+fn scan_pairs<C: Ord + Copy + Sync, T: Send>(
+    order: &[usize],
+    sorted: &[[C; 4]],
+    f: &(impl Fn(usize, usize) -> Option<T> + Sync),
+) -> Vec<T> {
     order
         .par_iter()
         .enumerate()
@@ -202,7 +231,7 @@ pub(crate) fn meeting_pairs<T: Send>(
                 .iter()
                 .zip(&order[k + 1..])
                 .take_while(move |(c, _)| c[0] <= b[2])
-                .filter(move |(c, _)| boxes_meet(b, c))
+                .filter(move |(c, _)| c[1] <= b[3] && b[1] <= c[3])
                 .filter_map(move |(_, &j)| f(i, j))
         })
         .collect()
@@ -958,15 +987,22 @@ impl Arrangement {
     }
     /// The half-edges leaving `v`, counter-clockwise.
     pub fn outgoing(&self, v: VertexId) -> Vec<HalfEdgeId> {
-        let start = self.vertices[v].out;
         let mut out = Vec::with_capacity(8);
+        self.outgoing_into(v, &mut out);
+        out
+    }
+
+    /// [`Arrangement::outgoing`] into `out` (cleared first), for callers
+    /// that reuse one buffer over many vertices.
+    pub(crate) fn outgoing_into(&self, v: VertexId, out: &mut Vec<HalfEdgeId>) {
+        out.clear();
+        let start = self.vertices[v].out;
         out.push(start);
         let mut h = self.half_edges[self.half_edges[start].prev].twin;
         while h != start && out.len() <= self.half_edges.len() {
             out.push(h);
             h = self.half_edges[self.half_edges[h].prev].twin;
         }
-        out
     }
 
     /// The faces around vertex `v`: the face of each outgoing half-edge,

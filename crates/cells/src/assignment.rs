@@ -137,7 +137,9 @@ pub(crate) fn assign(arr: &Arrangement) -> BoundaryAssignment {
         .collect();
     let by_vertex: Vec<(Option<FaceId>, Option<Conflict>)> = (0..arr.vertices.len())
         .into_par_iter()
-        .map(|v| vertex_owner(arr, v, &ray_dir))
+        .map_init(VertexScratch::default, |s, v| {
+            vertex_owner(arr, v, &ray_dir, s)
+        })
         .collect();
     let mut conflicts = Vec::new();
     let mut edge_owner = Vec::with_capacity(by_edge.len());
@@ -206,6 +208,14 @@ fn edge_owner(
     }
 }
 
+/// The working lists of [`vertex_owner`], reused from vertex to vertex.
+#[derive(Default)]
+struct VertexScratch {
+    out: Vec<usize>,
+    through: Vec<usize>,
+    seen: Vec<usize>,
+}
+
 /// The cell that owns vertex `v` (sec. 3.6): the first cell around `v`,
 /// counter-clockwise after the exterior, that lies on the ray's side
 /// ([`crate::VisibilityRay::side`]) of every ray through `v`; `None` and
@@ -214,12 +224,14 @@ fn vertex_owner(
     arr: &Arrangement,
     v: usize,
     ray_dir: &[Vector],
+    scratch: &mut VertexScratch,
 ) -> (Option<FaceId>, Option<Conflict>) {
-    let out = arr.outgoing(v);
+    let VertexScratch { out, through, seen } = scratch;
+    arr.outgoing_into(v, out);
     // Rays through v: those covering two edges at v.
-    let mut through: Vec<usize> = Vec::new();
-    let mut seen: Vec<usize> = Vec::new();
-    for &h in &out {
+    through.clear();
+    seen.clear();
+    for &h in out.iter() {
         for &r in arr.edge_rays(h / 2) {
             if seen.contains(&r) {
                 through.push(r);
@@ -255,7 +267,7 @@ fn vertex_owner(
     }
     let conflict = Conflict::Vertex {
         vertex: v,
-        rays: through,
+        rays: through.clone(),
     };
     (None, Some(conflict))
 }

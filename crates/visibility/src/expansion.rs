@@ -9,11 +9,12 @@
 
 use crate::assemble::{assemble, fits_fast};
 use crate::locate::Grid;
-use crate::map_skeleton::{from_leaves, MapSkeleton, SkeletonAtError};
+use crate::map_skeleton::{from_leaves, MapSkeleton, SkeletonAtError, SkeletonScratch};
 use crate::polygon::{VisibilityError, VisibilityPolygon};
 use crate::skeleton::Skeleton;
 use crate::triangulation::{Across, Triangulation};
 use rug::Integer;
+use std::cell::RefCell;
 use std::cmp::Ordering;
 use wai_exact::{BigVector, Point, RatPoint};
 use wai_map::Map;
@@ -50,6 +51,32 @@ trait Frame {
     /// The sign of `a × b`: `Greater` if `b` is counter-clockwise from `a`
     /// as seen from p.
     fn turn(&self, a: Self::Dir, b: Self::Dir) -> Ordering;
+    /// The expansion stack of this frame's kind in `scratch`.
+    fn stack(scratch: &mut Scratch) -> &mut Vec<Step<Self::Dir>>;
+}
+
+/// Buffers a query reuses from the last one on the same thread: a checker
+/// asks for thousands of skeletons, each of which would otherwise allocate
+/// its leaves, its stack and the fast path's working lists anew.
+#[derive(Default)]
+pub(crate) struct Scratch {
+    leaves: Vec<(usize, usize)>,
+    fast: Vec<Step<(i64, i64)>>,
+    exact: Vec<Step<u32>>,
+    skeleton: SkeletonScratch,
+}
+
+thread_local! {
+    static SCRATCH: RefCell<Scratch> = RefCell::new(Scratch::default());
+}
+
+/// Run `f` with this thread's scratch buffers (fresh ones if they are in
+/// use further up the stack).
+fn with_scratch<T>(f: impl FnOnce(&mut Scratch) -> T) -> T {
+    SCRATCH.with(|s| match s.try_borrow_mut() {
+        Ok(mut s) => f(&mut s),
+        Err(_) => f(&mut Scratch::default()),
+    })
 }
 
 /// The `i64` frame of [`Frame`]'s note: directions are computed once per
@@ -80,6 +107,11 @@ impl Frame for Fast<'_> {
         let q = i128::from(a.1) * i128::from(b.0);
         p.cmp(&q)
     }
+
+    #[inline]
+    fn stack(scratch: &mut Scratch) -> &mut Vec<Step<(i64, i64)>> {
+        &mut scratch.fast
+    }
 }
 
 /// The GMP frame of [`Frame`]'s note: a cone carries its vertices, whose
@@ -106,6 +138,11 @@ impl Frame for Exact<'_> {
             BigVector::new(Integer::from(w * v[k].x) - x, Integer::from(w * v[k].y) - y)
         };
         d(i).cross_sign(&d(j))
+    }
+
+    #[inline]
+    fn stack(scratch: &mut Scratch) -> &mut Vec<Step<u32>> {
+        &mut scratch.exact
     }
 }
 
@@ -135,7 +172,7 @@ fn exact_frame<'a>(p: &RatPoint, v: &'a [Point]) -> Exact<'a> {
 /// (corner `side` to corner `side + 1`) with the cone open between the
 /// directions of vertices `lo` and `hi` (`dlo`, `dhi`: as the frame
 /// carries them), counter-clockwise.
-struct Step<D> {
+pub(crate) struct Step<D> {
     tri: u32,
     side: u8,
     lo: u32,
@@ -205,31 +242,59 @@ impl<'m> VisibilityIndex<'m> {
     /// The same as [`VisibilityIndex::visibility_polygon`]'s; the result
     /// equals `MapSkeleton::of(&Skeleton::of(map, &V_p)?)` for every p.
     pub fn skeleton_at(&self, p: &RatPoint) -> Result<MapSkeleton, SkeletonAtError> {
-        let leaves = self.leaves_at(p)?;
-        if let Some(sk) = from_leaves(self.map, &self.reflex, p, self.coord_bits, &leaves) {
-            return Ok(sk?);
-        }
-        let vp = assemble(self.map, p, self.coord_bits, &leaves);
-        Ok(MapSkeleton::of(&Skeleton::of(self.map, &vp)?))
+        with_scratch(|scratch| {
+            self.leaves_into(p, scratch)?;
+            let Scratch {
+                leaves, skeleton, ..
+            } = scratch;
+            if let Some(sk) =
+                from_leaves(self.map, &self.reflex, p, self.coord_bits, leaves, skeleton)
+            {
+                return Ok(sk?);
+            }
+            let vp = assemble(self.map, p, self.coord_bits, leaves);
+            Ok(MapSkeleton::of(&Skeleton::of(self.map, &vp)?))
+        })
     }
 
     /// The expansion's leaves for p: counter-clockwise, the map vertex
     /// whose direction starts each angular interval and the nearest map
     /// edge on it.
     pub(crate) fn leaves_at(&self, p: &RatPoint) -> Result<Vec<(usize, usize)>, VisibilityError> {
+        let mut scratch = Scratch::default();
+        self.leaves_into(p, &mut scratch)?;
+        Ok(scratch.leaves)
+    }
+
+    /// [`VisibilityIndex::leaves_at`] into `scratch.leaves`.
+    fn leaves_into(&self, p: &RatPoint, scratch: &mut Scratch) -> Result<(), VisibilityError> {
         let v = self.map.vertices();
         match fast_frame(p, v, self.coord_bits) {
-            Some(frame) => self.leaves_in(&frame, p),
-            None => self.leaves_in(&exact_frame(p, v), p),
+            Some(frame) => self.leaves_in_scratch(&frame, p, scratch),
+            None => self.leaves_in_scratch(&exact_frame(p, v), p, scratch),
         }
     }
 
     /// [`VisibilityIndex::leaves_at`] in `frame`, the frame of `p`.
+    #[cfg(test)]
     fn leaves_in<F: Frame>(
         &self,
         frame: &F,
         p: &RatPoint,
     ) -> Result<Vec<(usize, usize)>, VisibilityError> {
+        let mut scratch = Scratch::default();
+        self.leaves_in_scratch(frame, p, &mut scratch)?;
+        Ok(scratch.leaves)
+    }
+
+    /// [`VisibilityIndex::leaves_at`] in `frame`, the frame of `p`, into
+    /// `scratch.leaves`.
+    fn leaves_in_scratch<F: Frame>(
+        &self,
+        frame: &F,
+        p: &RatPoint,
+        scratch: &mut Scratch,
+    ) -> Result<(), VisibilityError> {
         let tri = &self.triangulation;
         // Locate p: a triangle with p in its closed interior.
         let mut start = None;
@@ -259,7 +324,8 @@ impl<'m> VisibilityIndex<'m> {
         }
         // Depth first, counter-clockwise: the stack holds later cones below
         // earlier ones, so leaves come out in angular order.
-        let mut stack: Vec<Step<F::Dir>> = Vec::with_capacity(16);
+        let stack = F::stack(scratch);
+        stack.clear();
         stack.extend((0..3).rev().map(|k| Step {
             tri: t0 as u32,
             side: k as u8,
@@ -268,7 +334,11 @@ impl<'m> VisibilityIndex<'m> {
             dlo: d0[k],
             dhi: d0[(k + 1) % 3],
         }));
-        Ok(self.expand(frame, stack))
+        let mut stack = std::mem::take(F::stack(scratch));
+        scratch.leaves.clear();
+        self.expand_into(frame, &mut stack, &mut scratch.leaves);
+        *F::stack(scratch) = stack;
+        Ok(())
     }
 
     /// The view from map vertex `x` (its visibility polygon V_x, as the
@@ -342,10 +412,22 @@ impl<'m> VisibilityIndex<'m> {
     /// or splits at the third corner, its first part followed at once and
     /// the second pushed, so the leaves come out counter-clockwise.
     fn expand<F: Frame>(&self, frame: &F, mut stack: Vec<Step<F::Dir>>) -> Vec<(usize, usize)> {
+        let mut leaves: Vec<(usize, usize)> = Vec::with_capacity(self.map.n());
+        self.expand_into(frame, &mut stack, &mut leaves);
+        leaves
+    }
+
+    /// [`VisibilityIndex::expand`], appending to `leaves` and leaving
+    /// `stack` empty.
+    fn expand_into<F: Frame>(
+        &self,
+        frame: &F,
+        stack: &mut Vec<Step<F::Dir>>,
+        leaves: &mut Vec<(usize, usize)>,
+    ) {
         const NEXT: [usize; 3] = [1, 2, 0];
         const AFTER_NEXT: [usize; 3] = [2, 0, 1];
         let tri = &self.triangulation;
-        let mut leaves: Vec<(usize, usize)> = Vec::with_capacity(self.map.n());
         while let Some(mut step) = stack.pop() {
             loop {
                 let (t, k) = (step.tri as usize, step.side as usize);
@@ -386,7 +468,6 @@ impl<'m> VisibilityIndex<'m> {
                 }
             }
         }
-        leaves
     }
 }
 

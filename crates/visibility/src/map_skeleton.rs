@@ -182,6 +182,14 @@ enum Vertex {
     Spurious,
 }
 
+/// The working lists of [`from_leaves`], kept between queries so that a
+/// query allocates only the skeleton it returns.
+#[derive(Default)]
+pub(crate) struct SkeletonScratch {
+    boundary: Vec<(Vertex, Along)>,
+    kept: Vec<(usize, usize)>,
+}
+
 /// V*_p from the expansion's `leaves` (as [`crate::assemble`] reads them)
 /// without building V_p's points, if `p` fits the fast path and every
 /// boundary direction meets the configuration below; `None` otherwise
@@ -211,6 +219,7 @@ pub(crate) fn from_leaves(
     p: &RatPoint,
     coord_bits: u32,
     leaves: &[(usize, usize)],
+    scratch: &mut SkeletonScratch,
 ) -> Option<Result<MapSkeleton, SkeletonError>> {
     if !fits_fast(p, coord_bits) {
         return None;
@@ -239,7 +248,8 @@ pub(crate) fn from_leaves(
         })
     };
     let g = leaves.len();
-    let mut boundary: Vec<(Vertex, Along)> = Vec::with_capacity(2 * g);
+    let SkeletonScratch { boundary, kept } = scratch;
+    boundary.clear();
     for k in 0..g {
         let (before, (d, after)) = (leaves[pred(k, g)].1, leaves[k]);
         if before == after {
@@ -266,14 +276,16 @@ pub(crate) fn from_leaves(
         }
     }
     let m = boundary.len();
-    let kept: Vec<(usize, usize)> = boundary
-        .iter()
-        .enumerate()
-        .filter_map(|(i, (vx, _))| match vx {
-            Vertex::At(mv) => Some((i, *mv)),
-            Vertex::Spurious => None,
-        })
-        .collect();
+    kept.clear();
+    kept.extend(
+        boundary
+            .iter()
+            .enumerate()
+            .filter_map(|(i, (vx, _))| match vx {
+                Vertex::At(mv) => Some((i, *mv)),
+                Vertex::Spurious => None,
+            }),
+    );
     if kept.is_empty() {
         return None;
     }
@@ -305,13 +317,19 @@ pub(crate) fn from_leaves(
         }
     }
     let start = best_reflex.or(best)?;
-    let mut kept = kept;
-    kept.rotate_left(start);
     let k = kept.len();
+    // Skeleton vertex s is kept[(start + s) mod k].
+    let at_s = |s: usize| {
+        kept[if start + s >= k {
+            start + s - k
+        } else {
+            start + s
+        }]
+    };
     let mut edges = Vec::with_capacity(k);
     for s in 0..k {
-        let (i, _) = kept[s];
-        let (j, _) = kept[succ(s, k)];
+        let (i, _) = at_s(s);
+        let (j, _) = at_s(succ(s, k));
         let mut solid = None;
         let mut count = 0;
         let mut len = 0;
@@ -333,7 +351,7 @@ pub(crate) fn from_leaves(
         }
     }
     Some(Ok(MapSkeleton {
-        vertices: kept.iter().map(|&(_, mv)| mv).collect(),
+        vertices: (0..k).map(|s| at_s(s).1).collect(),
         edges,
     }))
 }
@@ -387,8 +405,14 @@ mod tests {
                 let vp = index.visibility_polygon(&p).unwrap();
                 let want = Skeleton::of(map, &vp).map(|s| MapSkeleton::of(&s));
                 all += 1;
-                if let Some(got) = from_leaves(map, &index.reflex, &p, index.coord_bits(), &leaves)
-                {
+                if let Some(got) = from_leaves(
+                    map,
+                    &index.reflex,
+                    &p,
+                    index.coord_bits(),
+                    &leaves,
+                    &mut SkeletonScratch::default(),
+                ) {
                     fast += 1;
                     assert_eq!(got, want, "p = {p} in {:?}", map.vertices());
                 }
