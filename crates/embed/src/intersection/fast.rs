@@ -184,13 +184,44 @@ impl Frac {
 }
 
 /// [`crate::piece::segment_cuts`] on small points, pushed onto `out`.
+#[cfg(test)]
 fn segment_cuts(a: I, b: I, c: I, e: I, out: &mut Vec<Frac>) {
     if !segments_meet(a, b, c, e) {
         return;
     }
+    segment_cuts_in_box(a, b, c, e, out);
+}
+
+/// [`segment_cuts`] for segments whose closed boxes are known to meet
+/// (the box test of [`segments_meet`] already passed).
+///
+/// It reuses the orientations of the meeting test for the crossing: with
+/// `d = b − a`, `f = e − c`, `s_a = f × (a − c)` and `s_b = f × (b − c)`
+/// (the orientations of `a` and `b` against `c → e`), `d × f = s_a − s_b`
+/// and `(c − a) × f = s_a`, so the cut of a proper crossing is
+/// `s_a / (s_a − s_b)` — the same fraction as before, with no further
+/// product (`|s_a|, |s_b| < 2^61`, their difference below `2^62`).
+fn segment_cuts_in_box(a: I, b: I, c: I, e: I, out: &mut Vec<Frac>) {
     let d = sub(b, a);
     let f = sub(e, c);
-    let den = cross(d, f);
+    let s_a = cross(f, sub(a, c));
+    let s_b = cross(f, sub(b, c));
+    let (o1, o2) = (cross(d, sub(c, a)).cmp(&0), cross(d, sub(e, a)).cmp(&0));
+    let (o3, o4) = (s_a.cmp(&0), s_b.cmp(&0));
+    use Ordering::Equal;
+    let meet = if o1 != Equal && o2 != Equal && o3 != Equal && o4 != Equal {
+        o1 != o2 && o3 != o4
+    } else {
+        let within = |p: I, q: I, x: I| between(p[0], q[0], x[0]) && between(p[1], q[1], x[1]);
+        (o1 == Equal && within(a, b, c))
+            || (o2 == Equal && within(a, b, e))
+            || (o3 == Equal && within(c, e, a))
+            || (o4 == Equal && within(c, e, b))
+    };
+    if !meet {
+        return;
+    }
+    let den = s_a - s_b;
     if den == 0 {
         let dd = dot(d, d);
         for x in [c, e] {
@@ -201,7 +232,7 @@ fn segment_cuts(a: I, b: I, c: I, e: I, out: &mut Vec<Frac>) {
         }
         return;
     }
-    let num = cross(sub(c, a), f);
+    let num = s_a;
     let (n, d) = if den < 0 { (-num, -den) } else { (num, den) };
     out.push(Frac { n, d });
 }
@@ -231,7 +262,7 @@ fn cuts_into(a: I, b: I, q: &[I], out: &mut Vec<Frac>) {
         {
             continue;
         }
-        segment_cuts(a, b, c, e, out);
+        segment_cuts_in_box(a, b, c, e, out);
     }
     if out.len() > 2 {
         out.sort_by(|x, y| x.cmp(*y));
@@ -263,7 +294,21 @@ fn reduced(p: [i128; 3]) -> [i128; 3] {
     [p[0] / g, p[1] / g, p[2] / g]
 }
 
+/// Euclid's gcd; once both values fit in 64 bits (after at most a few
+/// wide steps: a reduced point's `W` is below `2^62`) it continues with
+/// 64-bit remainders, which the machine divides directly — the same
+/// sequence of remainders, so the same result.
 fn gcd(mut a: u128, mut b: u128) -> u128 {
+    while b != 0 {
+        if let (Ok(x), Ok(y)) = (u64::try_from(a), u64::try_from(b)) {
+            return u128::from(gcd64(x, y));
+        }
+        (a, b) = (b, a % b);
+    }
+    a
+}
+
+fn gcd64(mut a: u64, mut b: u64) -> u64 {
     while b != 0 {
         (a, b) = (b, a % b);
     }
@@ -375,7 +420,10 @@ fn boundary_pieces(p: &[I], q: &[I], p_is_first: bool, shared: bool, out: &mut V
         }
         let d = sub(b, a);
         cuts_into(a, b, q, &mut cuts);
-        for w in cuts.windows(2) {
+        // The reduced end of the last kept stretch, by cut index: the next
+        // stretch starts at the same cut.
+        let mut last_end: Option<(usize, [i128; 3])> = None;
+        for (k, w) in cuts.windows(2).enumerate() {
             let other = match locate(q, at(a, b, w[0].mediant(w[1]))) {
                 Locus::Inside => None,
                 Locus::Outside => continue,
@@ -392,9 +440,15 @@ fn boundary_pieces(p: &[I], q: &[I], p_is_first: bool, shared: bool, out: &mut V
             } else {
                 (other, Some(i))
             };
+            let from = match last_end {
+                Some((cut, point)) if cut == k => point,
+                _ => reduced(at(a, b, w[0])),
+            };
+            let to = reduced(at(a, b, w[1]));
+            last_end = Some((k + 1, to));
             out.push(Stretch {
-                from: reduced(at(a, b, w[0])),
-                to: reduced(at(a, b, w[1])),
+                from,
+                to,
                 dir: d,
                 area: Area::of(w[0], w[1], cross([a[0].into(), a[1].into()], d)),
                 on_p,
@@ -613,6 +667,57 @@ mod tests {
             want.sort();
             want.dedup();
             assert_eq!(cut_rationals(a, b, &q), want, "{a:?}–{b:?}");
+        }
+    }
+
+    /// The cuts taken from the meeting test's orientations equal the
+    /// rational cuts on every pair of segments between points of a small
+    /// grid: crossing, touching, collinear, overlapping and apart.
+    #[test]
+    fn segment_cuts_equal_the_rational_segment_cuts() {
+        let grid: Vec<I> = (0..4)
+            .flat_map(|x| (0..4).map(move |y| [x * 3 - 2, y * 2 - 3]))
+            .collect();
+        let pt = |v: I| QPoint::new(Rational::from(v[0]), Rational::from(v[1]));
+        let segments: Vec<(I, I)> = grid
+            .iter()
+            .flat_map(|&a| grid.iter().map(move |&b| (a, b)))
+            .filter(|(a, b)| a != b)
+            .collect();
+        for &(a, b) in &segments {
+            for &(c, e) in &segments {
+                let mut fast = Vec::new();
+                segment_cuts(a, b, c, e, &mut fast);
+                let fast: Vec<Rational> = fast.into_iter().map(Frac::to_rational).collect();
+                let want = crate::piece::segment_cuts(&pt(a), &pt(b), &pt(c), &pt(e));
+                assert_eq!(fast, want, "{a:?}–{b:?} against {c:?}–{e:?}");
+            }
+        }
+    }
+
+    /// The mixed-width gcd equals plain Euclid on wide and narrow values.
+    #[test]
+    fn gcd_equals_wide_euclid() {
+        let wide = |mut a: u128, mut b: u128| {
+            while b != 0 {
+                (a, b) = (b, a % b);
+            }
+            a
+        };
+        let values: [u128; 8] = [
+            0,
+            1,
+            6,
+            (1 << 61) - 1,
+            (1 << 62) * 3,
+            ((1 << 61) - 1) * 12,
+            (1u128 << 92) - 7,
+            ((1u128 << 40) + 3) * ((1u128 << 50) + 9),
+        ];
+        for &a in &values {
+            for &b in &values {
+                assert_eq!(gcd(a, b), wide(a, b), "{a} {b}");
+            }
         }
     }
 
