@@ -537,10 +537,7 @@ pub fn crossing(ring: &[Point], f: &SightFan, g: &SightFan, beyond_only: bool) -
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    fn pt(x: i64, y: i64) -> QPoint {
-        QPoint::new(Rational::from(x), Rational::from(y))
-    }
+    use crate::piece::int as pt;
 
     /// The extreme ray end by parameter is the one found by comparing the
     /// points, for lines of either direction, either `along` sense, and

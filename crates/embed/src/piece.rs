@@ -152,11 +152,14 @@ pub fn open_hulls_meet(p: &[wai_exact::Point], q: &[wai_exact::Point]) -> Option
     Some(true)
 }
 
+/// A point with small integer coordinates (for tests and figures).
+pub fn int(x: i64, y: i64) -> QPoint {
+    QPoint::new(Rational::from(x), Rational::from(y))
+}
+
 /// Points with small integer coordinates (for tests and figures).
 pub fn ints(pts: &[(i64, i64)]) -> Vec<QPoint> {
-    pts.iter()
-        .map(|&(x, y)| QPoint::new(Rational::from(x), Rational::from(y)))
-        .collect()
+    pts.iter().map(|&(x, y)| int(x, y)).collect()
 }
 
 /// The closed axis-parallel box around some points: a cheap first test
@@ -550,11 +553,8 @@ pub(crate) fn line_cut(p: &QPoint, q: &QPoint, a: &QPoint, b: &QPoint) -> QPoint
 
 #[cfg(test)]
 mod tests {
+    use super::int as pt;
     use super::*;
-
-    fn pt(x: i64, y: i64) -> QPoint {
-        ints(&[(x, y)]).remove(0)
-    }
 
     #[test]
     fn spans_of_a_square_a_segment_and_a_point() {

@@ -85,10 +85,7 @@ pub fn transversal(a: &Piece, b: &Piece, c: &Piece) -> Option<(QPoint, QPoint)> 
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    fn pt(x: i64, y: i64) -> QPoint {
-        QPoint::new(Rational::from(x), Rational::from(y))
-    }
+    use crate::piece::int as pt;
 
     #[test]
     fn three_squares_in_a_row_and_off_it() {

@@ -474,28 +474,7 @@ impl<'m> VisibilityIndex<'m> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use wai_exact::{locate_rat, Containment};
-
-    /// Points inside `map`: vertices' midpoints and a rational grid.
-    fn points(map: &Map) -> Vec<RatPoint> {
-        let v = map.vertices();
-        let mut out: Vec<RatPoint> = Vec::new();
-        for i in 0..v.len() {
-            for j in i + 2..v.len() {
-                out.push(RatPoint::midpoint(&v[i].into(), &v[j].into()));
-            }
-        }
-        let (lo, hi) = map.bounding_box();
-        for i in 1..7i128 {
-            for j in 1..7i128 {
-                let x = Integer::from(lo.x) * 7 + (hi.x - lo.x) * i;
-                let y = Integer::from(lo.y) * 7 + (hi.y - lo.y) * j;
-                out.push(RatPoint::new(x * 3 + 1, y * 3 + 2, Integer::from(21)).unwrap());
-            }
-        }
-        out.retain(|q| locate_rat(v, q) == Containment::Inside);
-        out
-    }
+    use crate::test_points::interior_points;
 
     /// The `i64` frame and the GMP frame give the same leaves and the
     /// same vertex views, on maps small and scaled up to the bound of
@@ -523,7 +502,7 @@ mod tests {
                 let (map, _) = Map::from_ring(ring).unwrap();
                 let index = VisibilityIndex::new(&map);
                 let v = map.vertices();
-                for p in points(&map) {
+                for p in interior_points(&map, 7, 3) {
                     let want = index.leaves_in(&exact_frame(&p, v), &p);
                     if let Some(frame) = fast_frame(&p, v, index.coord_bits) {
                         fast += 1;

@@ -25,6 +25,8 @@ mod map_skeleton;
 mod polygon;
 pub mod reference;
 mod skeleton;
+#[cfg(test)]
+mod test_points;
 mod triangulation;
 
 pub use expansion::VisibilityIndex;

@@ -359,29 +359,8 @@ pub(crate) fn from_leaves(
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::test_points::interior_points;
     use crate::VisibilityIndex;
-    use wai_exact::{locate_rat, Containment};
-
-    /// Midpoints of vertex pairs and points of a rational grid inside `map`.
-    fn points(map: &Map) -> Vec<RatPoint> {
-        let v = map.vertices();
-        let mut out: Vec<RatPoint> = Vec::new();
-        for i in 0..v.len() {
-            for j in i + 2..v.len() {
-                out.push(RatPoint::midpoint(&v[i].into(), &v[j].into()));
-            }
-        }
-        let (lo, hi) = map.bounding_box();
-        for i in 1..6i128 {
-            for j in 1..6i128 {
-                let x = Integer::from(lo.x) * 6 + (hi.x - lo.x) * i;
-                let y = Integer::from(lo.y) * 6 + (hi.y - lo.y) * j;
-                out.push(RatPoint::new(x * 5 + 1, y * 5 + 2, Integer::from(30)).unwrap());
-            }
-        }
-        out.retain(|q| locate_rat(v, q) == Containment::Inside);
-        out
-    }
 
     /// The combinatorial reading agrees with the skeleton of V_p wherever
     /// it answers, and answers for nearly every point of small maps.
@@ -400,7 +379,7 @@ mod tests {
         ));
         for map in &maps {
             let index = VisibilityIndex::new(map);
-            for p in points(map) {
+            for p in interior_points(map, 6, 5) {
                 let leaves = index.leaves_at(&p).unwrap();
                 let vp = index.visibility_polygon(&p).unwrap();
                 let want = Skeleton::of(map, &vp).map(|s| MapSkeleton::of(&s));
