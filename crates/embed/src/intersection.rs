@@ -646,6 +646,50 @@ mod tests {
         }
     }
 
+    /// The integer intersection (with its shared crossings and the inside
+    /// and outside it infers across proper cuts, checked against `locate`
+    /// in this build) equals the rational one on generated maps laid over
+    /// each other at small offsets: collinear edges, shared vertices,
+    /// corners on edges and proper crossings.
+    #[test]
+    fn integer_intersections_equal_rational_ones_on_generated_maps() {
+        let rings: Vec<Vec<QPoint>> = (0..24)
+            .map(|seed| {
+                wai_gen::bytes::map_from_seed(seed)
+                    .vertices()
+                    .iter()
+                    .map(|&p| QPoint::from(p))
+                    .collect()
+            })
+            .collect();
+        let shifted = |r: &[QPoint], dx: i64, dy: i64| -> Vec<QPoint> {
+            r.iter()
+                .map(|p| QPoint::new(Rational::from(&p.x + dx), Rational::from(&p.y + dy)))
+                .collect()
+        };
+        let (mut compared, mut overlapping) = (0, 0);
+        for (k, p) in rings.iter().enumerate() {
+            for q in &rings[k..] {
+                for (dx, dy) in [(0, 0), (1, 0), (0, 1), (2, 1), (-1, 3)] {
+                    let q = shifted(q, dx, dy);
+                    let (x, y) = (Intersection::of(p, &q), Intersection::of_rational(p, &q));
+                    assert_eq!(
+                        x.cycles, y.cycles,
+                        "seed ring {k} against a ring shifted by ({dx}, {dy})"
+                    );
+                    assert_eq!(x.components(), y.components());
+                    compared += 1;
+                    overlapping += usize::from(x.components() > 0);
+                }
+            }
+        }
+        assert_eq!(compared, 5 * 24 * 25 / 2);
+        assert!(
+            overlapping > compared / 2,
+            "{overlapping} of {compared} overlap"
+        );
+    }
+
     #[test]
     fn pieces_of_a_segment_inside_a_polygon() {
         let u = ring(&[

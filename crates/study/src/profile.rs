@@ -41,11 +41,34 @@ impl StageTimes {
 
 /// The timer of one study: the stages under way, innermost last, and the
 /// totals so far.
+///
+/// The totals are a short list rather than a map: a study times some
+/// stages once per pair of embeddings, and a lookup by the name's address
+/// (stage names are literals) costs no string comparison.
 #[derive(Debug, Default)]
 pub(crate) struct Timer {
     /// (stage, start, time of the stages it asked for so far).
     open: RefCell<Vec<(Stage, Instant, Duration)>>,
-    done: RefCell<StageTimes>,
+    /// (stage, own time, builds), in order of first build.
+    done: RefCell<Vec<(Stage, Duration, u64)>>,
+}
+
+/// The entry of `stage` in `done`, made if missing: found by the address
+/// of the name first, then by its text (two copies of one literal).
+fn entry(done: &mut Vec<(Stage, Duration, u64)>, stage: Stage) -> &mut (Stage, Duration, u64) {
+    let same_literal =
+        |s: &Stage| std::ptr::eq(s.as_ptr(), stage.as_ptr()) && s.len() == stage.len();
+    let at = match done.iter().position(|e| same_literal(&e.0)) {
+        Some(at) => at,
+        None => match done.iter().position(|e| e.0 == stage) {
+            Some(at) => at,
+            None => {
+                done.push((stage, Duration::ZERO, 0));
+                done.len() - 1
+            }
+        },
+    };
+    &mut done[at]
 }
 
 impl Timer {
@@ -63,20 +86,26 @@ impl Timer {
             parent.2 += spent;
         }
         let mut done = self.done.borrow_mut();
-        let entry = done.stages.entry(stage).or_default();
-        entry.0 += spent.saturating_sub(inner);
-        entry.1 += 1;
+        let e = entry(&mut done, stage);
+        e.1 += spent.saturating_sub(inner);
+        e.2 += 1;
         out
     }
 
     /// The times so far.
     pub(crate) fn times(&self) -> StageTimes {
-        self.done.borrow().clone()
+        let mut times = StageTimes::default();
+        for &(stage, t, k) in self.done.borrow().iter() {
+            let mine = times.stages.entry(stage).or_default();
+            mine.0 += t;
+            mine.1 += k;
+        }
+        times
     }
 
     /// The total own time of the stages finished so far.
     pub(crate) fn total(&self) -> Duration {
-        self.done.borrow().total()
+        self.done.borrow().iter().map(|e| e.1).sum()
     }
 }
 

@@ -1,8 +1,8 @@
 //! The ring-against-ring computations of this module on polygons whose
 //! vertices are small integer points (map vertices, below
 //! [`FAST_BITS`]): the same algorithms as the rational ones of
-//! [`super`] and [`crate::witness`], in `i128` with no allocation but the
-//! output's.
+//! [`super`] and [`crate::witness`], in `i64` and `i128` with no
+//! allocation but the output's.
 //!
 //! A point on an edge `a → b` is `a + t·(b − a)` with `t = n/d` exact; a
 //! point where a test is made is kept homogeneous, `(X, Y, W)` with
@@ -12,24 +12,27 @@
 //! Implementation note: with every coordinate `|c| < 2^29`
 //! ([`FAST_BITS`]):
 //! - a difference of two vertices has `|Δ| < 2^30`, a cross or dot
-//!   product of two differences `< 2·2^60 = 2^61`;
+//!   product of two differences `< 2·2^60 = 2^61`: both are `i64`;
 //! - a cut parameter `t = n/d` on a segment has `0 ≤ n ≤ d < 2^61` (`d` a
 //!   cross product `(b − a) × (e − c)` or a squared length `(b − a)·(b −
 //!   a)`, `n` the matching product with `c − a`), so comparing two, `n1·d2`
-//!   against `n2·d1`, stays below `2^122`;
+//!   against `n2·d1`, stays below `2^122` (`i128`);
 //! - a test parameter is a cut or the mediant `(n0 + n1)/(d0 + d1)` of two
-//!   consecutive cuts (strictly between them), `N ≤ D < 2^62`; its point
-//!   `X = a_x·D + N·Δ_x` has `|X| < 2^91 + 2^92 < 2^93`, `W = D < 2^62`;
+//!   consecutive cuts (strictly between them), `N ≤ D < 2^62` (`i64`); its
+//!   point `X = a_x·D + N·Δ_x` has `|X| < 2^91 + 2^92 < 2^93`, `W = D <
+//!   2^62`;
 //! - locating it against an edge `c → e` takes `Y − c_y·W` (`< 2^94`) and
 //!   the orientation `(e − c) × (X − c_x·W, Y − c_y·W)`, two products
 //!   below `2^30·2^94 = 2^124` and their difference below `2^125`;
 //! - an output point (a cut, `N = n`, `D = d`) has `|X| < 2^92`.
 //!
-//! Everything stays below `2^127`; `fast_bits_bound_holds` recomputes the
-//! worst case, and the differential tests compare every result with the
-//! rational path. Products are taken with [`mul`] (wrapping, so exact
-//! below the bound): fuzzing builds check every `i128` product for
-//! overflow through a library call, which the bound makes redundant.
+//! Everything stays below `2^63` where it is an `i64` and below `2^127`
+//! where it is an `i128`; `fast_bits_bound_holds` recomputes the worst
+//! case, and the differential tests compare every result with the
+//! rational path. Products are taken with [`mul`], [`wide`] (64 × 64 →
+//! 128 bits, one machine multiplication) and [`mul128`], all wrapping, so
+//! exact below the bound: fuzzing builds check every checked product for
+//! overflow, which the bound makes redundant.
 
 use super::{BoundaryEdge, Intersection};
 use rug::Rational;
@@ -67,24 +70,37 @@ pub(crate) fn small(p: &QPoint) -> Option<I> {
     Some([c(&p.x)?, c(&p.y)?])
 }
 
-fn sub(a: I, b: I) -> [i128; 2] {
-    [
-        i128::from(a[0]) - i128::from(b[0]),
-        i128::from(a[1]) - i128::from(b[1]),
-    ]
+/// A difference of two small points (`|Δ| < 2^30`).
+type D = [i64; 2];
+
+fn sub(a: I, b: I) -> D {
+    [a[0] - b[0], a[1] - b[1]]
 }
 
-/// `a·b`, exact below the module's bound.
+/// `a·b`, exact below the module's bound (`< 2^61` for the products of
+/// two differences).
 #[inline]
-fn mul(a: i128, b: i128) -> i128 {
+fn mul(a: i64, b: i64) -> i64 {
     a.wrapping_mul(b)
 }
 
-fn cross(u: [i128; 2], v: [i128; 2]) -> i128 {
+/// `a·b` in 128 bits: one 64×64 → 128 multiplication, exact.
+#[inline]
+fn wide(a: i64, b: i64) -> i128 {
+    i128::from(a).wrapping_mul(i128::from(b))
+}
+
+/// `a·b` for an `i128` below the module's bound, exact.
+#[inline]
+fn mul128(a: i128, b: i64) -> i128 {
+    a.wrapping_mul(i128::from(b))
+}
+
+fn cross(u: D, v: D) -> i64 {
     mul(u[0], v[1]) - mul(u[1], v[0])
 }
 
-fn dot(u: [i128; 2], v: [i128; 2]) -> i128 {
+fn dot(u: D, v: D) -> i64 {
     mul(u[0], v[0]) + mul(u[1], v[1])
 }
 
@@ -157,8 +173,8 @@ pub(crate) fn edges_meet(a: [I; 2], b: [I; 2]) -> bool {
 /// A parameter `n/d` on a segment, `d > 0`.
 #[derive(Clone, Copy, Debug)]
 pub(crate) struct Frac {
-    n: i128,
-    d: i128,
+    n: i64,
+    d: i64,
 }
 
 impl Frac {
@@ -166,7 +182,7 @@ impl Frac {
     const ONE: Frac = Frac { n: 1, d: 1 };
 
     fn cmp(self, o: Frac) -> Ordering {
-        mul(self.n, o.d).cmp(&mul(o.n, self.d))
+        wide(self.n, o.d).cmp(&wide(o.n, self.d))
     }
 
     /// Strictly between `self` and `o` (`self < o`).
@@ -274,9 +290,9 @@ fn cuts_into(a: I, b: I, q: &[I], out: &mut Vec<Frac>) {
 fn at(a: I, b: I, t: Frac) -> [i128; 3] {
     let d = sub(b, a);
     [
-        mul(i128::from(a[0]), t.d) + mul(t.n, d[0]),
-        mul(i128::from(a[1]), t.d) + mul(t.n, d[1]),
-        t.d,
+        wide(a[0], t.d) + wide(t.n, d[0]),
+        wide(a[1], t.d) + wide(t.n, d[1]),
+        i128::from(t.d),
     ]
 }
 
@@ -331,27 +347,24 @@ pub(crate) enum Locus {
 /// ring `q`: the same edges in the same order, the same half-open rule.
 fn locate(q: &[I], x: [i128; 3]) -> Locus {
     let n = q.len();
-    let w = x[2];
+    let w = i64::try_from(x[2]).expect("W below 2^62");
     let mut inside = false;
     for j in 0..n {
         let (a, b) = (q[j], q[next(j, q.len())]);
         // Signs of a_y − x_y and b_y − x_y, scaled by W > 0.
-        let ay = (mul(i128::from(a[1]), w) - x[1]).cmp(&0);
-        let by = (mul(i128::from(b[1]), w) - x[1]).cmp(&0);
+        let ay = (wide(a[1], w) - x[1]).cmp(&0);
+        let by = (wide(b[1], w) - x[1]).cmp(&0);
         if (ay == Ordering::Less && by == Ordering::Less)
             || (ay == Ordering::Greater && by == Ordering::Greater)
         {
             continue;
         }
         let e = sub(b, a);
-        let r = [
-            x[0] - mul(i128::from(a[0]), w),
-            x[1] - mul(i128::from(a[1]), w),
-        ];
-        let t = cross(e, r).cmp(&0);
+        let r = [x[0] - wide(a[0], w), x[1] - wide(a[1], w)];
+        let t = (mul128(r[1], e[0]) - mul128(r[0], e[1])).cmp(&0);
         let within = |k: usize| {
             let (lo, hi) = (a[k].min(b[k]), a[k].max(b[k]));
-            mul(i128::from(lo), w) <= x[k] && x[k] <= mul(i128::from(hi), w)
+            wide(lo, w) <= x[k] && x[k] <= wide(hi, w)
         };
         if t == Ordering::Equal && within(0) && within(1) {
             return Locus::OnEdge(j);
@@ -400,7 +413,7 @@ impl Bounds {
 struct Stretch {
     from: [i128; 3],
     to: [i128; 3],
-    dir: [i128; 2],
+    dir: D,
     /// `from × to`, twice the signed area it adds to its cycle's: with
     /// `from = a + t0·d` and `to = a + t1·d` on the edge `a → a + d`, it
     /// is `(t1 − t0)·(a × d)`.
@@ -450,7 +463,7 @@ fn boundary_pieces(p: &[I], q: &[I], p_is_first: bool, shared: bool, out: &mut V
                 from,
                 to,
                 dir: d,
-                area: Area::of(w[0], w[1], cross([a[0].into(), a[1].into()], d)),
+                area: Area::of(w[0], w[1], cross(a, d)),
                 on_p,
                 on_q,
             });
@@ -467,17 +480,17 @@ fn boundary_pieces(p: &[I], q: &[I], p_is_first: bool, shared: bool, out: &mut V
 #[derive(Clone, Debug)]
 enum Area {
     Whole(i128),
-    Part { n: i128, d: i128, c: i128 },
+    Part { n: i128, d: i128, c: i64 },
 }
 
 impl Area {
-    fn of(t0: Frac, t1: Frac, c: i128) -> Area {
+    fn of(t0: Frac, t1: Frac, c: i64) -> Area {
         if t0.d == 1 && t1.d == 1 {
-            return Area::Whole(mul(t1.n - t0.n, c));
+            return Area::Whole(wide(t1.n - t0.n, c));
         }
         Area::Part {
-            n: mul(t1.n, t0.d) - mul(t0.n, t1.d),
-            d: mul(t0.d, t1.d),
+            n: wide(t1.n, t0.d) - wide(t0.n, t1.d),
+            d: wide(t0.d, t1.d),
             c,
         }
     }
@@ -510,8 +523,8 @@ fn counter_clockwise<'a>(cycle: impl Iterator<Item = &'a Stretch>) -> bool {
 }
 
 /// [`super`]'s clockwise order from `r` on integer directions.
-fn clockwise_from(r: [i128; 2], u: [i128; 2], v: [i128; 2]) -> Ordering {
-    let half = |w: [i128; 2]| {
+fn clockwise_from(r: D, u: D, v: D) -> Ordering {
+    let half = |w: D| {
         let c = cross(r, w);
         u8::from(!(c < 0 || (c == 0 && dot(r, w) < 0)))
     };
@@ -523,6 +536,16 @@ pub(crate) fn intersection(p: &[I], q: &[I]) -> Intersection {
     let mut pieces = Vec::new();
     boundary_pieces(p, q, true, true, &mut pieces);
     boundary_pieces(q, p, false, false, &mut pieces);
+    // The pieces by their start (then by index): the pieces leaving a
+    // point are one run of this order, found by binary search. Reduced
+    // ends are canonical, so equal points have equal triples.
+    let mut by_from: Vec<usize> = (0..pieces.len()).collect();
+    by_from.sort_unstable_by(|&x, &y| pieces[x].from.cmp(&pieces[y].from).then(x.cmp(&y)));
+    let leaving = |here: &[i128; 3]| {
+        let lo = by_from.partition_point(|&m| pieces[m].from < *here);
+        let len = by_from[lo..].partition_point(|&m| pieces[m].from <= *here);
+        &by_from[lo..lo + len]
+    };
     let mut used = vec![false; pieces.len()];
     let mut cycles = Vec::new();
     let mut components = 0;
@@ -537,9 +560,10 @@ pub(crate) fn intersection(p: &[I], q: &[I]) -> Intersection {
             cycle.push(k);
             let here = pieces[k].to;
             let back = [-pieces[k].dir[0], -pieces[k].dir[1]];
-            let next = (0..pieces.len())
+            let next = leaving(&here)
+                .iter()
+                .copied()
                 .filter(|&m| !used[m] || m == start)
-                .filter(|&m| pieces[m].from == here)
                 .min_by(|&x, &y| clockwise_from(back, pieces[x].dir, pieces[y].dir));
             match next {
                 Some(m) if m == start => break,
@@ -724,16 +748,21 @@ mod tests {
     #[test]
     fn fast_bits_bound_holds() {
         // The worst cases of the implementation note, in GMP integers.
-        let c = Integer::from(1) << FAST_BITS; // |coordinate| < c
+        let two = |k: u32| Integer::from(1) << k;
+        let c = two(FAST_BITS); // |coordinate| < c
         let delta = Integer::from(&c * 2u32); // |Δ| < 2c
-        let prod = Integer::from(&delta * &delta) * 2u32; // cross, dot
+        let prod = Integer::from(&delta * &delta) * 2u32; // cross, dot: i64
+        assert!(prod <= two(61) && prod < two(63));
         let cut_d = prod.clone(); // 0 ≤ n ≤ d < prod
-        assert!(Integer::from(&cut_d * &cut_d) < Integer::from(1) << 127);
-        let big_d = Integer::from(&cut_d * 2u32); // mediant
+        assert!(Integer::from(&cut_d * &cut_d) < two(127));
+        let big_d = Integer::from(&cut_d * 2u32); // mediant: i64
+        assert!(big_d < two(63));
         let x = Integer::from(&c * &big_d) + Integer::from(&big_d * &delta);
         let y_off: Integer = &x + Integer::from(&c * &big_d);
         let orient = Integer::from(&delta * &y_off) * 2u32;
-        assert!(orient < Integer::from(1) << 127, "{orient}");
-        assert!(x < Integer::from(1) << 93);
+        assert!(orient < two(127), "{orient}");
+        assert!(x < two(93));
+        // An area term: `a × d` in i64, the part fractions in i128.
+        assert!(Integer::from(&c * &delta) * 2u32 < two(63));
     }
 }
