@@ -44,6 +44,14 @@ fn narrow(x: i128, y: i128) -> bool {
     x.unsigned_abs() < 1 << VECTOR_FAST_BITS && y.unsigned_abs() < 1 << VECTOR_FAST_BITS
 }
 
+/// `x·y` for two values below `2^63` in magnitude (they are `i64`
+/// values): one 64 × 64 → 128-bit multiplication, exact.
+#[inline]
+fn wide(x: i128, y: i128) -> i128 {
+    debug_assert!(narrow(x, y));
+    i128::from(x as i64).wrapping_mul(i128::from(y as i64))
+}
+
 /// Whether a direction lies in the half-turn `[0, π)` measured
 /// counter-clockwise from the positive x axis: `y > 0`, or `y = 0 < x`.
 #[inline]
@@ -144,10 +152,10 @@ impl Vector {
         debug_assert!(narrow(self.x, self.y) && narrow(o.x, o.y));
         // Below the bound nothing wraps (products < 2^126, difference
         // < 2^127); the wrapping operations only spare the overflow checks
-        // of fuzzing builds, which the bound makes redundant.
-        self.x
-            .wrapping_mul(o.y)
-            .wrapping_sub(self.y.wrapping_mul(o.x))
+        // of fuzzing builds, which the bound makes redundant. Components
+        // below 2^63 are i64 values, so each product is one 64 × 64 →
+        // 128-bit multiplication.
+        wide(self.x, o.y).wrapping_sub(wide(self.y, o.x))
     }
 
     /// [`Vector::dot`] without the check, as [`Vector::cross_fast`].
@@ -155,9 +163,7 @@ impl Vector {
     pub(crate) fn dot_fast(self, o: Vector) -> i128 {
         debug_assert!(narrow(self.x, self.y) && narrow(o.x, o.y));
         // As in `cross_fast`: exact below the bound.
-        self.x
-            .wrapping_mul(o.x)
-            .wrapping_add(self.y.wrapping_mul(o.y))
+        wide(self.x, o.x).wrapping_add(wide(self.y, o.y))
     }
 
     /// The sign of `self × o` (`Greater`: `o` is counter-clockwise from
@@ -463,7 +469,7 @@ impl QPoint {
         if let (Some(u), Some(w)) = (homogeneous_small(self), homogeneous_small(o)) {
             // Implementation note: |X|, |Y|, W < 2^HOMOGENEOUS_FAST_BITS = 2^41,
             // so each product is below 2^82 and W_u·W_w > 0 keeps the sign.
-            return (u[0] * w[1]).cmp(&(u[1] * w[0]));
+            return wide(u[0], w[1]).cmp(&wide(u[1], w[0]));
         }
         Rational::from(&self.x * &o.y).cmp(&Rational::from(&self.y * &o.x))
     }
@@ -670,12 +676,19 @@ pub(crate) fn det3_sign_small(a: [i128; 3], b: [i128; 3], c: [i128; 3]) -> Order
     debug_assert!(a.iter().chain(&b).chain(&c).all(|&v| homogeneous_fits(v)));
     // Exact below the bound (minors < 2^83, terms < 2^124, sum < 2^126):
     // wrapping operations only spare fuzzing builds' redundant checks.
-    let (m, s) = (i128::wrapping_mul, i128::wrapping_sub);
-    let m0 = s(m(b[1], c[2]), m(b[2], c[1]));
-    let m1 = s(m(b[0], c[2]), m(b[2], c[0]));
-    let m2 = s(m(b[0], c[1]), m(b[1], c[0]));
-    s(m(a[0], m0), m(a[1], m1))
-        .wrapping_add(m(a[2], m2))
+    // Every entry fits an i64 (below 2^41), so each minor's products are
+    // 64 × 64 → 128-bit multiplications, one machine instruction each,
+    // and each term multiplies an i128 by a sign-extended i64.
+    let narrow = |v: [i128; 3]| v.map(|x| x as i64);
+    let (a, b, c) = (narrow(a), narrow(b), narrow(c));
+    let wide = |x: i64, y: i64| i128::from(x).wrapping_mul(i128::from(y));
+    let term = |x: i64, minor: i128| minor.wrapping_mul(i128::from(x));
+    let s = i128::wrapping_sub;
+    let m0 = s(wide(b[1], c[2]), wide(b[2], c[1]));
+    let m1 = s(wide(b[0], c[2]), wide(b[2], c[0]));
+    let m2 = s(wide(b[0], c[1]), wide(b[1], c[0]));
+    s(term(a[0], m0), term(a[1], m1))
+        .wrapping_add(term(a[2], m2))
         .cmp(&0)
 }
 

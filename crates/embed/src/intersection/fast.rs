@@ -268,17 +268,28 @@ fn cuts_into(a: I, b: I, q: &[I], out: &mut Vec<Frac>) {
     out.extend([Frac::ZERO, Frac::ONE]);
     // The box of `ab`: an edge of `q` entirely beyond it on one side
     // cannot meet it, and is skipped before the orientation tests (the
-    // same first test `segments_meet` makes).
+    // same first test `segments_meet` makes). Each vertex of `q` gets an
+    // outcode, one bit per side of the box it lies beyond, computed once:
+    // an edge lies beyond one side exactly when its ends' codes share a
+    // bit.
     let (xl, xh) = (a[0].min(b[0]), a[0].max(b[0]));
     let (yl, yh) = (a[1].min(b[1]), a[1].max(b[1]));
+    let code = |v: I| {
+        u8::from(v[0] < xl)
+            | u8::from(v[0] > xh) << 1
+            | u8::from(v[1] < yl) << 2
+            | u8::from(v[1] > yh) << 3
+    };
     let n = q.len();
+    let Some(&first) = q.first() else { return };
+    let mut from = code(first);
     for j in 0..n {
-        let (c, e) = (q[j], q[next(j, n)]);
-        if c[0].max(e[0]) < xl || c[0].min(e[0]) > xh || c[1].max(e[1]) < yl || c[1].min(e[1]) > yh
-        {
-            continue;
+        let e = q[next(j, n)];
+        let to = code(e);
+        if from & to == 0 {
+            segment_cuts_in_box(a, b, q[j], e, out);
         }
-        segment_cuts_in_box(a, b, c, e, out);
+        from = to;
     }
     if out.len() > 2 {
         out.sort_by(|x, y| x.cmp(*y));
@@ -347,13 +358,28 @@ pub(crate) enum Locus {
 /// ring `q`: the same edges in the same order, the same half-open rule.
 fn locate(q: &[I], x: [i128; 3]) -> Locus {
     let n = q.len();
+    if n == 0 {
+        return Locus::Outside;
+    }
     let w = i64::try_from(x[2]).expect("W below 2^62");
+    // The sign of v − Y for an integer v, Y = X_y / W: with Y's floor `yq`
+    // (a point of a small segment: |Y| < 2^29) and whether Y is whole,
+    // v − Y has the sign of v − yq, but for v = yq below a fraction. Each
+    // vertex's sign is found once and carried to the next edge.
+    let wide_w = i128::from(w);
+    let yq = i64::try_from(x[1].div_euclid(wide_w)).expect("a small ordinate");
+    let whole = x[1].rem_euclid(wide_w) == 0;
+    let side = |v: i64| match v.cmp(&yq) {
+        Ordering::Equal if !whole => Ordering::Less,
+        o => o,
+    };
     let mut inside = false;
+    let mut ay = side(q[0][1]);
     for j in 0..n {
         let (a, b) = (q[j], q[next(j, q.len())]);
-        // Signs of a_y − x_y and b_y − x_y, scaled by W > 0.
-        let ay = (wide(a[1], w) - x[1]).cmp(&0);
-        let by = (wide(b[1], w) - x[1]).cmp(&0);
+        // Signs of a_y − Y and b_y − Y.
+        let by = side(b[1]);
+        let ay = std::mem::replace(&mut ay, by);
         if (ay == Ordering::Less && by == Ordering::Less)
             || (ay == Ordering::Greater && by == Ordering::Greater)
         {
