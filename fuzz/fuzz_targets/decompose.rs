@@ -18,8 +18,7 @@
 
 use libfuzzer_sys::fuzz_target;
 use wai_cells::{vertex_bound, Decomposition};
-use wai_exact::{Point, RatPoint};
-use wai_map::Map;
+use wai_exact::RatPoint;
 use wai_visibility::VisibilityIndex;
 
 fuzz_target!(|data: &[u8]| wai_fuzz::inline(|| decompose(data)));
@@ -61,7 +60,6 @@ fn decompose(data: &[u8]) {
     // (`skeleton_at`; the visibility target holds it equal to
     // `Skeleton::of` on V_p).
     let index = VisibilityIndex::new(&map);
-    let v = map.vertices();
     let agrees = |p: &RatPoint, origin: usize, class: usize| {
         let sk = index
             .skeleton_at(p)
@@ -85,9 +83,9 @@ fn decompose(data: &[u8]) {
     }
 
     // Beyond the i64 paths: scaled by 2^31, the same decomposition.
-    let s: i128 = 1 << 31;
-    let ring = v.iter().map(|p| Point::new(p.x * s, p.y * s)).collect();
-    let (big, _) = Map::from_ring(ring).expect("a scaled valid map is valid");
+    let big = map
+        .scaled_up(31)
+        .expect("a small map scaled by 2^31 is within the bound");
     let e = Decomposition::new(&big);
     assert_eq!(
         d.counts(),

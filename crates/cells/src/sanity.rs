@@ -644,19 +644,12 @@ mod tests {
     #[test]
     fn sides_of_edge_lines_agree_with_orientations() {
         use crate::rays::visibility_rays;
-        use wai_exact::Point;
-        use wai_map::Map;
         let (mut fast, mut all) = (0, 0);
         for kind in wai_gen::RANDOM_KINDS {
             for seed in 0..2 {
                 let map = wai_gen::random(kind.id, kind.min_n.max(8) + 2, seed).unwrap();
                 for shift in [0u32, 31, 50] {
-                    let ring = map
-                        .vertices()
-                        .iter()
-                        .map(|p| Point::new(p.x << shift, p.y << shift))
-                        .collect();
-                    let (map, _) = Map::from_ring(ring).unwrap();
+                    let map = map.scaled_up(shift).unwrap();
                     let arr = Arrangement::new(&map, &visibility_rays(&map));
                     let geo = Geo::new(&arr);
                     for e in 0..arr.edge_count() {

@@ -100,6 +100,37 @@ impl Map {
         ))
     }
 
+    /// The map enlarged `2^bits` times about the origin: every coordinate
+    /// shifted left by `bits`, the scale and names kept. Enlarging keeps
+    /// every invariant but the coordinate bound (a simple ring stays simple,
+    /// turns keep their signs), so nothing is validated again; a coordinate
+    /// that would reach `2^MAX_COORD_BITS` is an error, located as
+    /// [`Map::from_ring`] locates it. Tests use it to take a map off the
+    /// narrow-integer fast paths.
+    pub fn scaled_up(&self, bits: u32) -> Result<Map, MapErrors> {
+        let max = wai_exact::MAX_COORD_BITS;
+        for (i, p) in self.vertices.iter().enumerate() {
+            let need = (128 - p.x.unsigned_abs().leading_zeros())
+                .max(128 - p.y.unsigned_abs().leading_zeros())
+                + bits;
+            if need > max {
+                return Err(MapErrors(vec![crate::MapError::CoordinateTooLarge {
+                    path: format!("vertex {i}"),
+                    bits: u64::from(need),
+                    max,
+                }]));
+            }
+        }
+        Ok(Map {
+            vertices: self
+                .vertices
+                .iter()
+                .map(|p| Point::new(p.x << bits, p.y << bits))
+                .collect(),
+            ..self.clone()
+        })
+    }
+
     /// Build from a normalised ring, reducing the scale to the least one.
     fn assemble(
         name: Option<String>,

@@ -494,12 +494,7 @@ mod tests {
         let mut fast = 0;
         for map in &maps {
             for shift in [0u32, 20, 40, 55] {
-                let ring = map
-                    .vertices()
-                    .iter()
-                    .map(|p| Point::new(p.x << shift, p.y << shift))
-                    .collect();
-                let (map, _) = Map::from_ring(ring).unwrap();
+                let map = map.scaled_up(shift).unwrap();
                 let index = VisibilityIndex::new(&map);
                 let v = map.vertices();
                 for p in interior_points(&map, 7, 3) {

@@ -257,12 +257,7 @@ fn scaled_maps_take_the_exact_paths_and_agree() {
         wai_gen::random("special-orthogonal", 12, 1).unwrap(),
         wai_gen::family("corridor-niches", &[2]).unwrap(),
     ] {
-        let big: Vec<wai_exact::Point> = map
-            .vertices()
-            .iter()
-            .map(|p| wai_exact::Point::new(p.x << 60, p.y << 60))
-            .collect();
-        let scaled = Map::from_ring(big).unwrap().0;
+        let scaled = map.scaled_up(60).unwrap();
         let t = check_map(&scaled, 10, 5);
         assert!(t.queries > 50);
     }

@@ -211,12 +211,7 @@ fn big_coordinates_take_the_gmp_sweep_and_agree() {
     let mut rng = ChaCha8Rng::seed_from_u64(12);
     for seed in 0..3 {
         let map = wai_gen::random("special-orthogonal", 14, seed).unwrap();
-        let big: Vec<Point> = map
-            .vertices()
-            .iter()
-            .map(|p| Point::new(p.x << 90, p.y << 90))
-            .collect();
-        let scaled = Map::from_ring(big).unwrap().0;
+        let scaled = map.scaled_up(90).unwrap();
         let mut dirs = directions(scaled.vertices(), &mut rng);
         dirs.push((Integer::from(1) << 40, Integer::from(3)));
         dirs.push((Integer::from(-7), (Integer::from(1) << 50) + 1));

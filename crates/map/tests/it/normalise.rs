@@ -78,3 +78,39 @@ fn validate_all_agrees_with_from_ring_on_small_rings() {
     }
     assert!(valid > 100, "only {valid} valid rings");
 }
+
+/// Enlarging by a power of two equals validating the enlarged ring (which
+/// needs no normalisation), keeps names, and refuses a coordinate beyond
+/// the bound with its vertex.
+#[test]
+fn scaled_up_equals_the_validated_enlarged_ring() {
+    let ring = ring(&[
+        (0, 0),
+        (6, 0),
+        (6, 6),
+        (4, 6),
+        (4, 2),
+        (2, 2),
+        (2, 6),
+        (-3, 6),
+    ]);
+    let (map, _) = Map::from_ring(ring.clone()).unwrap();
+    let map = map.with_name("u");
+    for bits in [0, 1, 31, 60, 96] {
+        let big = map.scaled_up(bits).unwrap();
+        let enlarged = ring
+            .iter()
+            .map(|p| wai_exact::Point::new(p.x << bits, p.y << bits))
+            .collect();
+        let (want, norm) = Map::from_ring(enlarged).unwrap();
+        assert!(norm.is_identity());
+        assert_eq!(big, want.with_name("u"), "2^{bits}");
+        assert_eq!(big.reflex_vertices(), map.reflex_vertices());
+    }
+    // 6 needs 3 bits: 3 + 98 > 100.
+    let err = map.scaled_up(98).unwrap_err().to_string();
+    assert!(
+        err.contains("vertex 1") && err.contains("101 bits"),
+        "{err}"
+    );
+}
