@@ -38,8 +38,10 @@ fn fast(ps: &[Point]) -> bool {
 /// (slow) overflow check, their product being below 2^126.
 #[inline]
 pub fn mul_checked(a: i128, b: i128) -> Option<i128> {
-    if i64::try_from(a).is_ok() && i64::try_from(b).is_ok() {
-        Some(a * b)
+    if let (Ok(x), Ok(y)) = (i64::try_from(a), i64::try_from(b)) {
+        // A product of two i64 values fits: one 64 × 64 → 128-bit
+        // multiplication, with no overflow check to make.
+        Some(i128::from(x).wrapping_mul(i128::from(y)))
     } else {
         a.checked_mul(b)
     }
