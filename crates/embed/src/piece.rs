@@ -304,6 +304,9 @@ impl Piece {
             Piece::Point(p) => p.clone(),
             Piece::Segment(a, b) => a.add(b).scale(&Rational::from((1, 2))),
             Piece::Polygon(v) => {
+                if let Some(mean) = small_mean(v) {
+                    return mean;
+                }
                 // The vertices' mean, summed in place.
                 let (mut x, mut y) = (Rational::new(), Rational::new());
                 for p in v {
@@ -540,6 +543,36 @@ pub fn part_points(pieces: &[Piece], lines: &[(QPoint, QPoint)]) -> Vec<QPoint> 
     parts.iter().map(Piece::inner_point).collect()
 }
 
+/// The mean of the points in checked `i128` fractions kept in lowest
+/// terms, if no step overflows (then the caller sums in GMP): the same
+/// rational point, without a GMP operation per vertex.
+fn small_mean(v: &[QPoint]) -> Option<QPoint> {
+    /// `a/b + c/d` in lowest terms (`b, d > 0`, both in lowest terms).
+    fn add((a, b): (i128, i128), (c, d): (i128, i128)) -> Option<(i128, i128)> {
+        let g = gcd(b, d);
+        let (b1, d1) = (b / g, d / g);
+        let num = a.checked_mul(d1)?.checked_add(c.checked_mul(b1)?)?;
+        let den = b.checked_mul(d1)?;
+        let h = gcd(num.checked_abs()?, den);
+        Some((num / h, den / h))
+    }
+    fn gcd(x: i128, y: i128) -> i128 {
+        // Both non-negative and not both zero (a denominator is one).
+        wai_exact::gcd_u128(x.unsigned_abs(), y.unsigned_abs()) as i128
+    }
+    let part = |q: &Rational| Some((q.numer().to_i128()?, q.denom().to_i128()?));
+    let (mut x, mut y) = ((0, 1), (0, 1));
+    for p in v {
+        x = add(x, part(&p.x)?)?;
+        y = add(y, part(&p.y)?)?;
+    }
+    let n = i128::try_from(v.len()).ok()?;
+    let mean = |(num, den): (i128, i128)| -> Option<Rational> {
+        Some(Rational::from((num, den.checked_mul(n)?)))
+    };
+    Some(QPoint::new(mean(x)?, mean(y)?))
+}
+
 /// Where segment `pq` meets the line through `a` and `b` (they cross).
 /// Where the line through `p` and `q` meets the line through `a` and `b`
 /// (which must not be parallel).
@@ -555,6 +588,50 @@ pub(crate) fn line_cut(p: &QPoint, q: &QPoint, a: &QPoint, b: &QPoint) -> QPoint
 mod tests {
     use super::int as pt;
     use super::*;
+
+    /// The `i128` mean equals the GMP mean, on polygons of fractions of
+    /// every size and on ones whose sums overflow (which fall back).
+    #[test]
+    fn small_means_equal_gmp_means() {
+        let gmp = |v: &[QPoint]| {
+            let (mut x, mut y) = (Rational::new(), Rational::new());
+            for p in v {
+                x += &p.x;
+                y += &p.y;
+            }
+            QPoint::new(x, y).scale(&Rational::from((1, v.len())))
+        };
+        let q = |n: i128, d: i128| Rational::from((n, d));
+        let mut seen = (0, 0);
+        for k in 0..200i128 {
+            // Every fifth polygon has 100-bit numerators and denominators,
+            // every tenth 120-bit ones, whose sums leave the i128 range.
+            let shift = match k % 10 {
+                0 => 120,
+                5 => 100,
+                _ => 0,
+            };
+            let big = Rational::from(rug::Integer::from(1) << shift);
+            let v: Vec<QPoint> = (0..3 + k % 5)
+                .map(|i| {
+                    QPoint::new(
+                        q((i * 7 + k) - 11, 1 + (i * k) % 13) * &big,
+                        q(k - i * 3, 1 + i + k % 7) / &big,
+                    )
+                })
+                .collect();
+            let want = gmp(&v);
+            match small_mean(&v) {
+                Some(m) => {
+                    assert_eq!(m, want, "{v:?}");
+                    seen.0 += 1;
+                }
+                None => seen.1 += 1,
+            }
+            assert_eq!(Piece::Polygon(v).inner_point(), want);
+        }
+        assert!(seen.0 > 100 && seen.1 > 10, "{seen:?}");
+    }
 
     #[test]
     fn spans_of_a_square_a_segment_and_a_point() {
