@@ -413,7 +413,7 @@ impl<'a> Geo<'a> {
         let p = self.arr.small[v].expect("bits are of small points");
         let s = if lb < 64 && pb < 64 {
             // Every entry is an i64 value: 64 × 64 → 128-bit products.
-            let w = |a: i128, b: i128| i128::from(a as i64).wrapping_mul(i128::from(b as i64));
+            let w = |a: i128, b: i128| wai_exact::mul_wide(a as i64, b as i64);
             w(l[0], p[0])
                 .wrapping_add(w(l[1], p[1]))
                 .wrapping_add(w(l[2], p[2]))

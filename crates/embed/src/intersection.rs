@@ -646,11 +646,9 @@ mod tests {
         }
     }
 
-    /// The integer intersection (with its shared crossings and the inside
-    /// and outside it infers across proper cuts, checked against `locate`
-    /// in this build) equals the rational one on generated maps laid over
-    /// each other at small offsets: collinear edges, shared vertices,
-    /// corners on edges and proper crossings.
+    /// The integer intersection equals the rational one on generated maps
+    /// laid over each other at small offsets: collinear edges, shared
+    /// vertices, corners on edges and proper crossings.
     #[test]
     fn integer_intersections_equal_rational_ones_on_generated_maps() {
         let rings: Vec<Vec<QPoint>> = (0..24)

@@ -34,14 +34,20 @@ fn fast(ps: &[Point]) -> bool {
         .all(|p| fits_bits(p.x, INTERSECTION_FAST_BITS) && fits_bits(p.y, INTERSECTION_FAST_BITS))
 }
 
+/// `a · b` for two `i64` values: one 64 × 64 → 128-bit multiplication,
+/// exact (the product is below `2^126`), with no overflow check to make —
+/// fuzzing builds check every `i128` product through a library call.
+#[inline]
+pub fn mul_wide(a: i64, b: i64) -> i128 {
+    i128::from(a).wrapping_mul(i128::from(b))
+}
+
 /// `a · b`, or `None` on overflow; factors that fit in `i64` skip the
 /// (slow) overflow check, their product being below 2^126.
 #[inline]
 pub fn mul_checked(a: i128, b: i128) -> Option<i128> {
     if let (Ok(x), Ok(y)) = (i64::try_from(a), i64::try_from(b)) {
-        // A product of two i64 values fits: one 64 × 64 → 128-bit
-        // multiplication, with no overflow check to make.
-        Some(i128::from(x).wrapping_mul(i128::from(y)))
+        Some(mul_wide(x, y))
     } else {
         a.checked_mul(b)
     }

@@ -36,7 +36,7 @@ mod visibility;
 
 pub use intersection::{
     compare_intersections_along, construct_intersection, construct_intersection_i128, mul_checked,
-    side_of_intersection, INTERSECTION_FAST_BITS,
+    mul_wide, side_of_intersection, INTERSECTION_FAST_BITS,
 };
 pub use line::Line;
 pub use point::{gcd_u128, Point, RatPoint, MAX_COORD_BITS};

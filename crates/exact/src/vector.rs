@@ -45,11 +45,11 @@ fn narrow(x: i128, y: i128) -> bool {
 }
 
 /// `x·y` for two values below `2^63` in magnitude (they are `i64`
-/// values): one 64 × 64 → 128-bit multiplication, exact.
+/// values): [`crate::mul_wide`].
 #[inline]
 fn wide(x: i128, y: i128) -> i128 {
     debug_assert!(narrow(x, y));
-    i128::from(x as i64).wrapping_mul(i128::from(y as i64))
+    crate::mul_wide(x as i64, y as i64)
 }
 
 /// Whether a direction lies in the half-turn `[0, π)` measured
@@ -681,7 +681,7 @@ pub(crate) fn det3_sign_small(a: [i128; 3], b: [i128; 3], c: [i128; 3]) -> Order
     // and each term multiplies an i128 by a sign-extended i64.
     let narrow = |v: [i128; 3]| v.map(|x| x as i64);
     let (a, b, c) = (narrow(a), narrow(b), narrow(c));
-    let wide = |x: i64, y: i64| i128::from(x).wrapping_mul(i128::from(y));
+    let wide = crate::mul_wide;
     let term = |x: i64, minor: i128| minor.wrapping_mul(i128::from(x));
     let s = i128::wrapping_sub;
     let m0 = s(wide(b[1], c[2]), wide(b[2], c[1]));

@@ -29,15 +29,16 @@
 //! Everything stays below `2^63` where it is an `i64` and below `2^127`
 //! where it is an `i128`; `fast_bits_bound_holds` recomputes the worst
 //! case, and the differential tests compare every result with the
-//! rational path. Products are taken with [`mul`], [`wide`] (64 × 64 →
-//! 128 bits, one machine multiplication) and [`mul128`], all wrapping, so
+//! rational path. Products are taken with [`mul`], [`wai_exact::mul_wide`]
+//! (64 × 64 → 128 bits, one machine multiplication) and [`mul128`], all
+//! wrapping, so
 //! exact below the bound: fuzzing builds check every checked product for
 //! overflow, which the bound makes redundant.
 
 use super::{BoundaryEdge, Intersection};
 use rug::Rational;
 use std::cmp::Ordering;
-use wai_exact::QPoint;
+use wai_exact::{mul_wide as wide, QPoint};
 
 /// Ring vertices with `|x|, |y| < 2^FAST_BITS` take the integer path.
 pub const FAST_BITS: u32 = 29;
@@ -82,12 +83,6 @@ fn sub(a: I, b: I) -> D {
 #[inline]
 fn mul(a: i64, b: i64) -> i64 {
     a.wrapping_mul(b)
-}
-
-/// `a·b` in 128 bits: one 64×64 → 128 multiplication, exact.
-#[inline]
-fn wide(a: i64, b: i64) -> i128 {
-    i128::from(a).wrapping_mul(i128::from(b))
 }
 
 /// `a·b` for an `i128` below the module's bound, exact.

@@ -84,16 +84,8 @@ fn validate_all_agrees_with_from_ring_on_small_rings() {
 /// the bound with its vertex.
 #[test]
 fn scaled_up_equals_the_validated_enlarged_ring() {
-    let ring = ring(&[
-        (0, 0),
-        (6, 0),
-        (6, 6),
-        (4, 6),
-        (4, 2),
-        (2, 2),
-        (2, 6),
-        (-3, 6),
-    ]);
+    // An L with a reflex vertex and a negative coordinate.
+    let ring = ring(&[(0, 0), (6, 0), (6, 2), (2, 2), (2, 5), (-3, 5)]);
     let (map, _) = Map::from_ring(ring.clone()).unwrap();
     let map = map.with_name("u");
     for bits in [0, 1, 31, 60, 96] {
