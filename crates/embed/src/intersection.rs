@@ -549,6 +549,18 @@ mod tests {
 
     use crate::piece::ints as ring;
 
+    /// A U: two arms of width 2 around a notch, open at the top.
+    const U: [(i64, i64); 8] = [
+        (0, 0),
+        (6, 0),
+        (6, 6),
+        (4, 6),
+        (4, 2),
+        (2, 2),
+        (2, 6),
+        (0, 6),
+    ];
+
     #[test]
     fn two_squares_one_square_of_intersection() {
         let p = ring(&[(0, 0), (4, 0), (4, 4), (0, 4)]);
@@ -568,16 +580,7 @@ mod tests {
     #[test]
     fn a_comb_and_a_bar_meet_in_two_components() {
         // A U shape and a bar across both of its arms.
-        let u = ring(&[
-            (0, 0),
-            (6, 0),
-            (6, 6),
-            (4, 6),
-            (4, 2),
-            (2, 2),
-            (2, 6),
-            (0, 6),
-        ]);
+        let u = ring(&U);
         let bar = ring(&[(-1, 3), (7, 3), (7, 5), (-1, 5)]);
         let x = Intersection::of(&u, &bar);
         assert_eq!(x.components(), 2);
@@ -593,16 +596,7 @@ mod tests {
     fn ring_tests_on_the_integer_form_agree_with_rationals() {
         let shapes: Vec<Vec<(i64, i64)>> = vec![
             vec![(0, 0), (4, 0), (4, 4), (0, 4)],
-            vec![
-                (0, 0),
-                (6, 0),
-                (6, 6),
-                (4, 6),
-                (4, 2),
-                (2, 2),
-                (2, 6),
-                (0, 6),
-            ],
+            U.to_vec(),
             vec![(-1, 3), (7, 3), (7, 5), (-1, 5)],
             vec![(0, 0), (5, 1), (2, 4)],
             vec![(3, -1), (5, 1), (1, 5), (-1, 3)],
@@ -690,17 +684,8 @@ mod tests {
 
     #[test]
     fn pieces_of_a_segment_inside_a_polygon() {
-        let u = ring(&[
-            (0, 0),
-            (6, 0),
-            (6, 6),
-            (4, 6),
-            (4, 2),
-            (2, 2),
-            (2, 6),
-            (0, 6),
-        ]);
-        let pt = |x: i64, y: i64| QPoint::new(Rational::from(x), Rational::from(y));
+        let u = ring(&U);
+        let pt = crate::piece::int;
         assert_eq!(pieces_inside(&pt(-1, 4), &pt(7, 4), &u), 2);
         assert_eq!(pieces_inside(&pt(-1, 1), &pt(7, 1), &u), 1);
         assert_eq!(pieces_inside(&pt(-1, 8), &pt(7, 8), &u), 0);
