@@ -16,13 +16,20 @@ fn round_trip(reader: &str, loaded: Result<Loaded, MapErrors>) {
         Ok(again) => again,
         Err(e) => panic!("{reader}: to_json wrote a map from_json rejects: {e}\n{text}"),
     };
-    assert_eq!(again.map, loaded.map, "{reader}: round trip changed the map\n{text}");
+    assert_eq!(
+        again.map, loaded.map,
+        "{reader}: round trip changed the map\n{text}"
+    );
     assert!(
         again.normalisation.is_identity(),
         "{reader}: a written map needed normalising again: {:?}\n{text}",
         again.normalisation
     );
-    assert_eq!(to_json(&again.map), text, "{reader}: to_json is not a fixed point");
+    assert_eq!(
+        to_json(&again.map),
+        text,
+        "{reader}: to_json is not a fixed point"
+    );
 }
 
 fuzz_target!(|bytes: &[u8]| {

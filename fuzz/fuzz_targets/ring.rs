@@ -31,8 +31,12 @@ impl<'a> Arbitrary<'a> for Ring {
         let mut points = Vec::with_capacity(small.len());
         for (x, y) in small {
             let scale = 1i128 << shift; // |x| <= 2^7, so |x| * 2^120 <= 2^127
-            let x = i128::from(x).checked_mul(scale).and_then(|x| x.checked_add(offset.0));
-            let y = i128::from(y).checked_mul(scale).and_then(|y| y.checked_add(offset.1));
+            let x = i128::from(x)
+                .checked_mul(scale)
+                .and_then(|x| x.checked_add(offset.0));
+            let y = i128::from(y)
+                .checked_mul(scale)
+                .and_then(|y| y.checked_add(offset.1));
             match (x, y) {
                 (Some(x), Some(y)) => points.push(Point::new(x, y)),
                 _ => return Err(arbitrary::Error::IncorrectFormat),
@@ -49,7 +53,9 @@ fuzz_target!(|ring: Ring| {
     // Beyond the supported size both must refuse, with that error (a
     // disagreement here was found by this target and fixed in wai-map).
     if points.iter().any(|p| !p.is_supported()) {
-        assert!(problems.iter().any(|e| matches!(e, wai_map::MapError::CoordinateTooLarge { .. })));
+        assert!(problems
+            .iter()
+            .any(|e| matches!(e, wai_map::MapError::CoordinateTooLarge { .. })));
     }
     match &built {
         Ok(_) => assert!(

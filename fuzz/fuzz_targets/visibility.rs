@@ -102,9 +102,9 @@ fuzz_target!(|data: &[u8]| {
             let vp = got.unwrap_or_else(|e| panic!("interior point {p} in {name}: {e}"));
             let sk = Skeleton::of(&map, &vp)
                 .unwrap_or_else(|e| panic!("no skeleton at interior point {p} in {name}: {e}"));
-            let at = index
-                .skeleton_at(&p)
-                .unwrap_or_else(|e| panic!("skeleton_at fails at interior point {p} in {name}: {e}"));
+            let at = index.skeleton_at(&p).unwrap_or_else(|e| {
+                panic!("skeleton_at fails at interior point {p} in {name}: {e}")
+            });
             assert_eq!(
                 at,
                 MapSkeleton::of(&sk),

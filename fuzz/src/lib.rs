@@ -25,13 +25,20 @@ use wai_map::Map;
 #[global_allocator]
 static ALLOCATOR: mimalloc::MiMalloc = mimalloc::MiMalloc;
 
-/// Runs `f` on a rayon pool of one thread. libFuzzer runs one input at a
-/// time (parallel fuzzing is `-jobs`/`-workers`, one process each); inside
-/// the pool the decomposition's parallel loops run inline, instead of each
-/// loop of a small map being handed from libFuzzer's thread to a worker.
+/// Runs `f` on a rayon pool of one thread: libFuzzer's own. libFuzzer runs
+/// one input at a time (parallel fuzzing is `-jobs`/`-workers`, one
+/// process each); inside the pool the decomposition's parallel loops run
+/// inline, and since the pool's one thread is the calling thread
+/// (`use_current_thread`), no input is handed to another thread and back.
 pub fn inline<R: Send>(f: impl FnOnce() -> R + Send) -> R {
     static POOL: OnceLock<Option<rayon::ThreadPool>> = OnceLock::new();
-    let pool = POOL.get_or_init(|| rayon::ThreadPoolBuilder::new().num_threads(1).build().ok());
+    let pool = POOL.get_or_init(|| {
+        rayon::ThreadPoolBuilder::new()
+            .num_threads(1)
+            .use_current_thread()
+            .build()
+            .ok()
+    });
     match pool {
         Some(pool) => pool.install(f),
         None => f(),

@@ -164,16 +164,21 @@ pub fn search(
             let take = &take;
             let state = &state;
             scope.spawn(move || {
-                // Each worker runs its maps inside a pool of its own thread:
-                // the decomposition's parallel loops then run inline instead
-                // of handing every loop of a small map to another thread
-                // (the workers already use every core, one map each; 15 %
-                // more maps a minute over `--maps all`). Not when there are
-                // fewer maps than workers, which is where a large map's own
-                // parallel loops use the idle cores.
+                // Each worker runs its maps inside a pool of one thread, the
+                // worker itself (`use_current_thread`): the decomposition's
+                // parallel loops then run inline instead of handing every
+                // loop of a small map to another thread (the workers already
+                // use every core, one map each), and no map is handed to a
+                // pool thread and back. Not when there are fewer maps than
+                // workers, which is where a large map's own parallel loops
+                // use the idle cores.
                 let inline = match few_maps {
                     true => None,
-                    false => rayon::ThreadPoolBuilder::new().num_threads(1).build().ok(),
+                    false => rayon::ThreadPoolBuilder::new()
+                        .num_threads(1)
+                        .use_current_thread()
+                        .build()
+                        .ok(),
                 };
                 while let Some((lane, index)) = take() {
                     let (kind, map): (String, Map) =
