@@ -25,20 +25,12 @@ use wai_map::Map;
 #[global_allocator]
 static ALLOCATOR: mimalloc::MiMalloc = mimalloc::MiMalloc;
 
-/// Runs `f` on a rayon pool of one thread: libFuzzer's own. libFuzzer runs
-/// one input at a time (parallel fuzzing is `-jobs`/`-workers`, one
-/// process each); inside the pool the decomposition's parallel loops run
-/// inline, and since the pool's one thread is the calling thread
-/// (`use_current_thread`), no input is handed to another thread and back.
+/// Runs `f` on [`wai_hunt::own_thread_pool`], built on libFuzzer's
+/// thread at the first input. libFuzzer runs one input at a time (parallel
+/// fuzzing is `-jobs`/`-workers`, one process each), always on that thread.
 pub fn inline<R: Send>(f: impl FnOnce() -> R + Send) -> R {
     static POOL: OnceLock<Option<rayon::ThreadPool>> = OnceLock::new();
-    let pool = POOL.get_or_init(|| {
-        rayon::ThreadPoolBuilder::new()
-            .num_threads(1)
-            .use_current_thread()
-            .build()
-            .ok()
-    });
+    let pool = POOL.get_or_init(wai_hunt::own_thread_pool);
     match pool {
         Some(pool) => pool.install(f),
         None => f(),

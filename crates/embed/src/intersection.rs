@@ -547,19 +547,7 @@ pub fn left_right(w: &QPoint, a: (&QPoint, &QPoint), b: (&QPoint, &QPoint)) -> O
 mod tests {
     use super::*;
 
-    use crate::piece::ints as ring;
-
-    /// A U: two arms of width 2 around a notch, open at the top.
-    const U: [(i64, i64); 8] = [
-        (0, 0),
-        (6, 0),
-        (6, 6),
-        (4, 6),
-        (4, 2),
-        (2, 2),
-        (2, 6),
-        (0, 6),
-    ];
+    use crate::piece::{ints as ring, U_RING as U};
 
     #[test]
     fn two_squares_one_square_of_intersection() {

@@ -162,6 +162,20 @@ pub fn ints(pts: &[(i64, i64)]) -> Vec<QPoint> {
     pts.iter().map(|&(x, y)| int(x, y)).collect()
 }
 
+/// A figure for tests, as [`ints`] takes it: a U, two arms of width 2
+/// around a notch, open at the top. A bar across both arms meets it in
+/// two regions.
+pub const U_RING: [(i64, i64); 8] = [
+    (0, 0),
+    (6, 0),
+    (6, 6),
+    (4, 6),
+    (4, 2),
+    (2, 2),
+    (2, 6),
+    (0, 6),
+];
+
 /// The closed axis-parallel box around some points: a cheap first test
 /// before the exact ones.
 #[derive(Clone, Debug)]

@@ -31,6 +31,6 @@ pub mod stream;
 pub mod summary;
 pub mod target;
 
-pub use search::{search, Limit, Outcome};
+pub use search::{own_thread_pool, search, Limit, Outcome};
 pub use stream::{parse_kinds, KindSpec, MapKind, Stream};
 pub use summary::{run, run_profiled, ClaimTally, FoundLargest, FoundViolation, Profile, Summary};

@@ -107,6 +107,19 @@ impl Lanes {
     }
 }
 
+/// A rayon pool of one thread, the calling thread itself
+/// (`use_current_thread`): inside it the decomposition's parallel loops
+/// run inline instead of handing every loop of a small map to another
+/// thread, and no map is handed to a pool thread and back. `None` if the
+/// calling thread already belongs to a pool.
+pub fn own_thread_pool() -> Option<rayon::ThreadPool> {
+    rayon::ThreadPoolBuilder::new()
+        .num_threads(1)
+        .use_current_thread()
+        .build()
+        .ok()
+}
+
 /// Runs `checkers` over `stream` until `limit` on as many worker threads
 /// as rayon's pool has (set the pool's size before calling), calling `progress(maps done, elapsed)` as
 /// maps finish. With `stop_early`, stops taking maps once a counterexample
@@ -164,21 +177,13 @@ pub fn search(
             let take = &take;
             let state = &state;
             scope.spawn(move || {
-                // Each worker runs its maps inside a pool of one thread, the
-                // worker itself (`use_current_thread`): the decomposition's
-                // parallel loops then run inline instead of handing every
-                // loop of a small map to another thread (the workers already
-                // use every core, one map each), and no map is handed to a
-                // pool thread and back. Not when there are fewer maps than
-                // workers, which is where a large map's own parallel loops
-                // use the idle cores.
+                // Each worker runs its maps inside its own pool (the workers
+                // already use every core, one map each). Not when there are
+                // fewer maps than workers, which is where a large map's own
+                // parallel loops use the idle cores.
                 let inline = match few_maps {
                     true => None,
-                    false => rayon::ThreadPoolBuilder::new()
-                        .num_threads(1)
-                        .use_current_thread()
-                        .build()
-                        .ok(),
+                    false => own_thread_pool(),
                 };
                 while let Some((lane, index)) = take() {
                     let (kind, map): (String, Map) =

@@ -63,16 +63,7 @@ mod tests {
     #[test]
     fn planted_two_regions_are_reported() {
         let ring = wai_embed::piece::ints;
-        let u = ring(&[
-            (0, 0),
-            (6, 0),
-            (6, 6),
-            (4, 6),
-            (4, 2),
-            (2, 2),
-            (2, 6),
-            (0, 6),
-        ]);
+        let u = ring(&wai_embed::piece::U_RING);
         let bar = ring(&[(-1, 3), (7, 3), (7, 5), (-1, 5)]);
         let v = check(&Intersection::of(&u, &bar)).expect("two regions");
         assert!(v.what.contains("in 2 regions"));

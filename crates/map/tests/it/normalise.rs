@@ -87,7 +87,7 @@ fn scaled_up_equals_the_validated_enlarged_ring() {
     // An L with a reflex vertex and a negative coordinate.
     let ring = ring(&[(0, 0), (6, 0), (6, 2), (2, 2), (2, 5), (-3, 5)]);
     let (map, _) = Map::from_ring(ring.clone()).unwrap();
-    let map = map.with_name("u");
+    let map = map.with_name("l");
     for bits in [0, 1, 31, 60, 96] {
         let big = map.scaled_up(bits).unwrap();
         let enlarged = ring
@@ -96,7 +96,7 @@ fn scaled_up_equals_the_validated_enlarged_ring() {
             .collect();
         let (want, norm) = Map::from_ring(enlarged).unwrap();
         assert!(norm.is_identity());
-        assert_eq!(big, want.with_name("u"), "2^{bits}");
+        assert_eq!(big, want.with_name("l"), "2^{bits}");
         assert_eq!(big.reflex_vertices(), map.reflex_vertices());
     }
     // 6 needs 3 bits: 3 + 98 > 100.
