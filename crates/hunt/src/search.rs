@@ -192,10 +192,15 @@ pub fn search(
                         Some(pool) => pool.install(|| run_profiled(checkers, [&map])),
                         None => run_profiled(checkers, [&map]),
                     };
-                    state
-                        .lock()
-                        .expect("no worker panics holding the lock")
-                        .done(lane, index);
+                    // The worker that finds a counterexample stops the
+                    // search itself: through the channel, the other
+                    // workers could take several more quick maps first.
+                    let found = stop_early && one.counterexamples().next().is_some();
+                    {
+                        let mut s = state.lock().expect("no worker panics holding the lock");
+                        s.done(lane, index);
+                        s.stop |= found;
+                    }
                     if tx.send((index, kind, light(one), p)).is_err() {
                         break;
                     }
@@ -204,12 +209,6 @@ pub fn search(
         }
         drop(tx);
         for (index, kind, one, p) in rx {
-            if stop_early && one.counterexamples().next().is_some() {
-                state
-                    .lock()
-                    .expect("no worker panics holding the lock")
-                    .stop = true;
-            }
             profile.absorb(&p);
             match per_kind.iter_mut().find(|(k, _, _)| *k == kind) {
                 Some((_, count, first)) => {
