@@ -22,12 +22,20 @@ pub struct Planted {
 }
 
 /// Every planted bug.
-pub const PLANTED: &[Planted] = &[Planted {
-    name: "shifted-labels",
-    what: "T3.2 fed a wrong skeleton key: the labels of V*_p shifted by one \
-           edge, so V_p rebuilt from the key differs wherever V_p has a spurious edge",
-    checker: SHIFTED_LABELS,
-}];
+pub const PLANTED: &[Planted] = &[
+    Planted {
+        name: "shifted-labels",
+        what: "T3.2 fed a wrong skeleton key: the labels of V*_p shifted by one \
+               edge, so V_p rebuilt from the key differs wherever V_p has a spurious edge",
+        checker: SHIFTED_LABELS,
+    },
+    Planted {
+        name: "panics",
+        what: "T3.2's checker panics on every map with two or more reflex vertices \
+               (a checker bug): the search must catch it, store the map and go on",
+        checker: PANICS,
+    },
+];
 
 /// The names of [`PLANTED`], for messages.
 pub fn names() -> Vec<&'static str> {
@@ -67,6 +75,14 @@ fn shifted_labels(study: &Study<'_>) -> Report {
     }
     report
 }
+
+/// A checker bug on purpose: T3.2's checker that panics on every map with
+/// r ≥ 2, and checks nothing on the others.
+pub const PANICS: Checker = Checker::new("T3.2", |study| {
+    let r = study.map().r();
+    assert!(r < 2, "planted panic: a map with {r} reflex vertices");
+    Report::new("T3.2")
+});
 
 #[cfg(test)]
 mod tests {

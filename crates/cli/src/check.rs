@@ -17,9 +17,10 @@ use std::path::{Path, PathBuf};
 use std::time::{Duration, Instant};
 
 use serde_json::Value;
+use wai_hunt::merge::{ShardRun, Shards};
 use wai_hunt::record::RunRecord;
 use wai_hunt::store::{StoreOptions, Stored};
-use wai_hunt::{Limit, Outcome, Stream};
+use wai_hunt::{Limit, Outcome, Shard, Stream};
 use wai_lemmas::Checker;
 
 use crate::Failure;
@@ -55,6 +56,12 @@ pub struct Args {
     /// Map i of a generated stream has seed S + i.
     #[arg(long, default_value_t = 0, value_parser = crate::options::count_u64, allow_negative_numbers = true)]
     pub seed: u64,
+    /// Run shard I of N (from 0): the maps of the run with the same other
+    /// arguments whose position is I modulo N (with --budget, in each kind,
+    /// for budget / N), so that N shards see each map once. With --record,
+    /// the record says which shard it is, for `wai merge`.
+    #[arg(long, value_name = "I/N", value_parser = parse_shard)]
+    pub shard: Option<Shard>,
     /// Worker threads (default: one per core).
     #[arg(long, value_parser = crate::options::positive_count, allow_negative_numbers = true)]
     pub threads: Option<usize>,
@@ -88,7 +95,7 @@ pub struct Args {
     #[arg(long)]
     pub plant: Option<String>,
     /// Re-run the claim of a stored counterexample file on its map instead.
-    #[arg(long, value_name = "FILE", conflicts_with_all = ["files", "count", "budget"])]
+    #[arg(long, value_name = "FILE", conflicts_with_all = ["files", "count", "budget", "shard"])]
     pub replay: Option<PathBuf>,
     /// Print where the time went: each study stage's and each checker's own
     /// time, longest first (with --json, a "profile" object).
@@ -98,12 +105,16 @@ pub struct Args {
     /// CLAIM (`wai claims` lists each claim's cases and which were never
     /// hit), for --evals evaluations or --budget; a map found is stored as
     /// a figure in --out (default counterexamples/).
-    #[arg(long, value_name = "CLAIM:CASE", conflicts_with_all = ["files", "replay", "plant"])]
+    #[arg(long, value_name = "CLAIM:CASE", conflicts_with_all = ["files", "replay", "plant", "shard"])]
     pub target: Option<String>,
     /// With --target: stop after this many evaluations (default 2000
     /// without --budget).
     #[arg(long, requires = "target", value_parser = crate::options::count_u64, allow_negative_numbers = true)]
     pub evals: Option<u64>,
+}
+
+fn parse_shard(s: &str) -> Result<Shard, String> {
+    s.parse()
 }
 
 /// The checkers of the run, planted bug in place.
@@ -203,6 +214,43 @@ fn stream(args: &Args) -> Result<Stream, Failure> {
     })
 }
 
+/// The run as a command, the same in every shard of it: the arguments
+/// that choose the maps and the checkers, the limit made explicit, without
+/// --shard, --threads and the options that only say where output goes.
+fn run_arguments(args: &Args, limit: Limit) -> String {
+    let mut words = vec!["wai check".to_owned()];
+    if !args.claims.is_empty() {
+        words.push(args.claims.join(","));
+    }
+    if !args.chapter.is_empty() {
+        let ch: Vec<String> = args.chapter.iter().map(u8::to_string).collect();
+        words.push(format!("--chapter {}", ch.join(",")));
+    }
+    if args.files.is_empty() {
+        words.push(format!("--maps {}", args.maps));
+    } else {
+        let files: Vec<String> = args.files.iter().map(|f| f.display().to_string()).collect();
+        words.push(format!("--files {}", files.join(" ")));
+    }
+    match limit {
+        Limit::Count(n) => words.push(format!("--count {n}")),
+        Limit::Budget(_) => words.push(format!(
+            "--budget {}",
+            args.budget.as_deref().unwrap_or_default()
+        )),
+    }
+    // Not --threads: a resource, like where output goes (the nodes of a
+    // cluster differ), and with a count the maps do not depend on it.
+    words.push(format!("--seed {}", args.seed));
+    if let Some(p) = &args.plant {
+        words.push(format!("--plant {p}"));
+    }
+    if args.first {
+        words.push("--first".to_owned());
+    }
+    words.join(" ")
+}
+
 /// The command line of this run, for records and notes.
 fn command_line() -> String {
     let mut words = vec!["wai".to_owned()];
@@ -291,16 +339,27 @@ pub fn run(args: &Args) -> Result<(), Failure> {
             .build_global();
     }
     let threads = rayon::current_num_threads() as u64;
+    let shard = args.shard.unwrap_or(Shard::WHOLE);
     let total = match limit {
-        Limit::Count(n) => Some(stream.len().map_or(n, |len| n.min(len))),
-        Limit::Budget(_) => stream.len(),
+        Limit::Count(n) => {
+            let run = stream.len().map_or(n, |len| n.min(len));
+            // The shard's positions i, i + N, … below the run's count.
+            Some(run.saturating_sub(shard.index).div_ceil(shard.count))
+        }
+        Limit::Budget(_) => None,
     };
     // The checkout's commit when the run starts: the code that ran.
     let commit = wai_hunt::provenance::commit();
-    let progress = Progress::new(total, budget);
-    let outcome = wai_hunt::search(&checkers, &stream, limit, args.first, &|done, elapsed| {
-        progress.update(done, elapsed)
-    });
+    let started = wai_hunt::provenance::utc_timestamp();
+    let progress = Progress::new(total, budget.map(|b| b / shard.count.max(1) as u32));
+    let outcome = wai_hunt::search(
+        &checkers,
+        &stream,
+        limit,
+        shard,
+        args.first,
+        &|done, elapsed| progress.update(done, elapsed),
+    );
     progress.bar.finish_and_clear();
     let out_dir = args.out.clone().unwrap_or_else(|| {
         PathBuf::from(if args.plant.is_some() {
@@ -327,7 +386,25 @@ pub fn run(args: &Args) -> Result<(), Failure> {
     if let Some(dir) = &args.largest {
         wai_hunt::store::write_largest(&outcome, dir).map_err(Failure::io)?;
     }
-    let record = record(&outcome, commit);
+    let mut record = record(&outcome, commit);
+    if let Some(shard) = args.shard {
+        record.shards = Some(Shards {
+            count: shard.count,
+            run: run_arguments(args, limit),
+            present: vec![ShardRun {
+                index: shard.index,
+                maps: record.maps,
+                seconds: record.seconds,
+                started,
+                ended: wai_hunt::provenance::utc_timestamp(),
+                binary: wai_hunt::provenance::binary_digest(),
+                counterexamples: stored
+                    .iter()
+                    .map(|s| s.path.display().to_string())
+                    .collect(),
+            }],
+        });
+    }
     if let Some(path) = &args.record {
         record.write(path).map_err(Failure::io)?;
     }
@@ -447,11 +524,13 @@ fn text_summary(
     let kinds: Vec<String> = outcome
         .map_kinds
         .iter()
-        .map(|(k, n)| format!("{k} {n}"))
+        .map(|k| format!("{} {}", k.kind, k.maps))
         .collect();
     let _ = writeln!(
         s,
-        "wai check: {} maps in {} s on {threads} threads, seed {} ({})",
+        "wai check{}: {} maps in {} s on {threads} threads, seed {} ({})",
+        args.shard
+            .map_or(String::new(), |sh| format!(" shard {sh}")),
         outcome.summary.maps,
         outcome.elapsed.as_secs(),
         args.seed,

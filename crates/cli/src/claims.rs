@@ -200,9 +200,32 @@ fn kinds_text(record: &RunRecord) -> String {
     let kinds: Vec<String> = record
         .map_kinds
         .iter()
-        .map(|(k, n)| format!("{k} {n}"))
+        .map(|k| format!("{} {}", k.kind, k.maps))
         .collect();
     kinds.join(", ")
+}
+
+/// What a sharded record holds: `, merged from 32 shards`, or for a
+/// partial one the shards it lacks; empty for an unsharded run.
+fn shards_text(record: &RunRecord) -> String {
+    let Some(shards) = &record.shards else {
+        return String::new();
+    };
+    let missing = shards.missing();
+    if missing.is_empty() {
+        return format!(
+            " (the shards' wall times added), merged from {} shards",
+            shards.count
+        );
+    }
+    let list: Vec<String> = missing.iter().take(12).map(u64::to_string).collect();
+    format!(
+        ", PARTIAL: {} of {} shards missing ({}{})",
+        missing.len(),
+        shards.count,
+        list.join(", "),
+        if missing.len() > 12 { ", …" } else { "" }
+    )
 }
 
 /// The totals line: how many claims have a checker, were tested, were not.
@@ -262,13 +285,14 @@ fn never_hit_lines(rows: &[Row<'_>], bullet: &str) -> String {
 /// The plain-text table.
 fn text(record: &RunRecord, path: &Path, rows: &[Row<'_>]) -> String {
     let mut out = format!(
-        "last recorded run ({}):\n  command  {}\n  commit   {}, {}, {} maps in {} s\n",
+        "last recorded run ({}):\n  command  {}\n  commit   {}, {}, {} maps in {} s{}\n",
         path.display(),
         record.command,
         record.commit,
         record.date,
         record.maps,
-        record.seconds
+        record.seconds,
+        shards_text(record)
     );
     if !record.map_kinds.is_empty() {
         out.push_str(&format!("  maps     {}\n", kinds_text(record)));
@@ -368,7 +392,7 @@ fn cell(s: &str) -> String {
 fn markdown(record: &RunRecord, rows: &[Row<'_>]) -> String {
     let code = |s: &str| format!("`{}`", s.replace('`', "'"));
     let mut out = format!(
-        "Last recorded run: {} at commit {}, {}: {} maps{} in {} s.\n\n",
+        "Last recorded run: {} at commit {}, {}: {} maps{} in {} s{}.\n\n",
         code(&what_was_run(&record.command)),
         code(&record.commit),
         record.date,
@@ -378,7 +402,8 @@ fn markdown(record: &RunRecord, rows: &[Row<'_>]) -> String {
         } else {
             format!(" ({})", kinds_text(record))
         },
-        record.seconds
+        record.seconds,
+        shards_text(record)
     );
     out.push_str("| id | thesis | kind | checker | examined | violations | known failures | cases hit | largest ratio |\n");
     out.push_str("|---|---|---|---|--:|--:|--:|--:|---|\n");

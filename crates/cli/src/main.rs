@@ -34,6 +34,7 @@ mod info;
 mod input;
 mod localize;
 mod localize_scan;
+mod merge;
 mod options;
 mod output;
 mod preprocess;
@@ -104,6 +105,13 @@ enum Command {
     /// writes it to counterexamples/ with its replay command. Exits 1 on a
     /// counterexample.
     Check(check::Args),
+    /// Merge the records of a sharded run (`wai check --shard I/N
+    /// --record …`) into the record of the whole run: examined,
+    /// violations, cases and maps summed, the largest ratios kept with
+    /// their maps. Refuses records of different commits or runs and shards
+    /// merged twice; names missing shards and marks such a merge partial
+    /// (exit 1).
+    Merge(merge::Args),
     /// Simulate a laser scan of a map from a pose (thesis sec. 6.1): beams
     /// at equal angles, Gaussian range noise, a range cutoff and unknown
     /// obstacles, seeded; writes the angles and ranges as JSON.
@@ -137,6 +145,7 @@ fn main() -> ExitCode {
         Command::Localize(args) => localize::run(&args),
         Command::SearchExtremes(args) => search_extremes::run(&args),
         Command::Check(args) => check::run(&args),
+        Command::Merge(args) => merge::run(&args),
         Command::Scan(args) => scan::run(&args),
         Command::LocalizeScan(args) => localize_scan::run(&args),
         Command::Eval(args) => eval::run(&args),

@@ -10,6 +10,10 @@
 //!   time budget.
 //! - [`record`]: [`record::RunRecord`], what a run found, as the JSON of
 //!   `lemmas/last-run.json`.
+//! - [`shard`]: one shard of a run (`wai check --shard I/N`); [`merge`]:
+//!   the records of a run's shards added up into the run's record.
+//! - [`caught`]: a checker's panic on a map caught and kept as a
+//!   violation of its claim, so a run goes on.
 //! - [`shrink`]: a counterexample made small; [`counterexample`]: the file
 //!   format of `counterexamples/`; [`corpus`]: the fixed corpus;
 //!   [`provenance`]: commit and date stamps.
@@ -17,14 +21,17 @@
 //! **Invariant:** the hunt reads measurements from the checkers' reports;
 //! it never recomputes a claim's quantity itself.
 
+pub mod caught;
 pub mod climb;
 pub mod corpus;
 pub mod counterexample;
 pub mod extremes;
+pub mod merge;
 pub mod provenance;
 pub mod record;
 pub mod repository;
 pub mod search;
+pub mod shard;
 pub mod shrink;
 pub mod store;
 pub mod stream;
@@ -32,5 +39,6 @@ pub mod summary;
 pub mod target;
 
 pub use search::{own_thread_pool, search, Limit, Outcome};
+pub use shard::Shard;
 pub use stream::{parse_kinds, KindSpec, MapKind, Stream};
 pub use summary::{run, run_profiled, ClaimTally, FoundLargest, FoundViolation, Profile, Summary};

@@ -1,5 +1,5 @@
-//! Where a run's numbers come from: the commit of the checkout and the UTC
-//! date, stamped on plots (`sweep`) and run records (`wai check --record`)
+//! Where a run's numbers come from: the commit of the checkout, the UTC
+//! date and time and the digest of the binary, stamped on plots (`sweep`) and run records (`wai check --record`)
 //! so a reader can tell which code produced them.
 
 /// The short commit of the checkout in the current directory, with
@@ -28,11 +28,37 @@ pub fn commit() -> String {
 
 /// Today's date in UTC, `YYYY-MM-DD`.
 pub fn utc_date() -> String {
-    let days = std::time::SystemTime::now()
+    civil_date((unix_seconds() / 86_400) as i64)
+}
+
+/// The time now in UTC, `YYYY-MM-DDTHH:MM:SSZ` (RFC 3339).
+pub fn utc_timestamp() -> String {
+    timestamp(unix_seconds())
+}
+
+fn unix_seconds() -> u64 {
+    std::time::SystemTime::now()
         .duration_since(std::time::UNIX_EPOCH)
-        .map(|d| d.as_secs() / 86_400)
-        .unwrap_or(0) as i64;
-    civil_date(days)
+        .map_or(0, |d| d.as_secs())
+}
+
+fn timestamp(seconds: u64) -> String {
+    let (days, s) = (seconds / 86_400, seconds % 86_400);
+    format!(
+        "{}T{:02}:{:02}:{:02}Z",
+        civil_date(days as i64),
+        s / 3600,
+        s % 3600 / 60,
+        s % 60
+    )
+}
+
+/// The SHA-256 of the running binary, so that a record can say which
+/// build made it; `unknown` if the binary cannot be read.
+pub fn binary_digest() -> String {
+    std::env::current_exe()
+        .and_then(std::fs::read)
+        .map_or_else(|_| "unknown".to_owned(), |b| wai_map::digest::sha256(&b))
 }
 
 /// The civil date of `days` since 1970-01-01 (Howard Hinnant's algorithm).
@@ -56,5 +82,6 @@ mod tests {
         assert_eq!(super::civil_date(0), "1970-01-01");
         assert_eq!(super::civil_date(20_417), "2025-11-25");
         assert_eq!(super::civil_date(11_016), "2000-02-29");
+        assert_eq!(super::timestamp(1_764_300_000), "2025-11-28T03:20:00Z");
     }
 }

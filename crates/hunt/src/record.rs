@@ -65,6 +65,7 @@ use std::path::Path;
 use rug::Rational;
 use serde_json::{json, Map as Object, Value};
 
+use crate::merge::Shards;
 use crate::summary::Summary;
 
 /// The version written in `"version"`; reading refuses any other.
@@ -83,10 +84,35 @@ pub struct RunRecord {
     pub seconds: u64,
     /// Maps examined.
     pub maps: u64,
-    /// Maps per kind (random kind, family, layout…), in run order.
-    pub map_kinds: Vec<(String, u64)>,
+    /// Maps per kind (random kind, family, layout…), in the order of their
+    /// first map in the stream.
+    pub map_kinds: Vec<KindCount>,
     /// One record per claim the run covered, in the order of the run.
     pub claims: Vec<ClaimRecord>,
+    /// For a shard's record or a merge of shards: which shards of which
+    /// run it holds ([`crate::merge`]); `None` for an unsharded run.
+    pub shards: Option<Shards>,
+}
+
+/// How many maps of one kind a run saw.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct KindCount {
+    pub kind: String,
+    pub maps: u64,
+    /// The stream index of the kind's first map (which orders the kinds
+    /// of a merge as in the unsharded run); `None` in older records.
+    pub first: Option<u64>,
+}
+
+impl KindCount {
+    /// `maps` maps of `kind`, first index unknown.
+    pub fn new(kind: impl Into<String>, maps: u64) -> KindCount {
+        KindCount {
+            kind: kind.into(),
+            maps,
+            first: None,
+        }
+    }
 }
 
 /// What one run found about one claim.
@@ -104,6 +130,10 @@ pub struct ClaimRecord {
     pub max_ratio: Option<Rational>,
     /// The name of the map of `max_ratio` (`map #i` for an unnamed map).
     pub max_ratio_map: Option<String>,
+    /// That map's index in the stream: of two maps with the same ratio,
+    /// a run keeps the first, and so does a merge of shards. `None` in
+    /// older records.
+    pub max_ratio_index: Option<u64>,
     /// Instances per case of the claim ([`wai_lemmas::Report::cases`]):
     /// every case the checker declares, 0 where the run never hit it.
     pub cases: BTreeMap<String, u64>,
@@ -121,7 +151,7 @@ impl RunRecord {
         commit: String,
         date: String,
         seconds: u64,
-        map_kinds: Vec<(String, u64)>,
+        map_kinds: Vec<KindCount>,
     ) -> RunRecord {
         let claims = summary
             .tallies
@@ -139,6 +169,7 @@ impl RunRecord {
                             .clone()
                             .unwrap_or_else(|| format!("map #{}", l.map_index))
                     }),
+                    max_ratio_index: t.largest.as_ref().map(|l| l.map_index as u64),
                     cases: t.cases.iter().map(|(k, v)| ((*k).to_owned(), *v)).collect(),
                     counts: t
                         .counts
@@ -156,7 +187,16 @@ impl RunRecord {
             maps: summary.maps as u64,
             map_kinds,
             claims,
+            shards: None,
         }
+    }
+
+    /// True if the record holds some shards of a run but not all: a
+    /// partial merge, or one shard's record.
+    pub fn is_partial(&self) -> bool {
+        self.shards
+            .as_ref()
+            .is_some_and(|s| !s.missing().is_empty())
     }
 
     /// The record of claim `id`, if the run covered it.
@@ -177,10 +217,16 @@ impl RunRecord {
         let kinds: Vec<Value> = self
             .map_kinds
             .iter()
-            .map(|(kind, maps)| json!({"kind": kind, "maps": maps}))
+            .map(|k| {
+                let mut v = json!({"kind": k.kind, "maps": k.maps});
+                if let Some(first) = k.first {
+                    v["first"] = json!(first);
+                }
+                v
+            })
             .collect();
         let claims: Vec<Value> = self.claims.iter().map(ClaimRecord::to_json).collect();
-        json!({
+        let mut body = json!({
             "version": FORMAT_VERSION,
             "command": self.command,
             "commit": self.commit,
@@ -189,7 +235,13 @@ impl RunRecord {
             "maps": self.maps,
             "map_kinds": kinds,
             "claims": claims,
-        })
+        });
+        // Optional fields are written only when present, so older records
+        // keep their digests.
+        if let Some(shards) = &self.shards {
+            body["shards"] = shards.to_json();
+        }
+        body
     }
 
     /// Reads a record written by [`RunRecord::to_json`]; the error names the
@@ -238,7 +290,11 @@ impl RunRecord {
             .map(|(i, k)| {
                 let at = format!("map_kinds[{i}].");
                 let k = object(k, &at[..at.len() - 1])?;
-                Ok((string(k, "kind", &at)?, uint(k, "maps", &at)?))
+                Ok(KindCount {
+                    kind: string(k, "kind", &at)?,
+                    maps: uint(k, "maps", &at)?,
+                    first: optional_uint(k, "first", &at)?,
+                })
             })
             .collect::<Result<Vec<_>, String>>()?;
         let mut claims: Vec<ClaimRecord> = Vec::new();
@@ -257,6 +313,10 @@ impl RunRecord {
             maps: uint(top, "maps", "")?,
             map_kinds,
             claims,
+            shards: match top.get("shards") {
+                None => None,
+                Some(v) => Some(Shards::from_json(v, "shards")?),
+            },
         })
     }
 
@@ -289,7 +349,7 @@ impl RunRecord {
 impl ClaimRecord {
     /// The claim as JSON.
     fn to_json(&self) -> Value {
-        json!({
+        let mut v = json!({
             "id": self.id,
             "examined": self.examined,
             "violations": self.violations,
@@ -299,7 +359,11 @@ impl ClaimRecord {
             "max_ratio_map": self.max_ratio_map,
             "cases": self.cases,
             "counts": self.counts,
-        })
+        });
+        if let Some(i) = self.max_ratio_index {
+            v["max_ratio_map_index"] = json!(i);
+        }
+        v
     }
 
     /// Reads one entry of `claims`; `at` is its place (`claims[3]`).
@@ -335,6 +399,7 @@ impl ClaimRecord {
             known_failures: uint(c, "known_failures", &at)?,
             max_ratio,
             max_ratio_map,
+            max_ratio_index: optional_uint(c, "max_ratio_map_index", &at)?,
             cases,
             counts,
         };
@@ -394,36 +459,56 @@ fn is_date(s: &str) -> bool {
     (1..=12).contains(&month) && (1..=31).contains(&day)
 }
 
-fn object<'a>(v: &'a Value, what: &str) -> Result<&'a Object<String, Value>, String> {
+/// `key` of `o` if present: a non-negative integer.
+pub(crate) fn optional_uint(
+    o: &Object<String, Value>,
+    key: &str,
+    at: &str,
+) -> Result<Option<u64>, String> {
+    match o.get(key) {
+        None => Ok(None),
+        Some(_) => uint(o, key, at).map(Some),
+    }
+}
+
+pub(crate) fn object<'a>(v: &'a Value, what: &str) -> Result<&'a Object<String, Value>, String> {
     v.as_object()
         .ok_or_else(|| format!("{what}: expected a JSON object, found {}", kind_of(v)))
 }
 
-fn field<'a>(o: &'a Object<String, Value>, key: &str, at: &str) -> Result<&'a Value, String> {
+pub(crate) fn field<'a>(
+    o: &'a Object<String, Value>,
+    key: &str,
+    at: &str,
+) -> Result<&'a Value, String> {
     o.get(key).ok_or_else(|| format!("{at}{key}: missing"))
 }
 
-fn string(o: &Object<String, Value>, key: &str, at: &str) -> Result<String, String> {
+pub(crate) fn string(o: &Object<String, Value>, key: &str, at: &str) -> Result<String, String> {
     match field(o, key, at)? {
         Value::String(s) => Ok(s.clone()),
         other => Err(format!("{at}{key}: expected a string, found {other}")),
     }
 }
 
-fn uint(o: &Object<String, Value>, key: &str, at: &str) -> Result<u64, String> {
+pub(crate) fn uint(o: &Object<String, Value>, key: &str, at: &str) -> Result<u64, String> {
     let v = field(o, key, at)?;
     v.as_u64()
         .ok_or_else(|| format!("{at}{key}: expected a non-negative integer, found {v}"))
 }
 
-fn array<'a>(o: &'a Object<String, Value>, key: &str, at: &str) -> Result<&'a Vec<Value>, String> {
+pub(crate) fn array<'a>(
+    o: &'a Object<String, Value>,
+    key: &str,
+    at: &str,
+) -> Result<&'a Vec<Value>, String> {
     match field(o, key, at)? {
         Value::Array(a) => Ok(a),
         other => Err(format!("{at}{key}: expected an array, found {other}")),
     }
 }
 
-fn kind_of(v: &Value) -> &'static str {
+pub(crate) fn kind_of(v: &Value) -> &'static str {
     match v {
         Value::Null => "null",
         Value::Bool(_) => "a boolean",
@@ -453,7 +538,13 @@ mod tests {
             date: "2025-01-31".to_owned(),
             seconds: 12,
             maps: 2,
-            map_kinds: vec![("random-simple-star".to_owned(), 1), ("orth".to_owned(), 1)],
+            map_kinds: vec![
+                KindCount::new("random-simple-star", 1),
+                KindCount {
+                    first: Some(1),
+                    ..KindCount::new("orth", 1)
+                },
+            ],
             claims: vec![
                 ClaimRecord {
                     id: "T5.17".to_owned(),
@@ -462,6 +553,7 @@ mod tests {
                     known_failures: 0,
                     max_ratio: Some(Rational::from((80, 41))),
                     max_ratio_map: Some("orth n=8 seed=1".to_owned()),
+                    max_ratio_index: Some(1),
                     cases: BTreeMap::from([("convex".to_owned(), 1), ("other".to_owned(), 0)]),
                     counts: BTreeMap::from([("largest".to_owned(), 3)]),
                 },
@@ -472,6 +564,7 @@ mod tests {
                     known_failures: 4,
                     max_ratio: None,
                     max_ratio_map: None,
+                    max_ratio_index: None,
                     cases: BTreeMap::new(),
                     counts: BTreeMap::new(),
                 },
@@ -482,10 +575,12 @@ mod tests {
                     known_failures: 0,
                     max_ratio: None,
                     max_ratio_map: None,
+                    max_ratio_index: None,
                     cases: BTreeMap::new(),
                     counts: BTreeMap::new(),
                 },
             ],
+            shards: None,
         }
     }
 
@@ -654,7 +749,7 @@ mod tests {
             "c0ffee".to_owned(),
             "2025-01-31".to_owned(),
             0,
-            vec![("hand-made".to_owned(), 2)],
+            vec![KindCount::new("hand-made", 2)],
         );
         assert_eq!(r.maps, 2);
         assert_eq!(r.claims.len(), 1);

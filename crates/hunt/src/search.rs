@@ -26,6 +26,8 @@ use std::time::{Duration, Instant};
 use wai_lemmas::Checker;
 use wai_map::Map;
 
+use crate::record::KindCount;
+use crate::shard::Shard;
 use crate::stream::{Lane, Stream};
 use crate::summary::{run_profiled, FoundViolation, Profile, Summary};
 
@@ -46,7 +48,7 @@ pub struct Outcome {
     /// Every checker's totals over the maps; violations in stream order.
     pub summary: Summary,
     /// Maps per kind, in the order of their first map in the stream.
-    pub map_kinds: Vec<(String, u64)>,
+    pub map_kinds: Vec<KindCount>,
     pub elapsed: Duration,
     /// Where the time went, summed over every worker (so it can exceed
     /// `elapsed` on several threads).
@@ -121,18 +123,21 @@ pub fn own_thread_pool() -> Option<rayon::ThreadPool> {
 }
 
 /// Runs `checkers` over `stream` until `limit` on as many worker threads
-/// as rayon's pool has (set the pool's size before calling), calling `progress(maps done, elapsed)` as
-/// maps finish. With `stop_early`, stops taking maps once a counterexample
-/// is found.
+/// as rayon's pool has (set the pool's size before calling), calling
+/// `progress(maps done, elapsed)` as maps finish. With `stop_early`, stops
+/// taking maps once a counterexample is found. `shard` takes its part of
+/// the run ([`Shard::of_lane`] of each lane, a budget / N of the time);
+/// [`Shard::WHOLE`] is the whole run.
 pub fn search(
     checkers: &[Checker],
     stream: &Stream,
     limit: Limit,
+    shard: Shard,
     stop_early: bool,
     progress: &(dyn Fn(u64, Duration) + Sync),
 ) -> Outcome {
     let start = Instant::now();
-    let lanes = match limit {
+    let whole = match limit {
         Limit::Count(n) => vec![Lane {
             name: String::new(),
             start: 0,
@@ -141,8 +146,10 @@ pub fn search(
         }],
         Limit::Budget(_) => stream.lanes(),
     };
+    let lanes: Vec<Lane> = whole.iter().map(|l| shard.of_lane(l)).collect();
+    // A shard's share of the run's time.
     let budget = match limit {
-        Limit::Budget(b) => Some(b),
+        Limit::Budget(b) => Some(b / shard.count.clamp(1, u64::from(u32::MAX)) as u32),
         Limit::Count(_) => None,
     };
     // How many maps the run can take at most (`None`: endless lanes).
@@ -226,7 +233,14 @@ pub fn search(
     per_kind.sort_by_key(|(_, _, first)| *first);
     Outcome {
         summary,
-        map_kinds: per_kind.into_iter().map(|(k, n, _)| (k, n)).collect(),
+        map_kinds: per_kind
+            .into_iter()
+            .map(|(kind, maps, first)| KindCount {
+                kind,
+                maps,
+                first: Some(first),
+            })
+            .collect(),
         elapsed: start.elapsed(),
         profile,
     }
@@ -248,9 +262,9 @@ fn light(mut summary: Summary) -> Summary {
 }
 
 /// True if `checker` reports a violation on `map` that is not a known
-/// failure: the predicate [`crate::shrink::shrink`] keeps.
+/// failure (a panic counts): the predicate [`crate::shrink::shrink`] keeps.
 pub fn still_violated(checker: &Checker, map: &Map) -> bool {
-    let report = checker.check_map(map);
+    let report = crate::caught::check_map_caught(checker, map);
     let found = checker.counterexamples(&report).next().is_some();
     found
 }
@@ -275,19 +289,43 @@ mod tests {
             .num_threads(1)
             .build()
             .unwrap()
-            .install(|| search(&checkers, &stream, Limit::Count(12), false, &|_, _| {}));
+            .install(|| {
+                search(
+                    &checkers,
+                    &stream,
+                    Limit::Count(12),
+                    Shard::WHOLE,
+                    false,
+                    &|_, _| {},
+                )
+            });
         let b = rayon::ThreadPoolBuilder::new()
             .num_threads(3)
             .build()
             .unwrap()
-            .install(|| search(&checkers, &stream, Limit::Count(12), false, &|_, _| {}));
+            .install(|| {
+                search(
+                    &checkers,
+                    &stream,
+                    Limit::Count(12),
+                    Shard::WHOLE,
+                    false,
+                    &|_, _| {},
+                )
+            });
         assert_eq!(a.summary, b.summary);
         assert_eq!(a.summary.maps, 12);
         assert_eq!(
             a.map_kinds,
             vec![
-                ("random-orthogonal".to_owned(), 6),
-                ("random-simple-star".to_owned(), 6)
+                KindCount {
+                    first: Some(0),
+                    ..KindCount::new("random-orthogonal", 6)
+                },
+                KindCount {
+                    first: Some(1),
+                    ..KindCount::new("random-simple-star", 6)
+                },
             ]
         );
     }
@@ -309,14 +347,15 @@ mod tests {
             &checkers,
             &stream,
             Limit::Budget(Duration::from_millis(600)),
+            Shard::WHOLE,
             false,
             &|_, _| {},
         );
         let count = |kind: &str| {
             out.map_kinds
                 .iter()
-                .find(|(k, _)| k == kind)
-                .map_or(0, |(_, n)| *n)
+                .find(|k| k.kind == kind)
+                .map_or(0, |k| k.maps)
         };
         let (slow, quick) = (count("repeated-niches"), count("random-orthogonal"));
         assert!(slow >= 1 && quick > slow, "{:?}", out.map_kinds);
@@ -335,7 +374,14 @@ mod tests {
             seed: 0,
         };
         let checkers = [wai_lemmas::planted::SHIFTED_LABELS];
-        let out = search(&checkers, &stream, Limit::Count(100), true, &|_, _| {});
+        let out = search(
+            &checkers,
+            &stream,
+            Limit::Count(100),
+            Shard::WHOLE,
+            true,
+            &|_, _| {},
+        );
         assert!(!out.counterexamples().is_empty());
         assert!(out.summary.maps <= 8, "{}", out.summary.maps);
         let v = out.counterexamples()[0];

@@ -109,7 +109,7 @@ pub fn store_counterexamples(
             None => (found.clone(), 0),
         };
         // The violation as reported on the stored map.
-        let report = checker.check_map(&map);
+        let report = crate::caught::check_map_caught(checker, &map);
         let violation = checker
             .counterexamples(&report)
             .next()
@@ -205,9 +205,9 @@ pub fn replay_checker(file: &Value, planted: Option<&str>) -> Result<Checker, St
 }
 
 /// A replay's verdict: the report, and how many of its violations are
-/// counterexamples (not known failures).
+/// counterexamples (not known failures; a panic is one).
 pub fn replay(checker: &Checker, map: &Map) -> (Report, usize) {
-    let report = checker.check_map(map);
+    let report = crate::caught::check_map_caught(checker, map);
     let open = checker.counterexamples(&report).count();
     (report, open)
 }

@@ -477,6 +477,7 @@ mod localize;
 mod pictures;
 mod scan;
 mod scan_eval;
+mod shards;
 
 /// Runs `wai args` with its standard output read for `keep` bytes and then
 /// closed, as `wai … | head -c keep` does; the exit status and standard
