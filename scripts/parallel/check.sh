@@ -7,10 +7,13 @@
 # Shard I writes RUN_DIR/shard-I.json (its record), RUN_DIR/shard-I.log
 # (its output) and its counterexamples into RUN_DIR/counterexamples/; at
 # the end `wai merge` writes RUN_DIR/merged.json, whole or marked partial.
-# Run the same command again to resume: shards that finished are skipped
-# (GNU parallel's --joblog RUN_DIR/joblog), failed or killed ones re-run
-# (--resume-failed). Every shard of a run must come from one commit: the
-# first call stores it in RUN_DIR/commit and later calls refuse another.
+# Run the same command again to resume: a shard runs only if RUN_DIR has
+# no record of it, so a shard that failed, was killed (a record is written
+# whole or not at all) or whose record was removed runs again, and the
+# others are kept. RUN_DIR/joblog (GNU parallel's --joblog, appended) keeps
+# every attempt: host, start, run time, exit status. Every shard of a run
+# must come from one commit: the first call stores it in RUN_DIR/commit
+# and later calls refuse another.
 #
 # Options:
 #   --jobs J           shards at a time on each host (default: one per core,
@@ -25,7 +28,7 @@
 # Exit status: 0 when the merge is whole, 1 when shards are missing (the
 # merge is written, marked partial), 2 on bad usage, 3 otherwise.
 set -euo pipefail
-usage() { sed -n '2,27p' "$0" | sed 's/^# \{0,1\}//'; }
+usage() { sed -n '2,30p' "$0" | sed 's/^# \{0,1\}//'; }
 case "${1:-}" in -h|--help|"") usage; [ -n "${1:-}" ]; exit $? ;; esac
 [ $# -ge 2 ] || { usage >&2; exit 2; }
 run_dir=$1 shards=$2
@@ -68,12 +71,19 @@ printf '%q ' "$@" > "$run_dir/args"
 # finished shard; any other failure, or no record, is re-run on resume.
 quoted=$(printf '%q ' "$@")
 shard_cmd="cd $(printf '%q' "$repo") && r=\$($(printf '%q' "$wai") check $quoted --shard {}/$shards --record $(printf '%q' "$run_dir")/shard-{}.json --out $(printf '%q' "$run_dir")/counterexamples > $(printf '%q' "$run_dir")/shard-{}.log 2>&1; echo \$?); [ \"\$r\" -le 1 ] && [ -f $(printf '%q' "$run_dir")/shard-{}.json ]"
-opts=(--joblog "$run_dir/joblog" --resume-failed --line-buffer)
+opts=(--joblog "+$run_dir/joblog" --line-buffer)
 [ -n "$jobs" ] && opts+=(--jobs "$jobs")
 [ -n "$sshloginfile" ] && opts+=(--sshloginfile "$sshloginfile")
+todo=()
+for i in $(seq 0 $((shards - 1))); do
+  [ -f "$run_dir/shard-$i.json" ] || todo+=("$i")
+done
+echo "check.sh: $((shards - ${#todo[@]})) of $shards shards have a record; running ${#todo[@]}" >&2
 status=0
-seq 0 $((shards - 1)) | parallel "${opts[@]}" "$shard_cmd" || status=$?
-echo "check.sh: shards done (GNU parallel status $status; $run_dir/joblog lists each)" >&2
+if [ ${#todo[@]} -gt 0 ]; then
+  printf '%s\n' "${todo[@]}" | parallel "${opts[@]}" "$shard_cmd" || status=$?
+fi
+echo "check.sh: shards done (GNU parallel status $status; $run_dir/joblog lists each attempt)" >&2
 [ "$merge" = 1 ] || exit 0
 shopt -s nullglob
 records=("$run_dir"/shard-*.json)
