@@ -32,7 +32,13 @@
 //!
 //! `max_ratio` is exact (a rational as a string, `null` when the claim
 //! measures no ratio); `max_ratio_approx` is written beside it for readers
-//! and ignored when read back. `digest` (not shown above) seals the
+//! and ignored when read back. Three fields are optional, written when
+//! known and absent from older records: a kind's `first` (the stream index
+//! of its first map) and a claim's `max_ratio_map_index` (the stream index
+//! of the ratio's map), which let a merge of shards order kinds and break
+//! ties between equal ratios as the unsharded run does; and `shards`, the
+//! shards of a run that a shard's record or a merge holds
+//! ([`crate::merge::Shards`]). `digest` (not shown above) seals the
 //! record: the SHA-256 of its other fields as written; a record whose
 //! content no longer matches it (edited by hand) is refused.
 //!

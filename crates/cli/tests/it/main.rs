@@ -478,6 +478,7 @@ mod pictures;
 mod scan;
 mod scan_eval;
 mod shards;
+mod slurm;
 
 /// Runs `wai args` with its standard output read for `keep` bytes and then
 /// closed, as `wai … | head -c keep` does; the exit status and standard
