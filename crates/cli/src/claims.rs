@@ -450,6 +450,8 @@ fn to_json(record: &RunRecord, path: &Path, rows: &[Row<'_>]) -> Value {
     if let Some(o) = run.as_object_mut() {
         o.remove("claims");
         o.insert("record_file".to_owned(), json!(path.display().to_string()));
+        // A merge lacking shards (or one shard's record) is not the run.
+        o.insert("partial".to_owned(), json!(record.is_partial()));
     }
     let claims: Vec<Value> = rows
         .iter()

@@ -62,10 +62,15 @@ pub fn run_caught(checker: &Checker, study: &Study<'_>) -> Report {
     CATCHING.with(|c| c.set(was));
     match result {
         Ok(report) => report,
-        Err(_) => {
+        Err(payload) => {
+            // The hook's message with its place; from the payload when the
+            // panic was on another thread (a parallel loop of the study on
+            // a shared pool), which rayon carries back here.
             let message = LAST
                 .with(|last| last.borrow_mut().take())
-                .unwrap_or_else(|| "a panic".to_owned());
+                .or_else(|| payload.downcast_ref::<&str>().map(|s| (*s).to_owned()))
+                .or_else(|| payload.downcast_ref::<String>().cloned())
+                .unwrap_or_else(|| "a panic without a message".to_owned());
             panic_report(checker.id, &message)
         }
     }
@@ -99,6 +104,26 @@ mod tests {
         assert!(study.map().n() != 4, "planted: a square");
         Report::new("T3.2")
     });
+
+    #[test]
+    fn a_panic_on_a_pool_thread_keeps_its_message() {
+        const IN_PARALLEL: Checker = Checker::new("T3.2", |_| {
+            use rayon::prelude::*;
+            (0..256u32)
+                .into_par_iter()
+                .for_each(|i| assert!(i % 97 != 96, "planted: a parallel loop at {i}"));
+            Report::new("T3.2")
+        });
+        let square = wai_gen::family("corridor-niches", &[1]).expect("family");
+        let pool = rayon::ThreadPoolBuilder::new()
+            .num_threads(3)
+            .build()
+            .unwrap();
+        let report = pool.install(|| check_map_caught(&IN_PARALLEL, &square));
+        assert_eq!(report.violations.len(), 1);
+        let what = &report.violations[0].what;
+        assert!(what.contains("planted: a parallel loop at"), "{what}");
+    }
 
     #[test]
     fn a_panic_becomes_a_violation_with_its_message_and_place() {

@@ -343,11 +343,7 @@ impl RunRecord {
         let mut text = serde_json::to_string_pretty(&self.to_json())
             .map_err(|e| format!("{}: cannot serialise the run record: {e}", path.display()))?;
         text.push('\n');
-        let mut tmp = path.as_os_str().to_owned();
-        tmp.push(".tmp");
-        let tmp = std::path::PathBuf::from(tmp);
-        std::fs::write(&tmp, text)
-            .and_then(|()| std::fs::rename(&tmp, path))
+        write_whole(path, text.as_bytes())
             .map_err(|e| format!("{}: cannot write the run record: {e}", path.display()))
     }
 }
@@ -463,6 +459,16 @@ fn is_date(s: &str) -> bool {
     let month = (b[5] - b'0') * 10 + (b[6] - b'0');
     let day = (b[8] - b'0') * 10 + (b[9] - b'0');
     (1..=12).contains(&month) && (1..=31).contains(&day)
+}
+
+/// Writes `bytes` to `path` whole or not at all: to `PATH.tmp` beside it,
+/// then renamed over it, so a process killed while writing (a cancelled
+/// shard) leaves the old file or none, never half of one.
+pub fn write_whole(path: &Path, bytes: &[u8]) -> std::io::Result<()> {
+    let mut tmp = path.as_os_str().to_owned();
+    tmp.push(".tmp");
+    let tmp = std::path::PathBuf::from(tmp);
+    std::fs::write(&tmp, bytes).and_then(|()| std::fs::rename(&tmp, path))
 }
 
 /// `key` of `o` if present: a non-negative integer.

@@ -165,7 +165,8 @@ pub fn store_counterexamples(
             &note,
             &meta,
         );
-        std::fs::write(&s.path, text).map_err(|e| format!("{}: {e}", s.path.display()))?;
+        crate::record::write_whole(&s.path, text.as_bytes())
+            .map_err(|e| format!("{}: {e}", s.path.display()))?;
         stored.push(s);
     }
     Ok(stored)
@@ -178,7 +179,8 @@ pub fn write_largest(outcome: &Outcome, dir: &Path) -> Result<(), String> {
     for t in &outcome.summary.tallies {
         if let Some(l) = &t.largest {
             let path = dir.join(format!("{}-largest.json", t.claim));
-            std::fs::write(&path, &l.map_json).map_err(|e| format!("{}: {e}", path.display()))?;
+            crate::record::write_whole(&path, l.map_json.as_bytes())
+                .map_err(|e| format!("{}: {e}", path.display()))?;
         }
     }
     Ok(())

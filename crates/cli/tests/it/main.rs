@@ -474,6 +474,7 @@ mod check;
 mod claims;
 mod extremes;
 mod localize;
+mod parallel;
 mod pictures;
 mod scan;
 mod scan_eval;

@@ -119,6 +119,12 @@ fn a_missing_shard_is_named_and_its_rerun_completes_the_merge() {
     assert_eq!(json(&partial)["shards"]["missing"], serde_json::json!([2]));
     let out = wai(&["claims", "--record", partial.to_str().unwrap()], b"");
     assert!(text(&out.stdout).contains("PARTIAL: 1 of 4 shards missing (2)"));
+    let out = wai(
+        &["claims", "--json", "--record", partial.to_str().unwrap()],
+        b"",
+    );
+    let v: serde_json::Value = serde_json::from_slice(&out.stdout).expect("JSON");
+    assert_eq!(v["run"]["partial"], true);
     // The shard re-run alone, merged with the partial merge.
     let repaired = shard(&dir, "2/4", "shard-2.json");
     let full = dir.join("full.json");
