@@ -17,8 +17,8 @@ use std::path::{Path, PathBuf};
 use std::time::{Duration, Instant};
 
 use serde_json::Value;
-use wai_hunt::merge::{ShardRun, Shards};
 use wai_hunt::record::RunRecord;
+use wai_hunt::shard::{ShardRun, Shards};
 use wai_hunt::store::{StoreOptions, Stored};
 use wai_hunt::{Limit, Outcome, Shard, Stream};
 use wai_lemmas::Checker;

@@ -26,6 +26,7 @@ pub mod climb;
 pub mod corpus;
 pub mod counterexample;
 pub mod extremes;
+pub mod json_read;
 pub mod merge;
 pub mod provenance;
 pub mod record;

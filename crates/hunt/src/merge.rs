@@ -1,6 +1,5 @@
-//! Sharded runs: what the record of a shard says of itself ([`Shards`]),
-//! and [`merge`], which adds the records of a run's shards up into the
-//! record of the whole run.
+//! [`merge`]: the records of a run's shards added up into the record of
+//! the whole run.
 //!
 //! A run split with `wai check --shard I/N` ([`crate::shard`]) leaves N
 //! records. Each carries, besides the counts of its maps, a `shards`
@@ -24,143 +23,8 @@
 //! record that is not a shard's (no `shards`); claims that differ; and for
 //! a commit with uncommitted changes (`+dirty`), different binaries.
 
-use serde_json::{json, Value};
-
-use crate::record::{array, object, string, uint, ClaimRecord, RunRecord};
-
-/// The shards a record holds, of a run split into `count`.
-#[derive(Debug, Clone, PartialEq, Eq)]
-pub struct Shards {
-    /// N: how many shards the run was split into.
-    pub count: u64,
-    /// The run: the `wai check` command line without `--shard` and the
-    /// options that only say where output goes; the same in every shard.
-    pub run: String,
-    /// The shards held, by increasing index, each once.
-    pub present: Vec<ShardRun>,
-}
-
-/// One shard's run.
-#[derive(Debug, Clone, PartialEq, Eq)]
-pub struct ShardRun {
-    /// I, from 0 to N − 1.
-    pub index: u64,
-    /// Maps the shard checked.
-    pub maps: u64,
-    /// Its wall time, in seconds.
-    pub seconds: u64,
-    /// Start and end, UTC, `YYYY-MM-DDTHH:MM:SSZ`.
-    pub started: String,
-    pub ended: String,
-    /// The SHA-256 of the `wai` binary that ran it.
-    pub binary: String,
-    /// The counterexample files it wrote (paths as it wrote them).
-    pub counterexamples: Vec<String>,
-}
-
-impl Shards {
-    /// The shard indices of the run that this record does not hold.
-    pub fn missing(&self) -> Vec<u64> {
-        let mut have = self.present.iter().map(|s| s.index).peekable();
-        (0..self.count)
-            .filter(|i| {
-                if have.peek() == Some(i) {
-                    have.next();
-                    false
-                } else {
-                    true
-                }
-            })
-            .collect()
-    }
-
-    /// As JSON; `missing` is written for readers and checked when read.
-    pub fn to_json(&self) -> Value {
-        let present: Vec<Value> = self
-            .present
-            .iter()
-            .map(|s| {
-                json!({
-                    "index": s.index,
-                    "maps": s.maps,
-                    "seconds": s.seconds,
-                    "started": s.started,
-                    "ended": s.ended,
-                    "binary": s.binary,
-                    "counterexamples": s.counterexamples,
-                })
-            })
-            .collect();
-        json!({
-            "count": self.count,
-            "run": self.run,
-            "missing": self.missing(),
-            "present": present,
-        })
-    }
-
-    /// Reads the `shards` object at `at`.
-    pub fn from_json(v: &Value, at: &str) -> Result<Shards, String> {
-        let o = object(v, at)?;
-        let at = format!("{at}.");
-        let count = uint(o, "count", &at)?;
-        if count == 0 {
-            return Err(format!("{at}count: a run has at least one shard"));
-        }
-        let mut present: Vec<ShardRun> = Vec::new();
-        for (k, s) in array(o, "present", &at)?.iter().enumerate() {
-            let here = format!("{at}present[{k}]");
-            let s = object(s, &here)?;
-            let here = format!("{here}.");
-            let files = array(s, "counterexamples", &here)?
-                .iter()
-                .map(|f| {
-                    f.as_str().map(str::to_owned).ok_or_else(|| {
-                        format!("{here}counterexamples: expected file names, found {f}")
-                    })
-                })
-                .collect::<Result<Vec<_>, String>>()?;
-            let run = ShardRun {
-                index: uint(s, "index", &here)?,
-                maps: uint(s, "maps", &here)?,
-                seconds: uint(s, "seconds", &here)?,
-                started: string(s, "started", &here)?,
-                ended: string(s, "ended", &here)?,
-                binary: string(s, "binary", &here)?,
-                counterexamples: files,
-            };
-            if run.index >= count {
-                return Err(format!(
-                    "{here}index: shard {} of a run of {count} shards (numbered from 0)",
-                    run.index
-                ));
-            }
-            if present.last().is_some_and(|p| p.index >= run.index) {
-                return Err(format!(
-                    "{here}index: shards are listed once each by increasing index, and {} is not",
-                    run.index
-                ));
-            }
-            present.push(run);
-        }
-        let shards = Shards {
-            count,
-            run: string(o, "run", &at)?,
-            present,
-        };
-        let written: Vec<u64> = array(o, "missing", &at)?
-            .iter()
-            .map(|m| m.as_u64().unwrap_or(u64::MAX))
-            .collect();
-        if written != shards.missing() {
-            return Err(format!(
-                "{at}missing: says {written:?}, but the shards present leave {:?} missing",
-                shards.missing()
-            ));
-        }
-        Ok(shards)
-    }
-}
+use crate::record::{ClaimRecord, RunRecord};
+use crate::shard::Shards;
 
 /// The records of shards (each with a label for messages, such as its
 /// path) merged into the record of their run: whole if every shard is
@@ -302,7 +166,9 @@ mod tests {
     use super::*;
     use crate::search::{search, Limit};
     use crate::shard::Shard;
+    use crate::shard::ShardRun;
     use crate::stream::{parse_kinds, Stream};
+    use serde_json::{json, Value};
 
     /// The record of `shard` of a count run over a few kinds, as `wai
     /// check --shard` makes it.

@@ -38,7 +38,7 @@
 //! of the ratio's map), which let a merge of shards order kinds and break
 //! ties between equal ratios as the unsharded run does; and `shards`, the
 //! shards of a run that a shard's record or a merge holds
-//! ([`crate::merge::Shards`]). `digest` (not shown above) seals the
+//! ([`crate::shard::Shards`]). `digest` (not shown above) seals the
 //! record: the SHA-256 of its other fields as written; a record whose
 //! content no longer matches it (edited by hand) is refused.
 //!
@@ -71,7 +71,8 @@ use std::path::Path;
 use rug::Rational;
 use serde_json::{json, Map as Object, Value};
 
-use crate::merge::Shards;
+use crate::json_read::{array, field, kind_of, object, optional_uint, string, uint};
+use crate::shard::Shards;
 use crate::summary::Summary;
 
 /// The version written in `"version"`; reading refuses any other.
@@ -469,66 +470,6 @@ pub fn write_whole(path: &Path, bytes: &[u8]) -> std::io::Result<()> {
     tmp.push(".tmp");
     let tmp = std::path::PathBuf::from(tmp);
     std::fs::write(&tmp, bytes).and_then(|()| std::fs::rename(&tmp, path))
-}
-
-/// `key` of `o` if present: a non-negative integer.
-pub(crate) fn optional_uint(
-    o: &Object<String, Value>,
-    key: &str,
-    at: &str,
-) -> Result<Option<u64>, String> {
-    match o.get(key) {
-        None => Ok(None),
-        Some(_) => uint(o, key, at).map(Some),
-    }
-}
-
-pub(crate) fn object<'a>(v: &'a Value, what: &str) -> Result<&'a Object<String, Value>, String> {
-    v.as_object()
-        .ok_or_else(|| format!("{what}: expected a JSON object, found {}", kind_of(v)))
-}
-
-pub(crate) fn field<'a>(
-    o: &'a Object<String, Value>,
-    key: &str,
-    at: &str,
-) -> Result<&'a Value, String> {
-    o.get(key).ok_or_else(|| format!("{at}{key}: missing"))
-}
-
-pub(crate) fn string(o: &Object<String, Value>, key: &str, at: &str) -> Result<String, String> {
-    match field(o, key, at)? {
-        Value::String(s) => Ok(s.clone()),
-        other => Err(format!("{at}{key}: expected a string, found {other}")),
-    }
-}
-
-pub(crate) fn uint(o: &Object<String, Value>, key: &str, at: &str) -> Result<u64, String> {
-    let v = field(o, key, at)?;
-    v.as_u64()
-        .ok_or_else(|| format!("{at}{key}: expected a non-negative integer, found {v}"))
-}
-
-pub(crate) fn array<'a>(
-    o: &'a Object<String, Value>,
-    key: &str,
-    at: &str,
-) -> Result<&'a Vec<Value>, String> {
-    match field(o, key, at)? {
-        Value::Array(a) => Ok(a),
-        other => Err(format!("{at}{key}: expected an array, found {other}")),
-    }
-}
-
-pub(crate) fn kind_of(v: &Value) -> &'static str {
-    match v {
-        Value::Null => "null",
-        Value::Bool(_) => "a boolean",
-        Value::Number(_) => "a number",
-        Value::String(_) => "a string",
-        Value::Array(_) => "an array",
-        Value::Object(_) => "an object",
-    }
 }
 
 #[cfg(test)]

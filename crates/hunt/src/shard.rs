@@ -9,9 +9,18 @@
 //! budget, every lane (each kind, the fixed maps) is split the same way,
 //! so each shard goes through every kind, and the budget is split evenly
 //! (each shard runs for budget / N).
+//!
+//! A shard's record says which shard it is ([`Shards`]): N, the run's
+//! arguments, and one [`ShardRun`] entry for itself — its index, maps,
+//! wall time, start and end (UTC), the SHA-256 of the binary that ran it
+//! and the counterexample files it wrote. A merge ([`crate::merge`])
+//! holds the entries of every shard it merged.
 
 use std::fmt;
 
+use serde_json::{json, Value};
+
+use crate::json_read::{array, object, string, uint};
 use crate::stream::Lane;
 
 /// Shard `index` of `count` (0 ≤ index < count); `0/1` is the whole run.
@@ -79,6 +88,140 @@ impl std::str::FromStr for Shard {
                 n - 1
             )
         })
+    }
+}
+
+/// The shards a record holds, of a run split into `count`.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Shards {
+    /// N: how many shards the run was split into.
+    pub count: u64,
+    /// The run: the `wai check` command line without `--shard` and the
+    /// options that only say where output goes; the same in every shard.
+    pub run: String,
+    /// The shards held, by increasing index, each once.
+    pub present: Vec<ShardRun>,
+}
+
+/// One shard's run.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct ShardRun {
+    /// I, from 0 to N − 1.
+    pub index: u64,
+    /// Maps the shard checked.
+    pub maps: u64,
+    /// Its wall time, in seconds.
+    pub seconds: u64,
+    /// Start and end, UTC, `YYYY-MM-DDTHH:MM:SSZ`.
+    pub started: String,
+    pub ended: String,
+    /// The SHA-256 of the `wai` binary that ran it.
+    pub binary: String,
+    /// The counterexample files it wrote (paths as it wrote them).
+    pub counterexamples: Vec<String>,
+}
+
+impl Shards {
+    /// The shard indices of the run that this record does not hold.
+    pub fn missing(&self) -> Vec<u64> {
+        let mut have = self.present.iter().map(|s| s.index).peekable();
+        (0..self.count)
+            .filter(|i| {
+                if have.peek() == Some(i) {
+                    have.next();
+                    false
+                } else {
+                    true
+                }
+            })
+            .collect()
+    }
+
+    /// As JSON; `missing` is written for readers and checked when read.
+    pub fn to_json(&self) -> Value {
+        let present: Vec<Value> = self
+            .present
+            .iter()
+            .map(|s| {
+                json!({
+                    "index": s.index,
+                    "maps": s.maps,
+                    "seconds": s.seconds,
+                    "started": s.started,
+                    "ended": s.ended,
+                    "binary": s.binary,
+                    "counterexamples": s.counterexamples,
+                })
+            })
+            .collect();
+        json!({
+            "count": self.count,
+            "run": self.run,
+            "missing": self.missing(),
+            "present": present,
+        })
+    }
+
+    /// Reads the `shards` object at `at`.
+    pub fn from_json(v: &Value, at: &str) -> Result<Shards, String> {
+        let o = object(v, at)?;
+        let at = format!("{at}.");
+        let count = uint(o, "count", &at)?;
+        if count == 0 {
+            return Err(format!("{at}count: a run has at least one shard"));
+        }
+        let mut present: Vec<ShardRun> = Vec::new();
+        for (k, s) in array(o, "present", &at)?.iter().enumerate() {
+            let here = format!("{at}present[{k}]");
+            let s = object(s, &here)?;
+            let here = format!("{here}.");
+            let files = array(s, "counterexamples", &here)?
+                .iter()
+                .map(|f| {
+                    f.as_str().map(str::to_owned).ok_or_else(|| {
+                        format!("{here}counterexamples: expected file names, found {f}")
+                    })
+                })
+                .collect::<Result<Vec<_>, String>>()?;
+            let run = ShardRun {
+                index: uint(s, "index", &here)?,
+                maps: uint(s, "maps", &here)?,
+                seconds: uint(s, "seconds", &here)?,
+                started: string(s, "started", &here)?,
+                ended: string(s, "ended", &here)?,
+                binary: string(s, "binary", &here)?,
+                counterexamples: files,
+            };
+            if run.index >= count {
+                return Err(format!(
+                    "{here}index: shard {} of a run of {count} shards (numbered from 0)",
+                    run.index
+                ));
+            }
+            if present.last().is_some_and(|p| p.index >= run.index) {
+                return Err(format!(
+                    "{here}index: shards are listed once each by increasing index, and {} is not",
+                    run.index
+                ));
+            }
+            present.push(run);
+        }
+        let shards = Shards {
+            count,
+            run: string(o, "run", &at)?,
+            present,
+        };
+        let written: Vec<u64> = array(o, "missing", &at)?
+            .iter()
+            .map(|m| m.as_u64().unwrap_or(u64::MAX))
+            .collect();
+        if written != shards.missing() {
+            return Err(format!(
+                "{at}missing: says {written:?}, but the shards present leave {:?} missing",
+                shards.missing()
+            ));
+        }
+        Ok(shards)
     }
 }
 
