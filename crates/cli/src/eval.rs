@@ -509,6 +509,7 @@ pub fn run(args: &Args) -> Result<(), Failure> {
             "map": m.name,
             "kind": m.kind,
             "units": m.units,
+            "units_assumed": m.units_assumed,
             "vertices": m.map.n(),
             "cells": full.cells().len(),
             "sites": full.sites().len(),
@@ -634,6 +635,9 @@ fn print_table(
         loc.sites().len(),
         rows.first().map_or(0, |r| r.trials.len())
     );
+    if let Some(why) = &m.units_assumed {
+        outln!("  units {}: {why}", m.units);
+    }
     outln!(
         "  {:<24} {:<14} {:>8} {:>8} {:>8} {:>8} {:>6} {:>9} {:>9}",
         "condition",

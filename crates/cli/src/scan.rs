@@ -82,15 +82,20 @@ fn parse_pose(text: &str) -> Result<Pose, Failure> {
 
 pub fn run(args: &Args) -> Result<(), Failure> {
     let pose = parse_pose(&args.at)?;
-    let map = match args.map.to_str() {
+    let (map, units, units_assumed) = match args.map.to_str() {
         Some(spec) if crate::scan_maps::is_generated(spec) || args.units != "auto" => {
-            crate::scan_maps::load_map(spec, &args.units)?.map
+            let m = crate::scan_maps::load_map(spec, &args.units)?;
+            (m.map, m.units, m.units_assumed)
         }
         _ => {
             let map = load(&args.map, Format::Auto)?.map;
-            crate::scan_maps::in_metres(&args.map.display().to_string(), map, "auto")?.0
+            let m = crate::scan_maps::in_metres(&args.map.display().to_string(), map, "auto")?;
+            (m.map, m.units, m.assumed)
         }
     };
+    if let Some(why) = &units_assumed {
+        eprintln!("wai scan: map units {units}: {why}");
+    }
     let sensor = Sensor {
         beams: args.beams,
         fov: args.fov.to_radians(),
@@ -109,6 +114,8 @@ pub fn run(args: &Args) -> Result<(), Failure> {
     out["map"] = json!(map
         .name()
         .map_or_else(|| args.map.display().to_string(), str::to_owned));
+    out["units"] =
+        json!({ "map": units, "assumed": units_assumed, "scan": "m", "pose": "m, degrees" });
     out["pose"] = json!({ "x": pose.x, "y": pose.y, "heading_degrees": pose.heading.to_degrees() });
     out["sensor"] = json!({
         "beams": sensor.beams,

@@ -11,7 +11,7 @@ use std::path::Path;
 use serde_json::{json, Value};
 use wai_map::Map;
 use wai_scan::units::{to_metres, LonLatFrame, Units};
-use wai_scan::{Pose, Scan};
+use wai_scan::Pose;
 
 use crate::input::{load, Format};
 use crate::Failure;
@@ -22,6 +22,8 @@ pub(crate) struct EvalMap {
     pub(crate) kind: &'static str,
     pub map: Map,
     pub(crate) units: String,
+    /// What `--units auto` assumed to choose the units, if it assumed.
+    pub(crate) units_assumed: Option<String>,
     /// For `rooms:K`: K rooms, 5 m apart, the first from x = 1 m, floors
     /// at y = 2.2 m (see [`wai_gen::repeated_rooms`]).
     pub(crate) rooms: Option<usize>,
@@ -43,22 +45,41 @@ pub(crate) fn parse_units(text: &str) -> Result<Option<Units>, Failure> {
     }
 }
 
-/// The units `auto` picks for `map` read from `path`: the units its file
-/// states, else longitude/latitude if it looks so
-/// ([`wai_map::Map::looks_lonlat`]), 0.025 m per pixel for an R2V file,
-/// else metres.
-fn auto_units(path: &str, map: &Map) -> Units {
+/// The units `auto` picks for `map` read from `path`, and what was assumed
+/// to pick them when the file states none: the units its file states,
+/// else longitude/latitude if it looks so ([`wai_map::Map::looks_lonlat`]),
+/// 0.025 m per pixel for an R2V file, else metres.
+fn auto_units(path: &str, map: &Map) -> (Units, Option<String>) {
     match map.units() {
-        Some(wai_map::Units::Metres) => Units::Metres,
-        Some(wai_map::Units::LonLat) => Units::LonLatDegrees,
+        Some(wai_map::Units::Metres) => (Units::Metres, None),
+        Some(wai_map::Units::LonLat) => (Units::LonLatDegrees, None),
         // Numerator over denominator: the nearest double for a decimal
         // such as 0.01 (`Rational::to_f64` rounds toward zero).
-        Some(wai_map::Units::Scale(k)) => Units::Scale(k.numer().to_f64() / k.denom().to_f64()),
-        None if map.looks_lonlat() => Units::LonLatDegrees,
+        Some(wai_map::Units::Scale(k)) => {
+            (Units::Scale(k.numer().to_f64() / k.denom().to_f64()), None)
+        }
+        None if map.looks_lonlat() => (
+            Units::LonLatDegrees,
+            Some(
+                "assumed: the file states no units and its coordinates look like \
+                 longitude/latitude degrees"
+                    .into(),
+            ),
+        ),
         // R2V annotations are image pixels; floor plans of flats at about
         // 40 px per metre (an assumption: the source gives no scale).
-        None if path.contains("r2v") => Units::Scale(0.025),
-        None => Units::Metres,
+        None if path.contains("r2v") => (
+            Units::Scale(0.025),
+            Some(
+                "assumed: an R2V plan is in pixels and states no scale; read at 0.025 m \
+                 per pixel (give PATH@scale:K or --units to change it)"
+                    .into(),
+            ),
+        ),
+        None => (
+            Units::Metres,
+            Some("assumed: the file states no units; read as metres".into()),
+        ),
     }
 }
 
@@ -87,16 +108,30 @@ pub(crate) fn is_generated(spec: &str) -> bool {
         && !Path::new(spec).exists()
 }
 
-/// `map`, read from `path`, in metres by `units` (`auto` guesses), the
-/// units used, and for a longitude/latitude map the frame.
-pub(crate) fn in_metres(
-    path: &str,
-    map: Map,
-    units: &str,
-) -> Result<(Map, String, Option<LonLatFrame>), Failure> {
-    let u = parse_units(units)?.unwrap_or_else(|| auto_units(path, &map));
+/// A map file converted to metres.
+pub(crate) struct InMetres {
+    pub map: Map,
+    /// The units it was read in (`m`, `lonlat`, `scale:K`).
+    pub units: String,
+    /// What `--units auto` assumed to choose them, when the file states none.
+    pub assumed: Option<String>,
+    /// For a longitude/latitude map, the metric frame.
+    pub frame: Option<LonLatFrame>,
+}
+
+/// `map`, read from `path`, in metres by `units` (`auto` guesses).
+pub(crate) fn in_metres(path: &str, map: Map, units: &str) -> Result<InMetres, Failure> {
+    let (u, assumed) = match parse_units(units)? {
+        Some(u) => (u, None),
+        None => auto_units(path, &map),
+    };
     if u == Units::Metres {
-        return Ok((map, units_label(u), None));
+        return Ok(InMetres {
+            map,
+            units: units_label(u),
+            assumed,
+            frame: None,
+        });
     }
     let frame = (u == Units::LonLatDegrees).then(|| LonLatFrame::of(&map));
     let metres = to_metres(&map, u).map_err(|e| {
@@ -105,7 +140,12 @@ pub(crate) fn in_metres(
             units_label(u)
         ))
     })?;
-    Ok((metres, units_label(u), frame))
+    Ok(InMetres {
+        map: metres,
+        units: units_label(u),
+        assumed,
+        frame,
+    })
 }
 
 pub(crate) fn load_map(spec: &str, units: &str) -> Result<EvalMap, Failure> {
@@ -124,6 +164,7 @@ pub(crate) fn generate(spec: &str) -> Result<EvalMap, Failure> {
         kind,
         map,
         units: "m".into(),
+        units_assumed: None,
         rooms,
         frame: None,
     };
@@ -174,7 +215,7 @@ fn load_file(spec: &str, units: &str) -> Result<EvalMap, Failure> {
     };
     let map = load(Path::new(path), Format::Auto)?.map;
     let name = map.name().map_or_else(|| path.to_owned(), str::to_owned);
-    let (metres, u, frame) = in_metres(path, map, units)?;
+    let m = in_metres(path, map, units)?;
     let kind = if path.contains("westport") {
         "westport"
     } else if path.contains("r2v") {
@@ -185,74 +226,18 @@ fn load_file(spec: &str, units: &str) -> Result<EvalMap, Failure> {
     Ok(EvalMap {
         name,
         kind,
-        map: metres,
-        units: u,
+        map: m.map,
+        units: m.units,
+        units_assumed: m.assumed,
         rooms: None,
-        frame,
+        frame: m.frame,
     })
 }
 
-pub(crate) fn read_scan(path: &Path) -> Result<(Scan, Option<f64>, Option<f64>), Failure> {
+/// The scan file at `path`, in either format ([`wai_scan::format`]).
+pub(crate) fn read_scan(path: &Path) -> Result<wai_scan::format::ScanFile, Failure> {
     let bytes = crate::input::read_bytes(path)?;
-    let shown = path.display();
-    let v: Value = serde_json::from_slice(wai_map::json::strip_bom(&bytes))
-        .map_err(|e| Failure::invalid(format!("{shown}: not JSON: {e}")))?;
-    let numbers = |key: &str| -> Result<Vec<Option<f64>>, Failure> {
-        v.get(key)
-            .and_then(Value::as_array)
-            .ok_or_else(|| Failure::invalid(format!("{shown}: no array {key:?}")))?
-            .iter()
-            .enumerate()
-            .map(|(i, x)| match x {
-                Value::Null => Ok(None),
-                _ => x
-                    .as_f64()
-                    .filter(|f| f.is_finite())
-                    .map(Some)
-                    .ok_or_else(|| {
-                        Failure::invalid(format!("{shown}: {key}[{i}] is not a finite number"))
-                    }),
-            })
-            .collect()
-    };
-    let angles = numbers("angles")?;
-    let ranges = numbers("ranges")?;
-    if angles.len() != ranges.len() || angles.is_empty() {
-        return Err(Failure::invalid(format!(
-            "{shown}: {} angles and {} ranges: expected as many, at least one",
-            angles.len(),
-            ranges.len()
-        )));
-    }
-    let angles = angles
-        .into_iter()
-        .enumerate()
-        .map(|(i, a)| a.ok_or_else(|| Failure::invalid(format!("{shown}: angles[{i}] is null"))))
-        .collect::<Result<Vec<_>, _>>()?;
-    if let Some((i, r)) = ranges
-        .iter()
-        .enumerate()
-        .find(|(_, r)| r.is_some_and(|r| r < 0.0))
-    {
-        return Err(Failure::invalid(format!(
-            "{shown}: ranges[{i}] = {} is negative",
-            r.unwrap_or_default()
-        )));
-    }
-    let max_range = v
-        .pointer("/sensor/max_range")
-        .and_then(Value::as_f64)
-        .filter(|r| r.is_finite() && *r > 0.0);
-    let heading = match v.pointer("/pose/heading_degrees") {
-        None | Some(Value::Null) => None,
-        Some(h) => Some(h.as_f64().filter(|h| h.is_finite()).ok_or_else(|| {
-            Failure::invalid(format!(
-                "{shown}: pose.heading_degrees = {h} is not a finite number"
-            ))
-        })?),
-    }
-    .map(f64::to_radians);
-    Ok((Scan { angles, ranges }, max_range, heading))
+    wai_scan::format::read(&bytes).map_err(|e| Failure::invalid(format!("{}: {e}", path.display())))
 }
 
 pub(crate) fn pose_json(p: &Pose) -> Value {

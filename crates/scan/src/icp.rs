@@ -128,11 +128,14 @@ fn step(
 }
 
 /// How well `scan` agrees with the map seen from `pose`: the mean over the
-/// beams of min(e², τ²), e the difference of measured and predicted range
-/// (a lost return agrees with a predicted range beyond `max_range`, and
-/// costs τ² otherwise). The noise-free truth scores 0; noise σ scores ≈ σ².
-pub fn score(walls: &Walls, scan: &Scan, pose: &Pose, max_range: Option<f64>, tau: f64) -> f64 {
-    score_strided(walls, scan, pose, max_range, tau, 1)
+/// beams of min(e², τ²). For a return, e is the difference of measured and
+/// predicted range; a lost return says "beyond `cap`" (the scan model of
+/// [`crate::range`]), so e is how far the predicted range falls short of
+/// `cap`, and 0 when the map puts the wall beyond it (with `cap` infinite a
+/// lost beam costs τ²: no wall of a closed map is beyond every range). The
+/// noise-free truth scores 0; noise σ scores ≈ σ².
+pub fn score(walls: &Walls, scan: &Scan, pose: &Pose, cap: f64, tau: f64) -> f64 {
+    score_strided(walls, scan, pose, cap, tau, 1)
 }
 
 /// [`score`] on every `stride`-th beam: a cheap estimate that lets the
@@ -141,13 +144,12 @@ pub fn score_strided(
     walls: &Walls,
     scan: &Scan,
     pose: &Pose,
-    max_range: Option<f64>,
+    cap: f64,
     tau: f64,
     stride: usize,
 ) -> f64 {
     let stride = stride.max(1);
     let t2 = tau * tau;
-    let limit = max_range.unwrap_or(f64::INFINITY);
     let total: f64 = scan
         .angles
         .iter()
@@ -157,7 +159,7 @@ pub fn score_strided(
             let predicted = walls.range(pose, *a);
             match r {
                 Some(r) => (r - predicted).powi(2).min(t2),
-                None if predicted > limit => 0.0,
+                None if cap.is_finite() => (cap - predicted).max(0.0).powi(2).min(t2),
                 None => t2,
             }
         })

@@ -5,8 +5,50 @@
 //! from a [`Pose`] in a map (the map's walls plus unknown [`Obstacle`]s,
 //! small boxes the map does not know), adds seeded Gaussian noise to each
 //! range and drops the returns beyond a range cutoff. The scan is the
-//! robot's view: angles relative to its heading, ranges in the map's input
-//! units (metres for the datasets).
+//! robot's view: angles relative to its heading, ranges in the units of the
+//! map it is given (the commands give every map in metres).
+//!
+//! # The scan model
+//! What a scan says, and how each part of it enters the localizer (the
+//! thesis's sec. 6.1, 6.7 and eq. 6.8; [`range`] and [`format`] implement
+//! it):
+//! - A **beam** is an angle θ, in radians counter-clockwise from the
+//!   robot's heading (x ahead), and what came back along it. Beams need
+//!   not be equally spaced nor cover the full circle; they are taken in
+//!   angle order. Ranges and positions are in metres.
+//! - A **return** r: the nearest surface along the beam lies at r, up to
+//!   noise.
+//! - **No return** (`null`, ROS `+Inf`, or above a stated maximum): nothing
+//!   within the sensor's range R along the beam — the wall is *beyond R*,
+//!   never "at infinity" (a closed map has a wall along every ray).
+//! - A **discarded** reading (ROS `NaN`, `-Inf`, below the minimum range)
+//!   says nothing: the beam is dropped, leaving a gap.
+//! - The **maximum range** R is what the scan's source states; without a
+//!   statement only a bound is known — R is at least the longest return.
+//!   Lost beams are read against one range C ≤ R: the stated R, or the
+//!   longest return when none is stated or the statement is contradicted
+//!   by the map at the best pose ([`range::SensingRange`]; the answer then
+//!   carries a warning). With no lost beam no range is needed.
+//! - A **minimum range** only discards readings below it.
+//!
+//! How each enters the localizer:
+//! - *V_S and its PCF* (sec. 6.7): the points of neighbouring beams joined
+//!   by segments, a lost beam's point at distance C, every range capped at
+//!   C (eq. 6.8); where neighbouring beams are more than 1.5 typical steps
+//!   apart (a partial field of view, discarded beams) the angles between
+//!   them are masked out of the metric.
+//! - *The map's PCFs* at the sites are capped at the same C, so at the true
+//!   pose a lost beam reads C on both sides.
+//! - *The metric* (Def 6.3) is the masked Riemann sum of eq. 6.7 over the
+//!   covered angles, minimised over the rotations the compass allows.
+//! - *The ranking bound*: the rotation-free Parseval bound serves scans
+//!   that cover every angle; the bisector tree's triangle inequality holds
+//!   for any mask and any cap (capping is 1-Lipschitz), so one tree built
+//!   uncapped serves every query.
+//! - *The refinement*: ICP pairs returns only; a pose is scored by the
+//!   mean of min(e², τ²), e the difference of measured and predicted range
+//!   for a return, and for a lost beam how far the predicted range falls
+//!   short of C.
 //!
 //! # Number model
 //! This crate is where floating point is allowed to decide: sensor data
@@ -30,6 +72,7 @@
 pub mod coarsen;
 pub mod draw;
 pub mod eval;
+pub mod format;
 pub mod hausdorff;
 pub mod icp;
 mod localizer;
@@ -38,6 +81,7 @@ mod obstacles;
 pub mod pcm;
 pub mod peer;
 pub mod polar;
+pub mod range;
 pub mod signature;
 pub mod sites;
 pub mod units;
@@ -159,13 +203,18 @@ impl Sensor {
     }
 }
 
-/// A simulated scan: per beam its angle relative to the heading and the
-/// measured range, `None` where no return came back (beyond the range
-/// limit).
-#[derive(Debug, Clone, PartialEq)]
+/// A scan (the scan model of the crate's docs): per beam its angle
+/// relative to the heading and the measured range, `None` where no return
+/// came back (nothing within the sensor's range), and the maximum range
+/// its source states, if it states one.
+#[derive(Debug, Clone, PartialEq, Default)]
 pub struct Scan {
     pub angles: Vec<f64>,
     pub ranges: Vec<Option<f64>>,
+    /// The sensor's maximum range as the scan's source states it
+    /// (`sensor.max_range`, ROS `range_max`); `None`: not stated. How it is
+    /// used, and what is inferred without it: [`range::SensingRange`].
+    pub max_range: Option<f64>,
 }
 
 impl Scan {
@@ -287,7 +336,11 @@ pub fn simulate(
             }
         })
         .collect();
-    Ok(Scan { angles, ranges })
+    Ok(Scan {
+        angles,
+        ranges,
+        max_range: sensor.max_range,
+    })
 }
 
 /// A standard normal sample (Box–Muller).

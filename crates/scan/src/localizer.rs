@@ -7,6 +7,7 @@
 //! pose that scores as well within a tolerance, so that a building of
 //! identical rooms answers with each look-alike place.
 
+use std::borrow::Cow;
 use std::collections::HashMap;
 use std::time::Instant;
 
@@ -16,6 +17,7 @@ use wai_map::Map;
 use crate::coarsen::coarsen;
 use crate::icp::{self, IcpOptions};
 use crate::mbt::Mbt;
+use crate::range::{RangeBasis, SensingRange};
 use crate::signature::{Compass, Plans, ScanSignature, Signature, BOUND_SLACK};
 use crate::sites::{cell_sites, lattice_points, CellSite};
 use crate::walls::Walls;
@@ -45,7 +47,10 @@ const QUICK_SLACK: f64 = 2e-3;
 pub struct Options {
     /// Sample angles of a signature (720: the thesis's scanners).
     pub samples: usize,
-    /// The sensing range: PCFs are capped there (eq. 6.8).
+    /// The sensing range the sites' PCFs are capped at when built (eq.
+    /// 6.8); `None`: uncapped. A query is read with its own scan's range
+    /// ([`SensingRange`]), and a lower one caps the PCFs again for that
+    /// query.
     pub max_range: Option<f64>,
     /// How many of the best sites are refined to poses.
     pub candidates: usize,
@@ -186,6 +191,11 @@ pub struct Hypothesis {
     pub score: f64,
     /// The ranked cell it was refined from.
     pub from_site: usize,
+    /// How far the map lets every beam without a return run from this
+    /// pose: the least range the map gives along them (∞ with none). A
+    /// sensor reaching further would have seen a wall there, so a stated
+    /// range above it rules the pose out. Filled in for the answer set.
+    pub clear_to: f64,
 }
 
 /// What a query returns.
@@ -201,6 +211,45 @@ pub struct ScanAnswer {
     pub answer_set: Vec<Hypothesis>,
     /// PCM evaluations made.
     pub evaluations: usize,
+    /// The sensing range the scan was read with, and why.
+    pub range: SensingRange,
+}
+
+impl ScanAnswer {
+    /// What the reader must know about this answer: the range's warnings
+    /// ([`SensingRange::warnings`]) and, when the range was only bounded
+    /// and the answer set holds poses a longer range would tell apart,
+    /// which range would rule out how many of them.
+    pub fn warnings(&self) -> Vec<String> {
+        let mut out = self.range.warnings();
+        let bounded = matches!(
+            self.range.basis,
+            RangeBasis::LongestReturn | RangeBasis::LooseStatement
+        );
+        if !bounded || self.answer_set.len() < 2 {
+            return out;
+        }
+        // A pose stays possible for sensor ranges up to its clear_to: when
+        // these differ, a known range would narrow the set.
+        let reach: Vec<f64> = self.answer_set.iter().map(|h| h.clear_to).collect();
+        let (lo, hi) = reach
+            .iter()
+            .fold((f64::INFINITY, f64::NEG_INFINITY), |(l, h), r| {
+                (l.min(*r), h.max(*r))
+            });
+        if hi - lo > 0.2 {
+            let listed: Vec<String> = reach.iter().map(|r| format!("{r:.2}")).collect();
+            out.push(format!(
+                "the range decides between the {} answers: they differ in what lies beyond \
+                 {:.3} m along the beams without a return; a sensor known to reach R m rules \
+                 out each answer whose such beams meet a wall within R (in answer order: {} m)",
+                self.answer_set.len(),
+                self.range.cap,
+                listed.join(", ")
+            ));
+        }
+        out
+    }
 }
 
 /// A local query: only cells whose centre lies within `radius` of `at`.
@@ -347,9 +396,27 @@ impl ScanLocalizer {
         &self.opts
     }
 
+    /// The sites' signatures capped at `cap` (eq. 6.8): as built when `cap`
+    /// is not below the build's range ([`Options::max_range`]), else capped
+    /// again. Capping is 1-Lipschitz in every sample, so the tree built with
+    /// the uncapped D still bounds the capped PCM (see [`crate::signature`]).
+    fn signatures_at(&self, cap: f64) -> Cow<'_, [Signature]> {
+        use rayon::prelude::*;
+        if cap >= self.cap {
+            return Cow::Borrowed(&self.signatures);
+        }
+        Cow::Owned(
+            self.signatures
+                .par_iter()
+                .map(|v| v.capped(cap, &self.plans))
+                .collect(),
+        )
+    }
+
     /// The cells whose PCM to `scan` is least, best first (ties by site),
-    /// and how many PCMs were evaluated. A full scan visits the cells in
-    /// the order of a rotation-free lower bound of their PCM and stops
+    /// and how many PCMs were evaluated, the scan read with its own
+    /// sensing range ([`SensingRange::of`]). A full scan visits the cells
+    /// in the order of a rotation-free lower bound of their PCM and stops
     /// when the bound passes the k-th best PCM found
     /// ([`ScanSignature::lower_bound`]); the result is the same as
     /// [`ScanLocalizer::rank_linear`]'s (a test checks it).
@@ -360,24 +427,40 @@ impl ScanLocalizer {
         near: Option<Near>,
         k: usize,
     ) -> (Vec<RankedCell>, usize) {
+        let cap = SensingRange::of(scan).cap;
+        self.rank_at(scan, compass, near, k, cap, &self.signatures_at(cap))
+    }
+
+    /// [`ScanLocalizer::rank`] with the PCFs capped at `cap`, `signatures`
+    /// being the sites' signatures capped there.
+    fn rank_at(
+        &self,
+        scan: &Scan,
+        compass: &Compass,
+        near: Option<Near>,
+        k: usize,
+        cap: f64,
+        signatures: &[Signature],
+    ) -> (Vec<RankedCell>, usize) {
         if k == 0 {
             return (Vec::new(), 0);
         }
-        let s = ScanSignature::new(scan, compass.heading(), self.cap, &self.plans);
+        let cap = cap.min(self.cap);
+        let s = ScanSignature::new(scan, compass.heading(), cap, &self.plans);
         let eligible = self.eligible(near);
         let bounds: Option<Vec<(f64, usize)>> = eligible
             .iter()
-            .map(|&i| s.lower_bound(&self.signatures[i]).map(|b| (b, i)))
+            .map(|&i| s.lower_bound(&signatures[i]).map(|b| (b, i)))
             .collect();
         let Some(mut bounds) = bounds else {
             if near.is_some() {
-                return self.rank_all(&s, &eligible, compass, k);
+                return self.rank_all(&s, signatures, &eligible, compass, k);
             }
             // The rotation search gives the heading with the PCM: keep it
             // for the sites that end up ranked.
             let mut headings: HashMap<usize, f64> = HashMap::new();
             let (found, stats) = self.tree.k_nearest_with_stats(k, |i| {
-                let r = self.ranked_cell(&s, i, compass);
+                let r = self.ranked_cell(&s, signatures, i, compass);
                 headings.insert(i, r.heading);
                 r.pcm
             });
@@ -401,7 +484,7 @@ impl ScanLocalizer {
                     break;
                 }
             }
-            let cell = self.ranked_cell(&s, i, compass);
+            let cell = self.ranked_cell(&s, signatures, i, compass);
             evaluations += 1;
             let pcm = cell.pcm;
             let at = best.partition_point(|c| c.pcm < pcm || (c.pcm == pcm && c.site < i));
@@ -421,14 +504,22 @@ impl ScanLocalizer {
         near: Option<Near>,
         k: usize,
     ) -> (Vec<RankedCell>, usize) {
-        let s = ScanSignature::new(scan, compass.heading(), self.cap, &self.plans);
-        self.rank_all(&s, &self.eligible(near), compass, k)
+        let cap = SensingRange::of(scan).cap.min(self.cap);
+        let signatures = self.signatures_at(cap);
+        let s = ScanSignature::new(scan, compass.heading(), cap, &self.plans);
+        self.rank_all(&s, &signatures, &self.eligible(near), compass, k)
     }
 
     /// Site `i` with its PCM to the scan `s` under `compass` and the
     /// heading that PCM gives.
-    fn ranked_cell(&self, s: &ScanSignature, i: usize, compass: &Compass) -> RankedCell {
-        let (pcm, heading) = s.pcm(&self.signatures[i], compass, &self.plans);
+    fn ranked_cell(
+        &self,
+        s: &ScanSignature,
+        signatures: &[Signature],
+        i: usize,
+        compass: &Compass,
+    ) -> RankedCell {
+        let (pcm, heading) = s.pcm(&signatures[i], compass, &self.plans);
         RankedCell {
             site: i,
             pcm,
@@ -448,13 +539,14 @@ impl ScanLocalizer {
     fn rank_all(
         &self,
         s: &ScanSignature,
+        signatures: &[Signature],
         eligible: &[usize],
         compass: &Compass,
         k: usize,
     ) -> (Vec<RankedCell>, usize) {
         let mut ranked: Vec<RankedCell> = eligible
             .iter()
-            .map(|&i| self.ranked_cell(s, i, compass))
+            .map(|&i| self.ranked_cell(s, signatures, i, compass))
             .collect();
         let evaluations = ranked.len();
         ranked.sort_by(|a, b| a.pcm.total_cmp(&b.pcm).then(a.site.cmp(&b.site)));
@@ -463,13 +555,70 @@ impl ScanLocalizer {
     }
 
     /// Localizes `scan`: ranks the cells, refines the best, and answers
-    /// with the best pose and the set of poses as good.
+    /// with the best pose and the set of poses as good. The scan is read
+    /// with its sensing range ([`SensingRange::of`]); when its stated range
+    /// is contradicted at the best pose (lost beams facing walls well within
+    /// it: [`SensingRange::is_contradicted_by`]), it is read again with
+    /// its longest return as the range, and the answer says so.
     pub fn localize(&self, scan: &Scan, compass: &Compass, near: Option<Near>) -> ScanAnswer {
+        let range = SensingRange::of(scan);
+        let answer = self.localize_with(scan, compass, near, range);
+        if answer.range.basis != RangeBasis::Stated || answer.range.lost == 0 {
+            return answer;
+        }
+        let Some(best) = &answer.best else {
+            return answer;
+        };
+        let contradicted = self.contradicted(scan, &best.pose, answer.range.cap);
+        match answer.range.loosened(contradicted) {
+            Some(loose) if answer.range.is_contradicted_by(contradicted) => {
+                let again = self.localize_with(scan, compass, near, loose);
+                ScanAnswer {
+                    evaluations: answer.evaluations + again.evaluations,
+                    ..again
+                }
+            }
+            _ => answer,
+        }
+    }
+
+    /// [`Hypothesis::clear_to`]: the least range the map gives from `pose`
+    /// along the beams of `scan` without a return.
+    fn clear_to(&self, scan: &Scan, pose: &Pose) -> f64 {
+        scan.angles
+            .iter()
+            .zip(&scan.ranges)
+            .filter(|(_, r)| r.is_none())
+            .map(|(a, _)| self.walls.range(pose, *a))
+            .fold(f64::INFINITY, f64::min)
+    }
+
+    /// The lost beams of `scan` that face a wall within `cap`, by more than
+    /// the score's τ, from `pose`.
+    fn contradicted(&self, scan: &Scan, pose: &Pose, cap: f64) -> usize {
+        scan.angles
+            .iter()
+            .zip(&scan.ranges)
+            .filter(|(a, r)| r.is_none() && self.walls.range(pose, **a) < cap - self.opts.tau)
+            .count()
+    }
+
+    /// [`ScanLocalizer::localize`] with the scan read against `range`.
+    fn localize_with(
+        &self,
+        scan: &Scan,
+        compass: &Compass,
+        near: Option<Near>,
+        range: SensingRange,
+    ) -> ScanAnswer {
         let points = scan.points();
+        let signatures = self.signatures_at(range.cap);
         let mut landed: Vec<(Pose, usize)> = Vec::new();
-        let (mut ranked, mut evaluations) = self.candidates(scan, compass, near);
+        let (mut ranked, mut evaluations) =
+            self.candidates(scan, compass, near, range.cap, &signatures);
         self.land(&ranked, &points, &mut landed);
-        let (mut hypotheses, best_quick) = self.refine(scan, &points, &landed, f64::INFINITY);
+        let (mut hypotheses, best_quick) =
+            self.refine(scan, &points, &landed, f64::INFINITY, range.cap);
         // Beyond ROLOPRO: without an exact compass, the best refined pose
         // knows the heading; ranking again at that heading (sharper: one
         // rotation, eq. 6.7) finds the places a rotation search ranked
@@ -477,11 +626,15 @@ impl ScanLocalizer {
         if !matches!(compass, Compass::Exact(_)) {
             let best = hypotheses.iter().min_by(|a, b| a.score.total_cmp(&b.score));
             if let Some(heading) = best.map(|b| b.pose.heading) {
-                let (again, more) = self.candidates(scan, &Compass::Exact(heading), near);
+                let (again, more) =
+                    self.candidates(scan, &Compass::Exact(heading), near, range.cap, &signatures);
                 evaluations += more;
                 let first = landed.len();
                 self.land(&again, &points, &mut landed);
-                hypotheses.extend(self.refine(scan, &points, &landed[first..], best_quick).0);
+                hypotheses.extend(
+                    self.refine(scan, &points, &landed[first..], best_quick, range.cap)
+                        .0,
+                );
                 ranked.extend(again);
             }
         }
@@ -496,15 +649,20 @@ impl ScanLocalizer {
             let limit = self.opts.answer_ratio * b.score + self.opts.answer_slack;
             for h in hypotheses.iter().filter(|h| h.score <= limit) {
                 if !answer_set.iter().any(|a| same_place(&a.pose, &h.pose)) {
-                    answer_set.push(h.clone());
+                    answer_set.push(Hypothesis {
+                        clear_to: self.clear_to(scan, &h.pose),
+                        ..h.clone()
+                    });
                 }
             }
         }
+        let best = answer_set.first().cloned().or(best);
         ScanAnswer {
             ranked,
             best,
             answer_set,
             evaluations,
+            range,
         }
     }
 
@@ -518,9 +676,12 @@ impl ScanLocalizer {
         scan: &Scan,
         compass: &Compass,
         near: Option<Near>,
+        cap: f64,
+        signatures: &[Signature],
     ) -> (Vec<RankedCell>, usize) {
         let k = self.opts.candidates;
-        let (pool, evaluations) = self.rank(scan, compass, near, k.saturating_mul(POOL));
+        let (pool, evaluations) =
+            self.rank_at(scan, compass, near, k.saturating_mul(POOL), cap, signatures);
         let mut ranked: Vec<RankedCell> = Vec::with_capacity(k);
         for r in pool {
             if ranked.len() == k {
@@ -560,25 +721,19 @@ impl ScanLocalizer {
     /// (every `QUICK_STRIDE`-th beam) is not far worse than the best of
     /// these landings' and `floor` (the best quick score of an earlier
     /// pass): the others cannot join the answer set. Also the best quick
-    /// score, `floor` included.
+    /// score, `floor` included. Lost beams are scored against `cap`.
     fn refine(
         &self,
         scan: &Scan,
         points: &[(f64, f64)],
         landed: &[(Pose, usize)],
         floor: f64,
+        cap: f64,
     ) -> (Vec<Hypothesis>, f64) {
         let quick: Vec<f64> = landed
             .iter()
             .map(|(p, _)| {
-                icp::score_strided(
-                    &self.walls,
-                    scan,
-                    p,
-                    self.opts.max_range,
-                    self.opts.tau,
-                    QUICK_STRIDE,
-                )
+                icp::score_strided(&self.walls, scan, p, cap, self.opts.tau, QUICK_STRIDE)
             })
             .collect();
         let best_quick = quick.iter().copied().fold(floor, f64::min);
@@ -590,7 +745,7 @@ impl ScanLocalizer {
             .map(|(&(coarse, site), _)| {
                 let pose = icp::fine(&self.walls, points, coarse, &self.opts.icp);
                 let score = if pose.x.is_finite() && pose.y.is_finite() {
-                    icp::score(&self.walls, scan, &pose, self.opts.max_range, self.opts.tau)
+                    icp::score(&self.walls, scan, &pose, cap, self.opts.tau)
                 } else {
                     f64::INFINITY
                 };
@@ -598,6 +753,7 @@ impl ScanLocalizer {
                     pose,
                     score,
                     from_site: site,
+                    clear_to: f64::INFINITY,
                 }
             })
             .collect();

@@ -145,6 +145,15 @@ impl Signature {
         Signature::from_values(values, plans)
     }
 
+    /// This signature capped at a lower range `cap` (eq. 6.8 again: capping
+    /// a capped PCF caps at the smaller range).
+    pub fn capped(&self, cap: f64, plans: &Plans) -> Signature {
+        Signature::from_values(
+            self.values.iter().map(|v| v.min(cap as f32)).collect(),
+            plans,
+        )
+    }
+
     /// D: the unmasked, unrotated PCM of two signatures.
     pub fn distance(&self, other: &Signature) -> f64 {
         let sum: f64 = self
@@ -176,41 +185,55 @@ pub struct ScanSignature {
 }
 
 impl ScanSignature {
-    /// Samples V_S of `scan` turned by `heading` at the `plans.n()` angles.
-    /// A lost return counts as `cap`; every range is capped at `cap`.
+    /// Samples V_S of `scan` turned by `heading` at the `plans.n()` angles,
+    /// capped at `cap` (eq. 6.8): a lost return reads `cap`, as the map's
+    /// capped PCF reads beyond the sensing range (the scan model of
+    /// [`crate::range`]).
+    ///
+    /// V_S joins each beam's point to the next beam's, in angle order, unless
+    /// the two beams are more than [`GAP_STEPS`] typical steps apart (a
+    /// partial field of view, or beams dropped as invalid): the angles of
+    /// such a gap are masked out (w = 0), as are the angles next to a lost
+    /// return when `cap` is infinite (a lost return can only be read
+    /// against a finite range).
     pub fn new(scan: &Scan, heading: f64, cap: f64, plans: &Plans) -> ScanSignature {
         let n = plans.n;
-        let m = scan.angles.len();
-        let ranges: Vec<f64> = scan
-            .ranges
+        let mut beams: Vec<(f64, Option<f64>)> = scan
+            .angles
             .iter()
-            .map(|r| r.unwrap_or(cap).min(cap))
+            .zip(&scan.ranges)
+            .filter(|(a, _)| a.is_finite())
+            .map(|(&a, &r)| (crate::polar::normalise(a), r.map(|r| r.min(cap))))
             .collect();
-        let full = m >= 2 && {
-            let step = scan.angles[1] - scan.angles[0];
-            (step * m as f64 - TAU).abs() < 1e-9
-        };
-        let (first, step) = match m {
-            0 => (0.0, 1.0),
-            1 => (scan.angles[0], 1.0),
-            _ => (scan.angles[0], scan.angles[1] - scan.angles[0]),
-        };
+        beams.sort_by(|x, y| x.0.total_cmp(&y.0));
+        beams.dedup_by(|x, y| x.0 == y.0);
+        let m = beams.len();
+        let max_gap = GAP_STEPS * typical_step(&beams);
+        let lost = if cap.is_finite() { Some(cap) } else { None };
         let mut values = vec![0.0f32; n];
         let mut mask = vec![0.0f32; n];
         for j in 0..n {
-            // The beam interval [i, i+1] holding this angle, in robot frame.
-            let rel = (angle(n, j) - heading - first).rem_euclid(TAU);
-            let pos = rel / step;
-            let i = pos.floor() as usize;
-            let (i0, i1) = if full {
-                (i % m, (i + 1) % m)
-            } else if m >= 2 && i + 1 < m {
-                (i, i + 1)
+            if m < 2 {
+                break;
+            }
+            // The beam at or before this angle (robot frame), circularly.
+            let rel = crate::polar::normalise(angle(n, j) - heading);
+            let k = beams.partition_point(|b| b.0 <= rel);
+            let (i0, i1) = if k == 0 { (m - 1, 0) } else { (k - 1, k % m) };
+            let a0 = beams[i0].0;
+            let a1 = if i1 == 0 {
+                beams[0].0 + TAU
             } else {
+                beams[i1].0
+            };
+            let at = if rel < a0 { rel + TAU } else { rel };
+            if a1 - a0 > max_gap {
+                continue;
+            }
+            let (Some(r0), Some(r1)) = (beams[i0].1.or(lost), beams[i1].1.or(lost)) else {
                 continue;
             };
-            let a0 = first + step * i as f64;
-            let s = through_segment(ranges[i0], ranges[i1], a0, step, rel + first);
+            let s = through_segment(r0, r1, a0, a1 - a0, at);
             values[j] = s.min(cap) as f32;
             mask[j] = 1.0;
         }
@@ -343,6 +366,32 @@ impl ScanSignature {
 /// skipped only when its bound exceeds the k-th best value found by more
 /// than this relative margin (plus 1e-6 absolute).
 pub const BOUND_SLACK: f64 = 1e-3;
+
+/// Beams further apart than this many typical steps leave a gap in V_S
+/// (masked): a full scan's step is uniform, so only a partial field of
+/// view or dropped beams make such gaps.
+pub const GAP_STEPS: f64 = 1.5;
+
+/// The typical angle between neighbouring beams (sorted by angle): the
+/// median of the positive steps, circularly; 2π for fewer than two beams.
+fn typical_step(beams: &[(f64, Option<f64>)]) -> f64 {
+    let m = beams.len();
+    if m < 2 {
+        return TAU;
+    }
+    let mut steps: Vec<f64> = (0..m)
+        .map(|i| {
+            if i + 1 < m {
+                beams[i + 1].0 - beams[i].0
+            } else {
+                beams[0].0 + TAU - beams[i].0
+            }
+        })
+        .filter(|d| *d > 0.0)
+        .collect();
+    steps.sort_by(f64::total_cmp);
+    steps.get(steps.len() / 2).copied().unwrap_or(TAU)
+}
 
 /// The range along direction `a` (robot frame) to the segment between the
 /// scan points at angles `a0` and `a0 + step` with ranges `r0`, `r1`.

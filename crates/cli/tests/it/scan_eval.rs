@@ -164,9 +164,9 @@ fn bad_scans_compasses_and_maps_are_refused_with_a_message() {
             r#"{"angles": [null], "ranges": [1]}"#,
             vec![],
             1,
-            "angles[0] is null",
+            "angles[0] = null is not a finite number",
         ),
-        (r#"{"ranges": [1]}"#, vec![], 1, "no array \"angles\""),
+        (r#"{"ranges": [1]}"#, vec![], 1, "neither a wai scan"),
         (
             r#"{"angles": [0], "ranges": [1]}"#,
             vec!["--compass".into(), "exact".into()],
@@ -420,5 +420,177 @@ fn sites_fit_the_memory_budget() {
         err.contains("refused") && err.contains("MiB") && err.contains("--max-memory"),
         "{err}"
     );
+    std::fs::remove_dir_all(&dir).ok();
+}
+
+/// A scan of office:2:3 at (3.5, −2.5) heading 30° with a 4 m range, as
+/// `wai scan` writes it.
+fn short_range_scan(dir: &std::path::Path) -> serde_json::Value {
+    let path = dir.join("short.json");
+    let out = wai(
+        &[
+            "scan",
+            "office:2:3",
+            "--at",
+            "3.5,-2.5,30",
+            "--noise",
+            "0.02",
+            "--max-range",
+            "4",
+            "--out",
+            path.to_str().unwrap(),
+        ],
+        b"",
+    );
+    assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
+    serde_json::from_slice(&std::fs::read(&path).unwrap()).unwrap()
+}
+
+#[test]
+fn a_scan_without_a_stated_range_or_in_ros_form_is_read_and_says_what_it_assumed() {
+    let dir = tmp("forms");
+    let stated = short_range_scan(&dir);
+    let lost = stated["ranges"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .filter(|r| r.is_null())
+        .count();
+    assert!(lost > 0, "the 4 m scan loses no beam");
+    let mut unstated = stated.clone();
+    unstated.as_object_mut().unwrap().remove("sensor");
+    // The ROS form: angles from angle_min in steps of angle_increment, no
+    // return as +Inf (written by Python's json as a bare Infinity).
+    let angles = stated["angles"].as_array().unwrap();
+    let (a0, a1) = (angles[0].as_f64().unwrap(), angles[1].as_f64().unwrap());
+    let ranges: Vec<String> = stated["ranges"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|r| r.as_f64().map_or("Infinity".into(), |r| r.to_string()))
+        .collect();
+    let ros = format!(
+        r#"{{"angle_min": {a0}, "angle_max": {}, "angle_increment": {}, "range_min": 0.0,
+            "range_max": 4.0, "ranges": [{}], "intensities": []}}"#,
+        a0 + (a1 - a0) * (angles.len() - 1) as f64,
+        a1 - a0,
+        ranges.join(",")
+    );
+    let files = [
+        ("stated.json", stated.to_string()),
+        ("unstated.json", unstated.to_string()),
+        ("ros.json", ros),
+    ];
+    for (name, body) in &files {
+        std::fs::write(dir.join(name), body).unwrap();
+    }
+    let path = |name: &str| dir.join(name).to_str().unwrap().to_owned();
+    let run = |name: &str, extra: &[&str]| {
+        let p = path(name);
+        let mut args = vec!["localize-scan", "office:2:3", &p, "--compass", "none"];
+        args.extend_from_slice(extra);
+        let out = wai(&args, b"");
+        assert_eq!(out.status.code(), Some(0), "{name}: {}", text(&out.stderr));
+        out
+    };
+    let json = |name: &str, extra: &[&str]| -> serde_json::Value {
+        let mut e = vec!["--json"];
+        e.extend_from_slice(extra);
+        serde_json::from_slice(&run(name, &e).stdout).expect("JSON")
+    };
+    let (s, u, r) = (
+        json("stated.json", &[]),
+        json("unstated.json", &[]),
+        json("ros.json", &[]),
+    );
+    // Stated: read against 4 m, no warning. Unstated: against the longest
+    // return, with a warning, and still the right pose.
+    assert_eq!(s["range"]["basis"], "stated");
+    assert_eq!(s["warnings"].as_array().unwrap().len(), 0);
+    assert_eq!(u["range"]["basis"], "longest return");
+    assert_eq!(u["range"]["beams_without_return"], lost);
+    let w = u["warnings"][0].as_str().unwrap();
+    assert!(w.contains("states no maximum range"), "{w}");
+    for v in [&s, &u, &r] {
+        let (x, y, _) = pose_of(&v["best"]["pose"]);
+        assert!((x - 3.5).hypot(y + 2.5) < 0.1, "({x}, {y})");
+    }
+    // The ROS form is detected, reads the same beams and answers the same.
+    assert_eq!(r["scan"]["format"], "ROS sensor_msgs/LaserScan JSON");
+    assert_eq!(s["scan"]["format"], "wai scan JSON");
+    // Up to the rounding of angle_min + i · angle_increment (1e-15 rad).
+    let same = |a: &serde_json::Value, b: &serde_json::Value| {
+        let ((x, y, h), (u, v, g)) = (pose_of(&a["pose"]), pose_of(&b["pose"]));
+        (x - u).abs() < 1e-9 && (y - v).abs() < 1e-9 && (h - g).abs() < 1e-7
+    };
+    assert!(
+        same(&r["best"], &s["best"]),
+        "{} vs {}",
+        r["best"],
+        s["best"]
+    );
+    let (rs, ss) = (
+        r["answer_set"].as_array().unwrap(),
+        s["answer_set"].as_array().unwrap(),
+    );
+    assert_eq!(rs.len(), ss.len());
+    assert!(rs.iter().zip(ss).all(|(a, b)| same(a, b)));
+    // Stating the range on the command line silences the warning.
+    let quiet = json("unstated.json", &["--max-range", "4"]);
+    assert_eq!(quiet["range"]["basis"], "stated");
+    assert_eq!(quiet["warnings"].as_array().unwrap().len(), 0);
+    // The text answer says the format, the range read and the warning.
+    let t = text(&run("unstated.json", &[]).stdout);
+    for want in [
+        "scan: wai scan JSON",
+        "sensing range: not stated",
+        "warning: the scan states no maximum range",
+        "units: m",
+    ] {
+        assert!(t.contains(want), "{want} missing from: {t}");
+    }
+    let t = text(&run("ros.json", &[]).stdout);
+    assert!(
+        t.contains("scan: ROS sensor_msgs/LaserScan JSON, 720 beams"),
+        "{t}"
+    );
+    std::fs::remove_dir_all(&dir).ok();
+}
+
+#[test]
+fn several_scans_share_one_preprocessing_and_a_refused_one_does_not_stop_the_rest() {
+    let dir = tmp("batch");
+    let good = short_range_scan(&dir);
+    let mut blind = good.clone();
+    blind["ranges"] = serde_json::json!(vec![serde_json::Value::Null; 720]);
+    std::fs::write(dir.join("a.json"), good.to_string()).unwrap();
+    std::fs::write(dir.join("b.json"), blind.to_string()).unwrap();
+    std::fs::write(dir.join("c.json"), good.to_string()).unwrap();
+    let p = |n: &str| dir.join(n).to_str().unwrap().to_owned();
+    let (a, b, c) = (p("a.json"), p("b.json"), p("c.json"));
+    let out = wai(&["localize-scan", "office:2:3", &a, &b, &c], b"");
+    // Every scan answered or refused by name, then exit 1 for the refusal.
+    assert_eq!(out.status.code(), Some(1), "{}", text(&out.stderr));
+    let t = text(&out.stdout);
+    assert!(
+        t.contains("REFUSED") && t.contains("b.json: not localizable"),
+        "{t}"
+    );
+    assert!(t.contains("3 scans (1 refused)"), "{t}");
+    assert!(
+        t.contains("of the 2 that record their pose: best pose within 0.5 m and 10° 2 times"),
+        "{t}"
+    );
+    assert!(text(&out.stderr).contains("1 of 3 scans refused"));
+    let out = wai(&["localize-scan", "office:2:3", &a, &c, "--json"], b"");
+    assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
+    let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    assert_eq!(v["summary"]["success_rate"], 1.0);
+    assert_eq!(v["summary"]["answer_set_contains_truth_rate"], 1.0);
+    assert_eq!(v["scans"].as_array().unwrap().len(), 2);
+    // One drawing needs one answer.
+    let svg = p("x.svg");
+    let out = wai(&["localize-scan", "office:2:3", &a, &c, "--svg", &svg], b"");
+    assert_eq!(out.status.code(), Some(2));
     std::fs::remove_dir_all(&dir).ok();
 }

@@ -587,6 +587,7 @@ fn lost_returns_become_vertices_at_the_range_and_gaps_are_refused() {
     let scan = Scan {
         angles: vec![0.0, FRAC_PI_2, PI, 3.0 * FRAC_PI_2],
         ranges: vec![Some(1.0), None, Some(2.0), Some(1.0)],
+        max_range: None,
     };
     let vs = StarPolygon::from_scan(&scan, 5.0).unwrap();
     assert!(close(vs.pcf().value(FRAC_PI_2), 5.0, 1e-12));
@@ -599,6 +600,7 @@ fn lost_returns_become_vertices_at_the_range_and_gaps_are_refused() {
     let half = Scan {
         angles: vec![-FRAC_PI_2, 0.0, FRAC_PI_2],
         ranges: vec![Some(1.0); 3],
+        max_range: None,
     };
     assert!(matches!(
         StarPolygon::from_scan(&half, 5.0),
@@ -607,6 +609,7 @@ fn lost_returns_become_vertices_at_the_range_and_gaps_are_refused() {
     let zero = Scan {
         angles: vec![0.0, 2.0, 4.0],
         ranges: vec![Some(1.0), Some(0.0), Some(1.0)],
+        max_range: None,
     };
     assert!(matches!(
         StarPolygon::from_scan(&zero, 5.0),
@@ -615,6 +618,7 @@ fn lost_returns_become_vertices_at_the_range_and_gaps_are_refused() {
     let short = Scan {
         angles: vec![0.0, 2.0],
         ranges: vec![Some(1.0); 2],
+        max_range: None,
     };
     assert_eq!(
         StarPolygon::from_scan(&short, 5.0),

@@ -104,10 +104,24 @@ fn the_ranking_equals_a_linear_scan_for_every_compass_field_of_view_and_local_qu
     let (map, loc) = office();
     let poses = eval::random_poses(&map, loc.walls(), 12, 0.2, 11);
     let half = Sensor { fov: PI, ..noisy() };
+    // A 3 m sensor loses beams: stated, the PCFs are capped at 3 m again
+    // for the query; not stated, at the longest return.
+    let short = Sensor {
+        max_range: Some(3.0),
+        ..noisy()
+    };
     let mut checked = 0;
     for (i, p) in poses.iter().enumerate() {
-        for sensor in [noisy(), half.clone()] {
-            let scan = simulate(&map, &[], p, &sensor, i as u64).unwrap();
+        for (sensor, stated) in [
+            (noisy(), true),
+            (half.clone(), true),
+            (short.clone(), true),
+            (short.clone(), false),
+        ] {
+            let mut scan = simulate(&map, &[], p, &sensor, i as u64).unwrap();
+            if !stated {
+                scan.max_range = None;
+            }
             for compass in [
                 Compass::Exact(p.heading),
                 Compass::Noisy {
@@ -142,7 +156,44 @@ fn the_ranking_equals_a_linear_scan_for_every_compass_field_of_view_and_local_qu
             }
         }
     }
-    assert_eq!(checked, 12 * 2 * 3 * 2);
+    assert_eq!(checked, 12 * 4 * 3 * 2);
+}
+
+#[test]
+fn a_query_capped_below_the_build_ranks_as_a_localizer_built_at_that_range() {
+    // Built uncapped and queried with a 3 m scan, the PCFs are capped again
+    // per query: the ranking must be the one of a localizer built at 3 m.
+    let (map, uncapped) = office();
+    let built = ScanLocalizer::new(
+        &map,
+        Options {
+            max_range: Some(3.0),
+            ..Options::default()
+        },
+    );
+    let sensor = Sensor {
+        max_range: Some(3.0),
+        ..noisy()
+    };
+    let mut lost = 0;
+    for (i, p) in eval::random_poses(&map, built.walls(), 8, 0.2, 23)
+        .iter()
+        .enumerate()
+    {
+        let scan = simulate(&map, &[], p, &sensor, i as u64).unwrap();
+        lost += usize::from(scan.returns() < scan.ranges.len());
+        for compass in [Compass::Exact(p.heading), Compass::None] {
+            let (a, _) = uncapped.rank(&scan, &compass, None, 10);
+            let (b, _) = built.rank(&scan, &compass, None, 10);
+            assert!(same_ranking(&a, &b), "pose {i}, {compass:?}");
+            let (x, y) = (
+                uncapped.localize(&scan, &compass, None),
+                built.localize(&scan, &compass, None),
+            );
+            assert_eq!(x.best, y.best, "pose {i}, {compass:?}");
+        }
+    }
+    assert!(lost >= 4, "only {lost} scans lose beams");
 }
 
 #[test]
@@ -260,8 +311,8 @@ fn icp_pulls_a_start_half_a_metre_and_ten_degrees_off_onto_the_truth() {
         if eval::STRICT.accepts(&got, truth) {
             within += 1;
         }
-        let s_truth = icp::score(loc.walls(), &scan, truth, None, 0.2);
-        let s_start = icp::score(loc.walls(), &scan, &start, None, 0.2);
+        let s_truth = icp::score(loc.walls(), &scan, truth, f64::INFINITY, 0.2);
+        let s_start = icp::score(loc.walls(), &scan, &start, f64::INFINITY, 0.2);
         // Noise σ = 2 cm scores about σ² = 4e-4 at the truth.
         assert!(s_truth < 1e-3, "{s_truth}");
         assert!(s_start > 5.0 * s_truth, "{s_start} vs {s_truth}");
@@ -512,6 +563,7 @@ fn the_summary_counts_what_it_is_given() {
         scan: wai_scan::Scan {
             angles: vec![0.0],
             ranges: vec![Some(1.0)],
+            max_range: None,
         },
         compass: Compass::None,
     };

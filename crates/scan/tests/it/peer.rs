@@ -208,6 +208,7 @@ fn a_bad_message_gets_an_error_answer_and_the_peer_keeps_serving() {
         &wai_scan::Scan {
             angles: vec![0.0, 0.1],
             ranges: vec![None, None],
+            max_range: None,
         },
         None,
     );
