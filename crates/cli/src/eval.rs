@@ -37,6 +37,7 @@ pub struct Args {
     pub compass: String,
     /// Conditions, comma-separated: `base` (720 beams over 360°, σ 2 cm),
     /// `boxes` (5 unknown 0.5 m boxes), `fov180`, `range10` (10 m cutoff),
+    /// `range10-unstated` (the same scans not stating their range),
     /// or `all`.
     #[arg(long, default_value = "all")]
     pub conditions: String,
@@ -93,9 +94,10 @@ fn conditions(text: &str) -> Result<Vec<Condition>, Failure> {
                 "boxes" => 1,
                 "fov180" => 2,
                 "range10" => 3,
+                "range10-unstated" => 4,
                 _ => {
                     return Err(Failure::usage(format!(
-                        "condition {c:?}: expected base, boxes, fov180, range10 or all"
+                        "condition {c:?}: expected base, boxes, fov180, range10, range10-unstated or all"
                     )))
                 }
             };
@@ -371,7 +373,7 @@ pub fn run(args: &Args) -> Result<(), Failure> {
                         peer.name()
                     ));
                     let o = peer
-                        .localize(&t.scan, c.sensor.max_range)
+                        .localize(&t.scan, t.scan.max_range)
                         .map_err(|e| Failure::io(format!("peer {}: {e}", peer.name())))?;
                     outs.push(o);
                     bar.inc(1);

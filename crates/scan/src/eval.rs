@@ -86,8 +86,9 @@ pub fn random_poses(
 }
 
 /// One condition of the protocol: the sensor and the unknown obstacles
-/// (the base scanner, 5 boxes, a 180° field of view and a 10 m range
-/// cutoff each get their own row).
+/// (the base scanner, 5 boxes, a 180° field of view, a 10 m range cutoff
+/// and the same cutoff in scans that do not state it each get their own
+/// row).
 #[derive(Debug, Clone, PartialEq)]
 pub struct Condition {
     pub name: &'static str,
@@ -95,6 +96,9 @@ pub struct Condition {
     pub obstacles: usize,
     /// Side of each obstacle box, metres.
     pub obstacle_side: f64,
+    /// Whether the scans state the sensor's range (as `wai scan` writes
+    /// them) or leave it out (as most other tools do).
+    pub states_range: bool,
 }
 
 impl Condition {
@@ -108,12 +112,17 @@ impl Condition {
             },
             obstacles: 0,
             obstacle_side: 0.5,
+            states_range: true,
         }
     }
 
-    /// The base condition and its three variations, in table order.
+    /// The base condition and its four variations, in table order.
     pub fn standard() -> Vec<Condition> {
         let base = Condition::base();
+        let cut = crate::Sensor {
+            max_range: Some(10.0),
+            ..base.sensor.clone()
+        };
         vec![
             base.clone(),
             Condition {
@@ -131,10 +140,13 @@ impl Condition {
             },
             Condition {
                 name: "10 m range cutoff",
-                sensor: crate::Sensor {
-                    max_range: Some(10.0),
-                    ..base.sensor.clone()
-                },
+                sensor: cut.clone(),
+                ..base.clone()
+            },
+            Condition {
+                name: "10 m cutoff, unstated",
+                sensor: cut,
+                states_range: false,
                 ..base
             },
         ]
@@ -221,7 +233,10 @@ pub fn trials(
             let s = trial_seed(seed, i);
             let obstacles =
                 crate::random_obstacles(map, p, condition.obstacles, condition.obstacle_side, s);
-            let scan = crate::simulate(map, &obstacles, p, &condition.sensor, s)?;
+            let mut scan = crate::simulate(map, &obstacles, p, &condition.sensor, s)?;
+            if !condition.states_range {
+                scan.max_range = None;
+            }
             Ok(Trial {
                 truth: *p,
                 obstacles,

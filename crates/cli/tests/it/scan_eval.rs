@@ -244,7 +244,7 @@ fn an_evaluation_reports_every_key_row_plot_and_look_alike() {
         "--compass",
         "exact,noisy:10",
         "--conditions",
-        "base,range10",
+        "base,range10,range10-unstated",
         "--json",
         "--out",
         dir.to_str().unwrap(),
@@ -262,11 +262,21 @@ fn an_evaluation_reports_every_key_row_plot_and_look_alike() {
     ] {
         assert!(v.get(key).is_some(), "{key} missing: {v}");
     }
-    assert_eq!(v["queries"], 12 * 2 * 2);
+    assert_eq!(v["queries"], 12 * 3 * 2);
     let map = &v["maps"][0];
     assert_eq!(map["kind"], "repeated rooms");
     let rows = map["rows"].as_array().unwrap();
-    assert_eq!(rows.len(), 4);
+    assert_eq!(rows.len(), 6);
+    // The same scans with and without their range stated localize alike.
+    assert_eq!(rows[2]["condition"], "10 m range cutoff");
+    assert_eq!(rows[4]["condition"], "10 m cutoff, unstated");
+    let rate = |i: usize| rows[i]["answer_set_contains_truth_rate"].as_f64().unwrap();
+    assert!(
+        (rate(2) - rate(4)).abs() <= 1.0 / 12.0 + 1e-9,
+        "{} vs {}",
+        rate(2),
+        rate(4)
+    );
     for r in rows {
         assert!(
             r["answer_set_contains_truth_rate"].as_f64().unwrap() >= 0.75,
