@@ -123,7 +123,8 @@ enum Reading {
 
 /// Reads a scan file's bytes (either format; see the module docs).
 pub fn read(bytes: &[u8]) -> Result<ScanFile, String> {
-    let text = std::str::from_utf8(strip_bom(bytes)).map_err(|e| format!("not UTF-8: {e}"))?;
+    let text = std::str::from_utf8(wai_map::json::strip_bom(bytes))
+        .map_err(|e| format!("not UTF-8: {e}"))?;
     let text = quote_non_finite(text);
     let v: Value = serde_json::from_str(&text).map_err(|e| format!("not JSON: {e}"))?;
     let msg = match v.get("msg") {
@@ -141,10 +142,6 @@ pub fn read(bytes: &[u8]) -> Result<ScanFile, String> {
                 .into(),
         )
     }
-}
-
-fn strip_bom(bytes: &[u8]) -> &[u8] {
-    bytes.strip_prefix(b"\xEF\xBB\xBF").unwrap_or(bytes)
 }
 
 /// `text` with the bare tokens `NaN`, `Infinity` and `-Infinity` outside
@@ -256,7 +253,7 @@ fn keep(
         scan: Scan {
             angles: kept_angles,
             ranges: kept,
-            max_range: max.filter(|m| *m > 0.0),
+            max_range: max,
         },
         format,
         min_range: min,
@@ -292,15 +289,9 @@ fn read_wai(v: &Value) -> Result<ScanFile, String> {
         ));
     }
     let sensor = v.get("sensor").cloned().unwrap_or(Value::Null);
-    let max = optional_positive(&sensor, "max_range", "sensor.max_range")?;
+    let max = optional_positive(&sensor, "max_range", "sensor.max_range")?.filter(|m| *m > 0.0);
     let min = optional_positive(&sensor, "min_range", "sensor.min_range")?;
-    let mut file = keep(
-        angles,
-        ranges,
-        min,
-        max.filter(|m| *m > 0.0),
-        ScanFormat::Wai,
-    )?;
+    let mut file = keep(angles, ranges, min, max, ScanFormat::Wai)?;
     let pose = v.get("pose");
     file.heading = match pose.and_then(|p| p.get("heading_degrees")) {
         None | Some(Value::Null) => None,

@@ -218,8 +218,9 @@ pub struct ScanAnswer {
 impl ScanAnswer {
     /// What the reader must know about this answer: the range's warnings
     /// ([`SensingRange::warnings`]) and, when the range was only bounded
-    /// and the answer set holds poses a longer range would tell apart,
-    /// which range would rule out how many of them.
+    /// and the answer set holds poses a longer range would tell apart, how
+    /// far each answer's beams without a return are clear
+    /// ([`Hypothesis::clear_to`]).
     pub fn warnings(&self) -> Vec<String> {
         let mut out = self.range.warnings();
         let bounded = matches!(

@@ -53,20 +53,7 @@ fn a_scan_is_localized_back_to_its_pose_and_drawn() {
     let dir = tmp("loc");
     let scan = dir.join("scan.json");
     let svg = dir.join("answer.svg");
-    let out = wai(
-        &[
-            "scan",
-            "office:2:3",
-            "--at",
-            "3.5,-2.5,30",
-            "--noise",
-            "0.02",
-            "--out",
-            scan.to_str().unwrap(),
-        ],
-        b"",
-    );
-    assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
+    office_scan(&scan, &[]);
     for compass in ["exact", "none", "noisy:5"] {
         let out = wai(
             &[
@@ -433,27 +420,28 @@ fn sites_fit_the_memory_budget() {
     std::fs::remove_dir_all(&dir).ok();
 }
 
-/// A scan of office:2:3 at (3.5, −2.5) heading 30° with a 4 m range, as
-/// `wai scan` writes it.
-fn short_range_scan(dir: &std::path::Path) -> serde_json::Value {
-    let path = dir.join("short.json");
-    let out = wai(
-        &[
-            "scan",
-            "office:2:3",
-            "--at",
-            "3.5,-2.5,30",
-            "--noise",
-            "0.02",
-            "--max-range",
-            "4",
-            "--out",
-            path.to_str().unwrap(),
-        ],
-        b"",
-    );
+/// A scan of office:2:3 at (3.5, −2.5) heading 30°, σ = 2 cm, with the
+/// further `wai scan` options `extra`, written by `wai scan` to `path`.
+fn office_scan(path: &std::path::Path, extra: &[&str]) -> serde_json::Value {
+    let p = path.to_str().unwrap();
+    let mut args = vec![
+        "scan",
+        "office:2:3",
+        "--at",
+        "3.5,-2.5,30",
+        "--noise",
+        "0.02",
+    ];
+    args.extend_from_slice(extra);
+    args.extend_from_slice(&["--out", p]);
+    let out = wai(&args, b"");
     assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
-    serde_json::from_slice(&std::fs::read(&path).unwrap()).unwrap()
+    serde_json::from_slice(&std::fs::read(path).unwrap()).unwrap()
+}
+
+/// [`office_scan`] with a 4 m range: some beams have no return.
+fn short_range_scan(dir: &std::path::Path) -> serde_json::Value {
+    office_scan(&dir.join("short.json"), &["--max-range", "4"])
 }
 
 #[test]
