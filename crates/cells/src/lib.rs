@@ -6,6 +6,10 @@
 //! (Def 3.10). The boundary assignment of sec. 3.6 is computed beside it,
 //! when asked for.
 //!
+//! Maps without holes only, as the thesis's chapters 3–5 assume: the entry
+//! points panic on a map with holes ([`wai_map::Map::expect_no_holes`]); the
+//! command line refuses such a map with an error before it gets here.
+//!
 //! Its principal type is [`Decomposition`]: all of these stages for one
 //! map, with the cells in face order, an exact interior point of each, the
 //! index of its skeleton, the classes with their complexity |EC|, and the

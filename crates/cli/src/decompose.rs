@@ -28,7 +28,7 @@ pub struct Args {
 
 pub fn run(args: &Args) -> Result<(), Failure> {
     let (path, opts) = (&args.map, args);
-    let loaded = load(path, args.format.format)?;
+    let loaded = load(path, args.format)?;
     let map = &loaded.map;
     // The time covers the whole decomposition, rays included.
     let start = std::time::Instant::now();

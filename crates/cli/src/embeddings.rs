@@ -251,7 +251,7 @@ fn svg(map: &Map, r: &ClassReport, out: &Path) -> Result<(), Failure> {
 
 pub fn run(args: &Args) -> Result<(), Failure> {
     let opts = args;
-    let loaded = load(&args.map, args.format.format)?;
+    let loaded = load(&args.map, args.format)?;
     let map = &loaded.map;
     let rays = wai_cells::visibility_rays(map);
     crate::budget::check_decomposition(map, &rays, &args.memory)?;

@@ -1,5 +1,5 @@
-//! `wai info`: validate a map and print its numbers (n, r, area,
-//! orthogonality, scale, bounding box).
+//! `wai info`: validate a map and print its numbers (n, r, holes, area,
+//! orthogonality, scale, bounding box). Maps with holes are read.
 
 use std::path::PathBuf;
 
@@ -7,7 +7,7 @@ use rug::{Integer, Rational};
 use wai_map::{format_exact, Loaded, Map};
 
 use crate::failure::Failure;
-use crate::input::load;
+use crate::input::load_with_holes;
 use crate::output::unit;
 
 #[derive(clap::Args, Debug)]
@@ -22,7 +22,7 @@ pub struct Args {
 }
 
 pub fn run(args: &Args) -> Result<(), Failure> {
-    let loaded = load(&args.map, args.format.format)?;
+    let loaded = load_with_holes(&args.map, args.format)?;
     if args.json {
         out!("{}", json(&loaded));
     } else {
@@ -54,6 +54,24 @@ pub fn text(map: &Map) -> String {
         unit(map, lo.y),
         unit(map, hi.x),
         unit(map, hi.y),
+    ) + &holes_text(map)
+}
+
+/// The holes' line of [`text`]: nothing for a map without holes.
+fn holes_text(map: &Map) -> String {
+    if !map.has_holes() {
+        return String::new();
+    }
+    let outer_reflex = map
+        .reflex_vertices()
+        .iter()
+        .filter(|&&i| map.ring_of(i) == 0)
+        .count();
+    format!(
+        "holes:        {} ({} of the n vertices on the outer ring, {} of the r reflex vertices; a hole's reflex vertices are its convex corners)\n",
+        map.hole_count(),
+        map.outer().len(),
+        outer_reflex
     )
 }
 
@@ -66,6 +84,8 @@ fn json(loaded: &Loaded) -> String {
         "n": map.n(),
         "r": map.r(),
         "reflex_vertices": map.reflex_vertices(),
+        "holes": map.hole_count(),
+        "ring_sizes": (0..=map.hole_count()).map(|k| map.ring(k).len()).collect::<Vec<_>>(),
         "area": format_exact(&area(map)),
         "orthogonal": map.is_orthogonal(),
         "scale": map.scale().to_string(),
@@ -73,6 +93,13 @@ fn json(loaded: &Loaded) -> String {
         "normalisation": {
             "reversed": loaded.normalisation.reversed,
             "removed_collinear": loaded.normalisation.removed_collinear,
+            "reversed_holes": loaded.normalisation.reversed_holes,
+            "removed_collinear_holes": loaded.normalisation.removed_collinear_holes,
+            "rounded": loaded.normalisation.rounded.as_ref().map(|r| serde_json::json!({
+                "grid_bits": r.bits,
+                "moved": r.moved,
+                "largest": format_exact(&r.largest),
+            })),
         },
     });
     format!(

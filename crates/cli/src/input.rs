@@ -3,7 +3,9 @@
 use crate::Failure;
 use std::io::Read;
 use std::path::Path;
-use wai_map::{geojson::from_geojson, json::from_json, Loaded, MapError};
+use wai_map::geojson::from_geojson_with;
+use wai_map::json::{from_json_with, ReadOptions};
+use wai_map::{Loaded, MapError};
 
 /// The input format of a map file.
 #[derive(clap::ValueEnum, Clone, Copy, Debug, Default, PartialEq, Eq)]
@@ -17,11 +19,24 @@ pub enum Format {
     Geojson,
 }
 
-#[derive(clap::Args, Debug)]
+/// How a map file is read.
+#[derive(clap::Args, Clone, Copy, Debug, Default)]
 pub struct FormatArg {
     /// Input format.
     #[arg(long, value_enum, default_value_t = Format::Auto)]
     pub format: Format,
+    /// Round every coordinate to the nearest multiple of 2^-BITS before
+    /// reading it exactly (for sources whose exact values need more than 100
+    /// bits over their common denominator, such as a stray subnormal double;
+    /// how many coordinates moved, and how far, is printed).
+    #[arg(long, value_name = "BITS", value_parser = clap::value_parser!(u32).range(0..=i64::from(wai_map::json::MAX_GRID_BITS)))]
+    pub grid: Option<u32>,
+}
+
+impl From<Format> for FormatArg {
+    fn from(format: Format) -> FormatArg {
+        FormatArg { format, grid: None }
+    }
 }
 
 /// Files larger than this are refused before reading: no map of interest
@@ -66,17 +81,38 @@ fn looks_like_geojson(bytes: &[u8]) -> bool {
         .is_some()
 }
 
-/// Read and validate a map, printing normalisation notes on stderr; or
-/// build the generated map `path` names (`rooms:K`, `office:K[:SEED]`,
-/// `family:ID:P1,…`, when no file has that name).
-pub fn load(path: &Path, format: Format) -> Result<Loaded, Failure> {
+/// Read and validate a map without holes, printing normalisation notes on
+/// stderr; or build the generated map `path` names (`rooms:K`,
+/// `office:K[:SEED]`, `family:ID:P1,…`, when no file has that name). A map
+/// with holes is refused: the stages of the thesis's chapters 3–5 assume
+/// none.
+pub fn load(path: &Path, read: impl Into<FormatArg>) -> Result<Loaded, Failure> {
+    let loaded = load_with_holes(path, read)?;
+    refuse_holes(path, &loaded)?;
+    Ok(loaded)
+}
+
+/// [`load`] for the commands that read maps with holes.
+pub fn load_with_holes(path: &Path, read: impl Into<FormatArg>) -> Result<Loaded, Failure> {
     if let Some(map) = generated(path)? {
         return Ok(Loaded {
             map,
             normalisation: Default::default(),
         });
     }
-    load_bytes(path, &read_bytes(path)?, format)
+    read_map(path, &read_bytes(path)?, &read.into())
+}
+
+fn refuse_holes(path: &Path, loaded: &Loaded) -> Result<(), Failure> {
+    loaded
+        .map
+        .require_no_holes("this command")
+        .map_err(|e| {
+            Failure::invalid(format!(
+                "{}: {e} (the thesis's chapters 3–5 assume a map without holes; `wai info` reads maps with holes)",
+                path.display()
+            ))
+        })
 }
 
 /// The generated map `path` names, if it names one rather than a file.
@@ -97,16 +133,31 @@ pub(crate) fn generated(path: &Path) -> Result<Option<wai_map::Map>, Failure> {
 pub(crate) const MAP_HELP: &str = "Map file (JSON map format or GeoJSON; `-` reads standard input), or a generated map: `rooms:K`, `office:K[:SEED]`, `family:ID:P1,P2,…` (in metres)";
 
 /// [`load`] for bytes already read from `path` (named in messages).
-pub fn load_bytes(path: &Path, bytes: &[u8], format: Format) -> Result<Loaded, Failure> {
+pub fn load_bytes(
+    path: &Path,
+    bytes: &[u8],
+    read: impl Into<FormatArg>,
+) -> Result<Loaded, Failure> {
+    let loaded = read_map(path, bytes, &read.into())?;
+    refuse_holes(path, &loaded)?;
+    Ok(loaded)
+}
+
+/// Parse, validate and normalise a map file's bytes, holes and all.
+fn read_map(path: &Path, bytes: &[u8], read: &FormatArg) -> Result<Loaded, Failure> {
+    let options = ReadOptions {
+        grid_bits: read.grid,
+    };
+    let format = read.format;
     let geo = match format {
         Format::Auto => looks_like_geojson(bytes),
         Format::Json => false,
         Format::Geojson => true,
     };
     let parsed = if geo {
-        from_geojson(bytes)
+        from_geojson_with(bytes, &options)
     } else {
-        from_json(bytes)
+        from_json_with(bytes, &options)
     };
     let loaded = parsed.map_err(|errors| {
         let shown = path.display();
@@ -147,6 +198,34 @@ pub fn note_normalisation(path: &Path, loaded: &Loaded) {
             "note: {shown}: removed {} vertex(es) with a straight (180°) angle, at input positions {} (Alg 3.14 step 1)",
             list.len(),
             list.join(", ")
+        );
+    }
+    if !norm.reversed_holes.is_empty() {
+        let list: Vec<String> = norm.reversed_holes.iter().map(usize::to_string).collect();
+        eprintln!(
+            "note: {shown}: hole(s) {} were counter-clockwise; reversed to clockwise (first vertex kept)",
+            list.join(", ")
+        );
+    }
+    if !norm.removed_collinear_holes.is_empty() {
+        let list: Vec<String> = norm
+            .removed_collinear_holes
+            .iter()
+            .map(|(h, i)| format!("hole {h} position {i}"))
+            .collect();
+        eprintln!(
+            "note: {shown}: removed {} hole vertex(es) with a straight (180°) angle, at {} (Alg 3.14 step 1)",
+            list.len(),
+            list.join(", ")
+        );
+    }
+    if let Some(r) = &norm.rounded {
+        eprintln!(
+            "note: {shown}: rounded to multiples of 2^-{}: {} coordinate(s) moved, the largest by {} (about {:.3e})",
+            r.bits,
+            r.moved,
+            wai_map::format_exact(&r.largest),
+            r.largest.to_f64()
         );
     }
 }

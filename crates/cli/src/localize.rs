@@ -4,7 +4,7 @@
 use crate::budget::MemoryArgs;
 use crate::failure::counted_bar;
 use crate::failure::Failure;
-use crate::input::{load_bytes, read_bytes, Format};
+use crate::input::{load_bytes, read_bytes};
 use crate::vis::{parse_viewpoint, show};
 use rug::{Integer, Rational};
 use serde_json::Value;
@@ -25,7 +25,11 @@ fn is_preprocessed(bytes: &[u8]) -> bool {
 
 /// A localizer from a map file (preprocessed now) or a preprocessed file,
 /// read once (standard input too).
-fn localizer(path: &Path, format: Format, limits: &MemoryArgs) -> Result<Localizer, Failure> {
+fn localizer(
+    path: &Path,
+    format: crate::input::FormatArg,
+    limits: &MemoryArgs,
+) -> Result<Localizer, Failure> {
     if let Some(map) = crate::input::generated(path)? {
         return preprocessed(path, &map, limits);
     }
@@ -200,7 +204,7 @@ pub struct Args {
 
 pub fn run(args: &Args) -> Result<(), Failure> {
     let opts = args;
-    let loc = localizer(&args.map, args.format.format, &args.memory)?;
+    let loc = localizer(&args.map, args.format, &args.memory)?;
     let map = loc.map();
     let view = match (opts.at.as_deref(), opts.polygon.as_deref()) {
         (Some(at), None) => {

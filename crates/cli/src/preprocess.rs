@@ -22,7 +22,7 @@ pub struct Args {
 
 pub fn run(args: &Args) -> Result<(), Failure> {
     let (path, out) = (&args.map, &args.out);
-    let loaded = load(path, args.format.format)?;
+    let loaded = load(path, args.format)?;
     let loc = preprocessed(path, &loaded.map, &args.memory)?;
     let text = wai_localize::file::to_json(&loc);
     std::fs::write(out, &text).map_err(|e| Failure::io(format!("{}: {e}", out.display())))?;

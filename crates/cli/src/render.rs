@@ -33,7 +33,7 @@ pub struct Args {
 }
 
 pub fn run(args: &Args) -> Result<(), Failure> {
-    let loaded = load(&args.map, args.format.format)?;
+    let loaded = load(&args.map, args.format)?;
     let style = MapStyle {
         size: f64::from(args.size.clamp(50, 20_000)),
         vertex_labels: args.labels,

@@ -199,7 +199,7 @@ pub struct Args {
 
 pub fn run(args: &Args) -> Result<(), Failure> {
     let (path, at, as_json, svg) = (&args.map, &args.at, args.json, args.svg.as_deref());
-    let loaded = load(path, args.format.format)?;
+    let loaded = load(path, args.format)?;
     let map = &loaded.map;
     let p = parse_viewpoint(at, map)?;
     let index = VisibilityIndex::new(map);

@@ -8,6 +8,10 @@
 //! (condition 3). [`embeddings`] finds every such placement of a
 //! [`wai_visibility::SkeletonKey`] in a map, exactly.
 //!
+//! Maps without holes only, as the thesis's chapters 3–5 assume: the entry
+//! points panic on a map with holes ([`wai_map::Map::expect_no_holes`]); the
+//! command line refuses such a map with an error before it gets here.
+//!
 //! Seeing follows sec. 2.2 as the rest of the workspace reads it: two
 //! points see each other when the closed segment between them meets the
 //! boundary only at its ends and runs through the map; a point sees itself.

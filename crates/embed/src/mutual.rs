@@ -188,6 +188,7 @@ fn segment_meets_hull(h: &[QPoint], a: &QPoint, b: &QPoint) -> bool {
 
 impl<'m> Sightlines<'m> {
     pub fn new(map: &'m Map) -> Sightlines<'m> {
+        map.expect_no_holes("the mutual-visibility test");
         let ring = map.vertices();
         let reflex = {
             let mut f = vec![false; ring.len()];

@@ -80,11 +80,15 @@ pub fn maps_in(
 
 /// The map of a file in the JSON map format; errors name the file. A
 /// sealed counterexample file must still match its digest
-/// ([`crate::counterexample::verify`]).
+/// ([`crate::counterexample::verify`]); a map with holes is refused (the
+/// claims of chapters 3–5 assume none).
 pub fn read_map(f: &std::path::Path) -> Result<wai_map::Map, String> {
     let bytes = std::fs::read(f).map_err(|e| format!("{}: {e}", f.display()))?;
     crate::counterexample::verify(&bytes).map_err(|e| format!("{}: {e}", f.display()))?;
-    wai_map::json::from_json(&bytes)
+    let map = wai_map::json::from_json(&bytes)
         .map(|loaded| loaded.map)
-        .map_err(|e| format!("{}: {e}", f.display()))
+        .map_err(|e| format!("{}: {e}", f.display()))?;
+    map.require_no_holes("the claim checkers")
+        .map_err(|e| format!("{}: {e}", f.display()))?;
+    Ok(map)
 }

@@ -209,6 +209,7 @@ pub struct OneShot {
 /// placement reaches test 4, and once per direction: O(n + r·m + s·n log n)
 /// for s spurious edges, O(mn log n) at worst.
 pub fn one_shot(map: &Map, v: &RobotView) -> OneShot {
+    map.expect_no_holes("the brute-force localization oracle");
     let mut out = OneShot {
         positions: Vec::new(),
         sweeps: 0,

@@ -14,8 +14,9 @@ pub fn sha256(bytes: &[u8]) -> String {
 
 impl Map {
     /// The digest of the map's geometry: its vertices in order as exact
-    /// numbers in its units, one per line (so a map read back at another
-    /// scale has the same digest; names and sources do not count).
+    /// numbers in its units, one per line, each hole's after a line `hole`
+    /// (so a map read back at another scale has the same digest; names and
+    /// sources do not count; a map without holes digests as it always has).
     pub fn digest(&self) -> String {
         let exact = |c: i128| {
             crate::format_exact(&rug::Rational::from((
@@ -24,7 +25,10 @@ impl Map {
             )))
         };
         let mut text = String::new();
-        for p in self.vertices() {
+        for (i, p) in self.vertices().iter().enumerate() {
+            if i > 0 && self.prev(i) != i - 1 {
+                text.push_str("hole\n");
+            }
             text.push_str(&format!("{} {}\n", exact(p.x), exact(p.y)));
         }
         sha256(text.as_bytes())

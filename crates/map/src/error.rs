@@ -51,11 +51,28 @@ pub enum IntersectionKind {
     Overlap,
 }
 
+/// A ring of a map: the outer boundary or a hole (0-based, input order).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash)]
+pub enum Ring {
+    Outer,
+    Hole(usize),
+}
+
+impl fmt::Display for Ring {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            Ring::Outer => write!(f, "the outer ring"),
+            Ring::Hole(k) => write!(f, "hole {k}"),
+        }
+    }
+}
+
 /// Everything that can be wrong with a map, with where it is wrong.
 ///
 /// Vertex and edge numbers are 0-based positions in the input ring; edge
 /// `i` runs from vertex `i` to vertex `i + 1` (the last closes the ring).
-/// Points are in the input's units.
+/// Holes are numbered from 0 in input order; a problem of one hole's ring
+/// comes wrapped in [`MapError::InHole`]. Points are in the input's units.
 #[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
 pub enum MapError {
     #[error("empty input: expected a map")]
@@ -80,8 +97,27 @@ pub enum MapError {
         "{path}: coordinate too large: it needs {bits} bits as an integer over the common denominator; at most {max} are supported"
     )]
     CoordinateTooLarge { path: String, bits: u64, max: u32 },
-    #[error("holes are not supported yet: the map has {count} hole(s)")]
-    HolesNotSupported { count: usize },
+    #[error("{stage} does not support maps with holes yet: the map has {count} hole(s)")]
+    HolesNotSupported { count: usize, stage: String },
+    #[error("hole {hole}: {error}")]
+    InHole { hole: usize, error: Box<MapError> },
+    #[error("{ring_a} and {ring_b} meet: {ring_a}'s edge {edge_a} and {ring_b}'s edge {edge_b} {} at {at}", match .kind {
+        IntersectionKind::Crossing => "cross",
+        IntersectionKind::Touching => "touch",
+        IntersectionKind::Overlap => "overlap, starting",
+    })]
+    RingsMeet {
+        ring_a: Ring,
+        edge_a: usize,
+        ring_b: Ring,
+        edge_b: usize,
+        kind: IntersectionKind,
+        at: Position,
+    },
+    #[error("hole {hole} lies outside the outer ring (its vertex 0 is at {at})")]
+    HoleOutside { hole: usize, at: Position },
+    #[error("hole {inner} lies inside hole {outer}: a hole in a hole is not part of the map's free space")]
+    HoleInHole { inner: usize, outer: usize },
     #[error("a map needs at least 3 distinct vertices; found {found}")]
     TooFewVertices { found: usize },
     #[error("vertex {second} repeats vertex {first} at {at}{}", if *.closing { " (rings are open: do not repeat the first vertex at the end)" } else { "" })]

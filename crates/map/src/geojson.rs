@@ -1,42 +1,50 @@
-//! GeoJSON import (RFC 7946): one Polygon without holes.
+//! GeoJSON import (RFC 7946): one Polygon, its interior rings the map's
+//! holes.
 //!
 //! Accepted: a `Polygon` geometry, a `MultiPolygon` of one polygon, a
 //! `Feature` with such a geometry, or a `FeatureCollection` with exactly one
 //! feature. Numbers are read exactly from their text (no exponents). The
 //! closing position of the ring is dropped; a third coordinate (altitude) is
-//! ignored. The feature's `properties.name`, if a string, names the map.
+//! ignored. Interior rings are holes, in their order. The feature's `properties.name`, if a string, names the map.
 
 use crate::error::{MapError, MapErrors};
-use crate::json::{build, parse_value, read_ring, structure};
+use crate::json::{build, collect_rings, parse_value, read_ring, structure, ReadOptions};
 use crate::polygon::Loaded;
 use serde_json::{Map as Object, Value};
 
 /// Read a GeoJSON Polygon as a map.
 pub fn from_geojson(bytes: &[u8]) -> Result<Loaded, MapErrors> {
+    from_geojson_with(bytes, &ReadOptions::default())
+}
+
+/// [`from_geojson`] with [`ReadOptions`].
+pub fn from_geojson_with(bytes: &[u8], options: &ReadOptions) -> Result<Loaded, MapErrors> {
     let root = parse_value(bytes)?;
     let (polygon, path, name) = find_polygon(&root, "$", None)?;
     let Value::Array(rings) = polygon else {
         return Err(structure(&path, "expected the Polygon's array of rings").into());
     };
-    if rings.len() > 1 {
-        return Err(MapError::HolesNotSupported {
-            count: rings.len() - 1,
-        }
-        .into());
-    }
-    let Some(outer) = rings.first() else {
+    if rings.is_empty() {
         return Err(structure(&path, "the Polygon has no ring").into());
-    };
-    let ring_path = format!("{path}[0]");
-    let mut coords = read_ring(outer, &ring_path, true)?;
-    // RFC 7946 rings repeat their first position at the end.
-    if coords.len() >= 4 {
-        let k = coords.len();
-        if coords[0].value == coords[k - 2].value && coords[1].value == coords[k - 1].value {
-            coords.truncate(k - 2);
-        }
     }
-    build(coords, name, Some("GeoJSON".to_string()))
+    let read = rings
+        .iter()
+        .enumerate()
+        .map(|(k, ring)| {
+            let mut coords = read_ring(ring, &format!("{path}[{k}]"), true)?;
+            // RFC 7946 rings repeat their first position at the end.
+            if coords.len() >= 4 {
+                let m = coords.len();
+                if coords[0].value == coords[m - 2].value && coords[1].value == coords[m - 1].value
+                {
+                    coords.truncate(m - 2);
+                }
+            }
+            Ok(coords)
+        })
+        .collect();
+    let rings = collect_rings(read)?;
+    build(rings, name, Some("GeoJSON".to_string()), options)
 }
 
 fn kind<'a>(obj: &'a Object<String, Value>, path: &str) -> Result<&'a str, MapError> {

@@ -7,42 +7,66 @@
 //! `outer` is an open ring of `[x, y]` pairs, each coordinate an exact
 //! number: a string holding an integer, a decimal or a fraction `p/q`, or a
 //! JSON number written without exponent (read from its text, never through
-//! a float). `holes`, if present, must be empty (holes are not supported
-//! yet); `name` and `source` are kept; `units`, if present, says what the
+//! a float). `holes`, if present, is an array of such rings, one per hole
+//! (either orientation; they are made clockwise); `name` and `source` are
+//! kept; `units`, if present, says what the
 //! coordinates measure: `"m"`, `"lonlat"` or `"scale:K"` (K metres per
 //! unit, [`crate::Units`]); every other field is ignored.
 
 use crate::error::{MapError, MapErrors};
-use crate::number::{format_exact, parse_exact, scale_to_integers, RawCoord};
+use crate::number::{format_exact, parse_exact, round_to_grid, scale_to_integers, RawCoord};
 use crate::polygon::{Loaded, Map};
 use rug::{Integer, Rational};
 use serde_json::Value;
 use std::fmt::Write;
 
+/// How a reader treats coordinates before it scales them to integers.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct ReadOptions {
+    /// Round every coordinate to the nearest multiple of `2^-bits` first
+    /// (reported in [`crate::Normalisation::rounded`]). For sources whose
+    /// exact values need more than [`wai_exact::MAX_COORD_BITS`] bits over
+    /// their common denominator — a stray subnormal double, rationals with
+    /// 70-bit denominators — at the price of a slightly different map. The
+    /// rounded map is validated like any other.
+    pub grid_bits: Option<u32>,
+}
+
+/// The finest grid a reader may round to: on a finer one not even a
+/// coordinate of magnitude 1 fits [`wai_exact::MAX_COORD_BITS`].
+pub const MAX_GRID_BITS: u32 = wai_exact::MAX_COORD_BITS - 1;
+
 /// Read a map file.
 pub fn from_json(bytes: &[u8]) -> Result<Loaded, MapErrors> {
+    from_json_with(bytes, &ReadOptions::default())
+}
+
+/// [`from_json`] with [`ReadOptions`].
+pub fn from_json_with(bytes: &[u8], options: &ReadOptions) -> Result<Loaded, MapErrors> {
     let root = parse_value(bytes)?;
     let Value::Object(obj) = &root else {
         return Err(structure("$", "expected an object with an \"outer\" ring").into());
     };
-    if let Some(holes) = obj.get("holes") {
-        match holes {
-            Value::Array(h) if h.is_empty() => {}
-            Value::Array(h) => return Err(MapError::HolesNotSupported { count: h.len() }.into()),
-            Value::Null => {}
-            _ => return Err(structure("holes", "expected an array of rings").into()),
-        }
-    }
     let outer = obj
         .get("outer")
         .ok_or_else(|| structure("$", "missing field \"outer\": the map's boundary ring"))?;
-    let coords = read_ring(outer, "outer", false)?;
+    let mut rings = vec![read_ring(outer, "outer", false)];
+    match obj.get("holes") {
+        None | Some(Value::Null) => {}
+        Some(Value::Array(holes)) => {
+            for (k, hole) in holes.iter().enumerate() {
+                rings.push(read_ring(hole, &format!("holes[{k}]"), false));
+            }
+        }
+        Some(_) => return Err(structure("holes", "expected an array of rings").into()),
+    }
+    let rings = collect_rings(rings)?;
     let name = optional_string(obj.get("name"), "name")?;
     let source = optional_string(obj.get("source"), "source")?;
     let units = optional_string(obj.get("units"), "units")?
         .map(|u| crate::Units::parse(&u).map_err(|e| structure("units", &e)))
         .transpose()?;
-    let loaded = build(coords, name, source)?;
+    let loaded = build(rings, name, source, options)?;
     Ok(match units {
         Some(u) => Loaded {
             map: loaded.map.with_units(u),
@@ -69,12 +93,45 @@ pub fn to_json(map: &Map) -> String {
     }
     s.push_str("  \"outer\": [\n");
     let unit = |c: i128| format_exact(&Rational::from((Integer::from(c), map.scale().clone())));
-    for (i, p) in map.vertices().iter().enumerate() {
-        let comma = if i + 1 < map.n() { "," } else { "" };
-        let _ = writeln!(s, "    [\"{}\", \"{}\"]{comma}", unit(p.x), unit(p.y));
+    let write_ring = |s: &mut String, ring: &[wai_exact::Point], indent: &str| {
+        for (i, p) in ring.iter().enumerate() {
+            let comma = if i + 1 < ring.len() { "," } else { "" };
+            let _ = writeln!(s, "{indent}[\"{}\", \"{}\"]{comma}", unit(p.x), unit(p.y));
+        }
+    };
+    write_ring(&mut s, map.outer(), "    ");
+    if !map.has_holes() {
+        s.push_str("  ],\n  \"holes\": []\n}\n");
+        return s;
     }
-    s.push_str("  ],\n  \"holes\": []\n}\n");
+    s.push_str("  ],\n  \"holes\": [\n");
+    let h = map.hole_count();
+    for (k, hole) in map.holes().enumerate() {
+        s.push_str("    [\n");
+        write_ring(&mut s, hole, "      ");
+        s.push_str(if k + 1 < h { "    ],\n" } else { "    ]\n" });
+    }
+    s.push_str("  ]\n}\n");
     s
+}
+
+/// Every ring read, or every error of every ring.
+pub(crate) fn collect_rings(
+    read: Vec<Result<Vec<RawCoord>, MapErrors>>,
+) -> Result<Vec<Vec<RawCoord>>, MapErrors> {
+    let mut rings = Vec::with_capacity(read.len());
+    let mut errors = Vec::new();
+    for r in read {
+        match r {
+            Ok(ring) => rings.push(ring),
+            Err(e) => errors.extend(e.0),
+        }
+    }
+    if errors.is_empty() {
+        Ok(rings)
+    } else {
+        Err(MapErrors(errors))
+    }
 }
 
 pub(crate) fn structure(path: &str, message: &str) -> MapError {
@@ -176,14 +233,38 @@ fn truncate(text: &str) -> String {
     }
 }
 
-/// Scale, validate and normalise a ring read from a file.
+/// Round (if asked), scale, validate and normalise the rings read from a
+/// file: the outer ring first, then the holes.
 pub(crate) fn build(
-    coords: Vec<RawCoord>,
+    rings: Vec<Vec<RawCoord>>,
     name: Option<String>,
     source: Option<String>,
+    options: &ReadOptions,
 ) -> Result<Loaded, MapErrors> {
+    let lengths: Vec<usize> = rings.iter().map(|r| r.len() / 2).collect();
+    let mut coords: Vec<RawCoord> = rings.into_iter().flatten().collect();
+    let rounded = match options.grid_bits {
+        Some(bits) if bits > MAX_GRID_BITS => {
+            return Err(structure(
+                "options",
+                &format!(
+                    "a grid of 2^-{bits} is finer than the finest supported, 2^-{MAX_GRID_BITS}"
+                ),
+            )
+            .into())
+        }
+        Some(bits) => Some(round_to_grid(&mut coords, bits)),
+        None => None,
+    };
     let (points, scale) = scale_to_integers(&coords).map_err(MapErrors)?;
-    let (mut map, normalisation) = Map::from_scaled_ring(points, scale)?;
+    let mut points = points.into_iter();
+    let mut rings: Vec<Vec<wai_exact::Point>> = lengths
+        .iter()
+        .map(|&m| points.by_ref().take(m).collect())
+        .collect();
+    let outer = rings.remove(0);
+    let (mut map, mut normalisation) = Map::from_scaled_rings(outer, rings, scale)?;
+    normalisation.rounded = rounded;
     if let Some(name) = name {
         map = map.with_name(name);
     }

@@ -102,6 +102,45 @@ pub fn format_exact(v: &Rational) -> String {
     format!("{}/{}", v.numer(), v.denom())
 }
 
+/// What rounding coordinates to a grid changed ([`crate::json::ReadOptions`]).
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Rounding {
+    /// The grid: multiples of `2^-bits`.
+    pub bits: u32,
+    /// How many coordinates were not on the grid and moved.
+    pub moved: usize,
+    /// The largest distance a coordinate moved (0 if none did), in input
+    /// units; below `2^-(bits+1)`, or equal to it at a tie.
+    pub largest: Rational,
+}
+
+/// Round every coordinate to the nearest multiple of `2^-bits` (a tie away
+/// from zero). The same monotone map on every coordinate: equal coordinates
+/// stay equal (an orthogonal map stays orthogonal) and the order of
+/// coordinates more than `2^-bits` apart is kept.
+pub(crate) fn round_to_grid(coords: &mut [RawCoord], bits: u32) -> Rounding {
+    let unit = Rational::from((Integer::from(1), Integer::from(1) << bits));
+    let mut moved = 0;
+    let mut largest = Rational::new();
+    for c in coords.iter_mut() {
+        let steps = Rational::from(&c.value / &unit).round();
+        let rounded = Rational::from(&unit * &steps);
+        if rounded != c.value {
+            moved += 1;
+            let d = Rational::from(&rounded - &c.value).abs();
+            if d > largest {
+                largest = d;
+            }
+            c.value = rounded;
+        }
+    }
+    Rounding {
+        bits,
+        moved,
+        largest,
+    }
+}
+
 /// A coordinate read from input, with the path that names it in errors.
 pub(crate) struct RawCoord {
     pub path: String,

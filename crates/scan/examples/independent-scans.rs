@@ -42,6 +42,8 @@ fn map(spec: &str) -> Result<Map, String> {
     let map = wai_map::json::from_json(&bytes)
         .map_err(|e| format!("{spec}: {e:?}"))?
         .map;
+    map.require_no_holes("the scan localizer")
+        .map_err(|e| format!("{spec}: {e}"))?;
     if map.looks_lonlat() {
         return to_metres(&map, Units::LonLatDegrees).map_err(|e| format!("{spec}: {e:?}"));
     }

@@ -92,8 +92,8 @@ fn degrees(map: &Map) -> Vec<(f64, f64)> {
         .collect()
 }
 
-/// `map` in metres, vertices rounded to the millimetre; a longitude,
-/// latitude map in its [`LonLatFrame`].
+/// `map` in metres, vertices (holes' too) rounded to the millimetre; a
+/// longitude, latitude map in its [`LonLatFrame`].
 pub fn to_metres(map: &Map, units: Units) -> Result<Map, MapErrors> {
     let pts = degrees(map);
     let metres: Vec<(f64, f64)> = match units {
@@ -106,11 +106,15 @@ pub fn to_metres(map: &Map, units: Units) -> Result<Map, MapErrors> {
                 .collect()
         }
     };
-    let ring: Vec<Point> = metres
+    let mut points = metres
         .iter()
-        .map(|&(x, y)| Point::new((x * 1000.0).round() as i128, (y * 1000.0).round() as i128))
+        .map(|&(x, y)| Point::new((x * 1000.0).round() as i128, (y * 1000.0).round() as i128));
+    // Every ring, holes included, in the map's order.
+    let mut rings: Vec<Vec<Point>> = (0..=map.hole_count())
+        .map(|k| points.by_ref().take(map.ring(k).len()).collect())
         .collect();
-    let (m, _) = Map::from_scaled_ring(ring, Integer::from(1000))?;
+    let outer = rings.remove(0);
+    let (m, _) = Map::from_scaled_rings(outer, rings, Integer::from(1000))?;
     let m = m.with_units(wai_map::Units::Metres);
     let m = match map.name() {
         Some(name) => m.with_name(name),

@@ -9,6 +9,10 @@
 //! kernel (Def 3.12), and the reconstruction of V_p from V*_p and the
 //! viewpoint (the constructive direction of Thm 3.2).
 //!
+//! Maps without holes only, as the thesis's chapters 3–5 assume: the entry
+//! points panic on a map with holes ([`wai_map::Map::expect_no_holes`]); the
+//! command line refuses such a map with an error before it gets here.
+//!
 //! [`reference::visibility_polygon`] is the simple angular algorithm that
 //! defines what V_p is; every other algorithm is tested against it.
 //!

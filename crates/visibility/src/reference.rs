@@ -104,6 +104,7 @@ impl Frame {
 
 /// V_p of an interior point p of `map`, by the reference algorithm.
 pub fn visibility_polygon(map: &Map, p: &RatPoint) -> Result<VisibilityPolygon, VisibilityError> {
+    map.expect_no_holes("the reference visibility polygon");
     match locate_rat(map.vertices(), p) {
         Containment::Inside => {}
         Containment::OnBoundary => return Err(VisibilityError::OnBoundary(p.clone())),

@@ -133,6 +133,7 @@ pub enum SkeletonError {
 impl Skeleton {
     /// V*_p from V_p.
     pub fn of(map: &Map, vp: &VisibilityPolygon) -> Result<Skeleton, SkeletonError> {
+        map.expect_no_holes("the visibility skeleton");
         let verts = vp.vertices();
         let n = verts.len();
         // Non-spurious vertices and their map vertex.

@@ -37,6 +37,7 @@ impl Triangulation {
     /// reflex or straight vertex of the remaining polygon lies in its closed
     /// triangle, so no diagonal touches a vertex.
     pub fn new(map: &Map) -> Triangulation {
+        map.expect_no_holes("the triangulation of the map");
         let v = map.vertices();
         let n = v.len();
         let mut next: Vec<usize> = (0..n).map(|i| (i + 1) % n).collect();

@@ -2,6 +2,7 @@
 //! message naming what and where, a non-zero exit and no panic.
 
 use std::io::Write;
+use std::path::Path;
 use std::process::{Command, Output, Stdio};
 
 /// `wai args` started with its standard output and error piped.
@@ -162,12 +163,82 @@ fn exponents_and_floats_are_refused() {
     );
 }
 
+const HOLED: &[u8] =
+    br#"{"outer": [["0","0"],["9","0"],["0","9"]], "holes": [[["1","1"],["2","1"],["1","2"]]]}"#;
+
 #[test]
-fn holes_are_a_clear_error() {
+fn info_reads_holes_and_the_other_commands_refuse_them_clearly() {
+    let out = wai(&["info", "-"], HOLED);
+    assert!(out.status.success(), "{}", text(&out.stderr));
+    let shown = text(&out.stdout);
+    assert!(shown.contains("vertices n:   6"), "{shown}");
+    assert!(shown.contains("reflex r:     3  [3, 4, 5]"), "{shown}");
+    assert!(
+        shown.contains("holes:        1 (3 of the n vertices on the outer ring"),
+        "{shown}"
+    );
+    // 81/2 less 1/2.
+    assert!(shown.contains("area:         40\n"), "{shown}");
+    assert!(text(&out.stderr).contains("hole(s) 0 were counter-clockwise"));
+    let out_file = std::env::temp_dir().join(format!("wai-holed-{}.json", std::process::id()));
+    for command in ["decompose", "vis", "preprocess", "embeddings", "render"] {
+        let mut args = vec![command, "-"];
+        match command {
+            "vis" => args.extend(["--at", "5,1"]),
+            "preprocess" | "render" => args.extend(["--out", out_file.to_str().unwrap()]),
+            _ => {}
+        }
+        let out = wai(&args, HOLED);
+        let err = text(&out.stderr);
+        assert_eq!(out.status.code(), Some(1), "{command}: {err}");
+        assert!(
+            err.contains(
+                "this command does not support maps with holes yet: the map has 1 hole(s)"
+            ),
+            "{command}: {err}"
+        );
+        assert!(!err.contains("panicked"), "{err}");
+    }
+    assert!(!out_file.exists(), "nothing written for a refused map");
+}
+
+#[test]
+fn bad_holes_are_located() {
     check_rejected(
-        br#"{"outer": [["0","0"],["9","0"],["0","9"]], "holes": [[["1","1"],["1","2"],["2","1"]]]}"#,
+        br#"{"outer": [["0","0"],["9","0"],["0","9"]], "holes": [[["8","8"],["8","9"],["9","8"]]]}"#,
         1,
-        &["holes are not supported yet"],
+        &["hole 0 lies outside the outer ring (its vertex 0 is at (8, 8))"],
+    );
+    check_rejected(
+        br#"{"outer": [["0","0"],["9","0"],["0","9"]], "holes": [[["1","0"],["2","1"],["1","2"]]]}"#,
+        1,
+        &["the outer ring and hole 0 meet", "touch at (1, 0)"],
+    );
+}
+
+#[test]
+fn a_grid_reads_what_exact_values_cannot_hold() {
+    let file = Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("../../data/datasets/agplib/simple-holes/g1_simple-simple_25-100v-10h_1.json");
+    let path = file.to_str().unwrap();
+    let exact = wai(&["info", path], b"");
+    assert_eq!(exact.status.code(), Some(1));
+    assert!(
+        text(&exact.stderr).contains("coordinate too large"),
+        "{}",
+        text(&exact.stderr)
+    );
+    let grid = wai(&["info", path, "--grid", "60"], b"");
+    assert!(grid.status.success(), "{}", text(&grid.stderr));
+    assert!(
+        text(&grid.stderr).contains("rounded to multiples of 2^-60: 1 coordinate(s) moved"),
+        "{}",
+        text(&grid.stderr)
+    );
+    assert!(
+        text(&grid.stdout).contains("holes:        10 ("),
+        "{}",
+        text(&grid.stdout)
     );
 }
 

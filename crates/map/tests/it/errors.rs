@@ -103,11 +103,17 @@ fn absurdly_large_coordinates() {
 }
 
 #[test]
-fn holes_are_not_supported_yet() {
-    let e = errors_of(
-        r#"{"outer": [["0","0"],["9","0"],["0","9"]], "holes": [[["1","1"],["1","2"],["2","1"]]]}"#,
+fn a_stage_without_holes_names_itself() {
+    let map = from_json(
+        br#"{"outer": [["0","0"],["9","0"],["0","9"]], "holes": [[["1","1"],["1","2"],["2","1"]]]}"#,
+    )
+    .unwrap()
+    .map;
+    let e = map.require_no_holes("the visibility skeleton").unwrap_err();
+    assert_eq!(
+        e.to_string(),
+        "the visibility skeleton does not support maps with holes yet: the map has 1 hole(s)"
     );
-    assert_eq!(e, vec![MapError::HolesNotSupported { count: 1 }]);
 }
 
 #[test]

@@ -32,12 +32,18 @@ fn lon_lat_decimals_are_exact_and_clockwise_is_normalised() {
 }
 
 #[test]
-fn holes_and_other_geometries_are_clear_errors() {
-    let holes = r#"{"type": "Polygon", "coordinates": [[[0,0],[9,0],[0,9],[0,0]], [[1,1],[1,2],[2,1],[1,1]]]}"#;
-    assert_eq!(
-        from_geojson(holes.as_bytes()).unwrap_err().0,
-        vec![MapError::HolesNotSupported { count: 1 }]
-    );
+fn interior_rings_are_holes_and_other_geometries_are_clear_errors() {
+    let holes = r#"{"type": "Polygon", "coordinates": [[[0,0],[9,0],[0,9],[0,0]], [[1,1],[2,1],[1,2],[1,1]]]}"#;
+    let loaded = from_geojson(holes.as_bytes()).unwrap();
+    assert_eq!(loaded.map.hole_count(), 1);
+    // RFC 7946 holes are clockwise; this one is not, and is reversed.
+    assert_eq!(loaded.normalisation.reversed_holes, vec![0]);
+    assert_eq!(loaded.map.ring(1).len(), 3);
+    let outside = r#"{"type": "Polygon", "coordinates": [[[0,0],[9,0],[0,9],[0,0]], [[8,8],[8,9],[9,8],[8,8]]]}"#;
+    assert!(matches!(
+        &from_geojson(outside.as_bytes()).unwrap_err().0[..],
+        [MapError::HoleOutside { hole: 0, .. }]
+    ));
     let line = r#"{"type": "LineString", "coordinates": [[0,0],[1,1]]}"#;
     let e = from_geojson(line.as_bytes()).unwrap_err();
     assert!(

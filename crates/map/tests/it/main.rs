@@ -3,6 +3,7 @@
 mod datasets;
 mod errors;
 mod geojson;
+mod holes;
 mod normalise;
 mod numbers;
 mod roundtrip;
