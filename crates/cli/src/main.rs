@@ -30,6 +30,7 @@ mod embeddings;
 mod eval;
 mod failure;
 mod gen;
+mod import_grid;
 mod info;
 mod input;
 mod localize;
@@ -71,8 +72,11 @@ enum Command {
     Demo(demo::Args),
     /// Generate a map: a thesis family (`--family`) or a random kind (`--random`).
     Gen(gen::Args),
-    /// Validate a map and print n, r, area, orthogonality and scale.
+    /// Validate a map and print n, r, holes, area, orthogonality and scale.
     Info(info::Args),
+    /// Trace an occupancy grid (ROS map_server: a YAML file and its PGM
+    /// image) into a map with holes, in metres in the grid's frame.
+    ImportGrid(import_grid::Args),
     /// The visibility polygon V_p of a viewpoint (edge kinds, blocking
     /// vertices) and its skeleton V*_p (origin, labels, kernel).
     Vis(vis::Args),
@@ -138,6 +142,7 @@ fn main() -> ExitCode {
         Command::Demo(args) => demo::run(&args),
         Command::Gen(args) => gen::run(&args),
         Command::Info(args) => info::run(&args),
+        Command::ImportGrid(args) => import_grid::run(&args),
         Command::Vis(args) => vis::run(&args),
         Command::Decompose(args) => decompose::run(&args),
         Command::Embeddings(args) => embeddings::run(&args),

@@ -544,6 +544,7 @@ fn embeddings_refuses_a_class_out_of_range() {
 mod check;
 mod claims;
 mod extremes;
+mod grid;
 mod localize;
 mod parallel;
 mod pictures;
