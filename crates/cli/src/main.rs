@@ -35,6 +35,7 @@ mod info;
 mod input;
 mod localize;
 mod localize_scan;
+mod map_from_log;
 mod merge;
 mod options;
 mod output;
@@ -77,6 +78,9 @@ enum Command {
     /// Trace an occupancy grid (ROS map_server: a YAML file and its PGM
     /// image) into a map with holes, in metres in the grid's frame.
     ImportGrid(import_grid::Args),
+    /// Build a map with holes from a laser log's scans (CARMEN FLASER /
+    /// ROBOTLASER1, plain or .gz) through an occupancy grid.
+    MapFromLog(map_from_log::Args),
     /// The visibility polygon V_p of a viewpoint (edge kinds, blocking
     /// vertices) and its skeleton V*_p (origin, labels, kernel).
     Vis(vis::Args),
@@ -143,6 +147,7 @@ fn main() -> ExitCode {
         Command::Gen(args) => gen::run(&args),
         Command::Info(args) => info::run(&args),
         Command::ImportGrid(args) => import_grid::run(&args),
+        Command::MapFromLog(args) => map_from_log::run(&args),
         Command::Vis(args) => vis::run(&args),
         Command::Decompose(args) => decompose::run(&args),
         Command::Embeddings(args) => embeddings::run(&args),

@@ -1,12 +1,12 @@
-//! `wai render`: draw a map as SVG, reflex vertices marked, with a legend
-//! and a scale bar.
+//! `wai render`: draw a map (holes too) as SVG, reflex vertices marked,
+//! with a legend and a scale bar.
 
 use std::path::PathBuf;
 
 use wai_render::{map_svg, MapStyle, MapUnits};
 
 use crate::failure::Failure;
-use crate::input::load;
+use crate::input::load_with_holes;
 use crate::output::output;
 
 #[derive(clap::Args, Debug)]
@@ -33,7 +33,7 @@ pub struct Args {
 }
 
 pub fn run(args: &Args) -> Result<(), Failure> {
-    let loaded = load(&args.map, args.format)?;
+    let loaded = load_with_holes(&args.map, args.format)?;
     let style = MapStyle {
         size: f64::from(args.size.clamp(50, 20_000)),
         vertex_labels: args.labels,

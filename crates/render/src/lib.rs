@@ -619,7 +619,11 @@ fn wall_legend(c: &mut Canvas, inside: &str) {
 /// a legend, a scale bar, and a caption with n, r and the scale.
 pub fn map_svg(map: &Map, style: &MapStyle) -> String {
     let mut c = style.canvas(map);
-    c.polygon(map.vertices(), "#eef3fb", WALL, 1.5);
+    c.polygon(map.outer(), "#eef3fb", WALL, 1.5);
+    // Holes (pillars) drawn over the inside, in the page's white.
+    for hole in map.holes() {
+        c.polygon(hole, "white", WALL, 1.5);
+    }
     let dot = (style.size / 250.0).clamp(1.5, 4.0);
     for (i, &p) in map.vertices().iter().enumerate() {
         let (fill, kind) = if map.is_reflex(i) {
@@ -652,9 +656,14 @@ pub fn map_svg(map: &Map, style: &MapStyle) -> String {
     }
     let name = map.name().unwrap_or("map");
     let caption = format!(
-        "{name}: n = {}, r = {} (reflex vertices in red){}",
+        "{name}: n = {}, r = {}{} (reflex vertices in red){}",
         map.n(),
         map.r(),
+        if map.has_holes() {
+            format!(", {} hole(s)", map.hole_count())
+        } else {
+            String::new()
+        },
         if *map.scale() == 1 {
             String::new()
         } else {

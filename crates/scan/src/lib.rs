@@ -69,6 +69,7 @@
     reason = "sensor data is approximate: the scan localizer is where floats may decide"
 )]
 
+pub mod carmen;
 pub mod coarsen;
 pub mod draw;
 pub mod eval;
@@ -76,6 +77,7 @@ pub mod format;
 pub mod hausdorff;
 pub mod icp;
 mod localizer;
+pub mod log_map;
 pub mod mbt;
 mod obstacles;
 pub mod pcm;

@@ -96,3 +96,61 @@ fn a_grid_becomes_a_map_with_holes_in_metres() {
     assert!(text(&bad.stderr).contains("the thresholds are out of order"));
     std::fs::remove_dir_all(&dir).unwrap();
 }
+
+#[test]
+fn a_map_from_the_intel_log_and_its_grid() {
+    let log = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("../../data/datasets/laser/intel-corrected.log.gz");
+    let dir = std::env::temp_dir().join(format!("wai-map-from-log-{}", std::process::id()));
+    let out = dir.join("intel.json");
+    let run = wai(
+        &[
+            "map-from-log",
+            log.to_str().unwrap(),
+            "--scans",
+            "even",
+            "--out",
+            out.to_str().unwrap(),
+            "--grid-out",
+            dir.join("intel-grid").to_str().unwrap(),
+        ],
+        b"",
+    );
+    let err = text(&run.stderr);
+    assert!(run.status.success(), "{err}");
+    assert!(err.contains("455 scans of 910"), "{err}");
+    // The map reads back, with holes, and so does the grid it came from.
+    let info = wai(&["info", out.to_str().unwrap(), "--json"], b"");
+    assert!(info.status.success(), "{}", text(&info.stderr));
+    let v: serde_json::Value = serde_json::from_slice(&info.stdout).unwrap();
+    assert!(v["holes"].as_u64().unwrap() > 0, "{v}");
+    let again = wai(
+        &[
+            "import-grid",
+            dir.join("intel-grid.yaml").to_str().unwrap(),
+            "--min-hole-area",
+            "0.05",
+        ],
+        b"",
+    );
+    assert!(again.status.success(), "{}", text(&again.stderr));
+    let traced: serde_json::Value = serde_json::from_slice(&again.stdout).unwrap();
+    let first: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(&out).unwrap()).unwrap();
+    // The pair written is the grid the map was traced from.
+    assert!(traced["outer"] == first["outer"] && traced["holes"] == first["holes"]);
+    let bad = wai(
+        &[
+            "map-from-log",
+            dir.join("intel-grid.yaml").to_str().unwrap(),
+        ],
+        b"",
+    );
+    assert_eq!(bad.status.code(), Some(1));
+    assert!(
+        text(&bad.stderr).contains("no laser scan"),
+        "{}",
+        text(&bad.stderr)
+    );
+    std::fs::remove_dir_all(&dir).unwrap();
+}

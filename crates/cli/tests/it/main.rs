@@ -181,11 +181,20 @@ fn info_reads_holes_and_the_other_commands_refuse_them_clearly() {
     assert!(shown.contains("area:         40\n"), "{shown}");
     assert!(text(&out.stderr).contains("hole(s) 0 were counter-clockwise"));
     let out_file = std::env::temp_dir().join(format!("wai-holed-{}.json", std::process::id()));
-    for command in ["decompose", "vis", "preprocess", "embeddings", "render"] {
+    let svg = wai(&["render", "-"], HOLED);
+    assert!(svg.status.success(), "{}", text(&svg.stderr));
+    let svg = text(&svg.stdout);
+    assert_eq!(
+        svg.matches("<polygon").count(),
+        2,
+        "the outer ring and the hole"
+    );
+    assert!(svg.contains("n = 6, r = 3, 1 hole(s)"), "{svg}");
+    for command in ["decompose", "vis", "preprocess", "embeddings"] {
         let mut args = vec![command, "-"];
         match command {
             "vis" => args.extend(["--at", "5,1"]),
-            "preprocess" | "render" => args.extend(["--out", out_file.to_str().unwrap()]),
+            "preprocess" => args.extend(["--out", out_file.to_str().unwrap()]),
             _ => {}
         }
         let out = wai(&args, HOLED);

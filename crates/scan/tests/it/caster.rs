@@ -40,7 +40,8 @@ fn segments(map: &Map) -> Vec<((f64, f64), (f64, f64))> {
         .iter()
         .map(|p| (p.x as f64 / s, p.y as f64 / s))
         .collect();
-    (0..v.len()).map(|i| (v[i], v[(i + 1) % v.len()])).collect()
+    // Along each ring, holes included.
+    (0..v.len()).map(|i| (v[i], v[map.next(i)])).collect()
 }
 
 /// A scan by the independent caster: per beam the noisy range, or `None`
@@ -65,7 +66,7 @@ pub fn cast(map: &Map, pose: &Pose, range: f64, seed: u64) -> Vec<Option<f64>> {
         .collect()
 }
 
-fn relative_angles() -> Vec<f64> {
+pub fn relative_angles() -> Vec<f64> {
     (0..BEAMS)
         .map(|i| -PI + (i as f64 * 0.5).to_radians())
         .collect()

@@ -246,6 +246,7 @@ fn a_scan_in_a_generated_orthogonal_map_has_a_return_on_every_beam() {
         .iter()
         .all(|r| r.is_some_and(|r| r.is_finite() && r > 0.0)));
 }
+mod carmen;
 mod caster;
 mod distances;
 mod independent;
