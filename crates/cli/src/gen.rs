@@ -26,6 +26,9 @@ pub struct Args {
     /// Vertex count target for random kinds.
     #[arg(long, default_value_t = 20, value_parser = crate::options::count, allow_negative_numbers = true)]
     pub n: usize,
+    /// Holes asked of a random kind with holes (fewer where they do not fit).
+    #[arg(long, default_value_t = 4, value_parser = crate::options::count, allow_negative_numbers = true)]
+    pub holes: usize,
     /// Seed for random kinds and layouts (the same seed gives the same map).
     #[arg(long, default_value_t = 0, value_parser = crate::options::count_u64, allow_negative_numbers = true)]
     pub seed: u64,
@@ -44,6 +47,9 @@ pub fn run(args: &Args) -> Result<(), Failure> {
     }
     let map = match (&args.family, &args.random, &args.layout) {
         (Some(family), _, _) => wai_gen::family(family, &args.params),
+        (None, Some(kind), _) if wai_gen::HOLED_KINDS.iter().any(|k| k.id == kind) => {
+            wai_gen::random_with_holes(kind, args.n, args.holes, args.seed)
+        }
         (None, Some(kind), _) => wai_gen::random(kind, args.n, args.seed),
         (None, None, Some(id)) => wai_gen::layout(id, args.seed),
         (None, None, None) => {
@@ -55,7 +61,13 @@ pub fn run(args: &Args) -> Result<(), Failure> {
     .map_err(|e| Failure::usage(e.to_string()))?;
     output(args.out.as_deref(), &to_json(&map))?;
     if let Some(out) = &args.out {
-        eprintln!("wrote {} (n = {}, r = {})", out.display(), map.n(), map.r());
+        eprintln!(
+            "wrote {} (n = {}, r = {}, holes = {})",
+            out.display(),
+            map.n(),
+            map.r(),
+            map.hole_count()
+        );
     }
     Ok(())
 }
@@ -80,6 +92,13 @@ fn catalogue() -> String {
         s.push_str(&format!(
             "  {:<20} {} (n from {} to {}; vertices: {})\n",
             k.id, k.method, k.min_n, k.max_n, k.vertices
+        ));
+    }
+    s.push_str("\nRandom kinds with holes (gen --random KIND --n N --holes H --seed S):\n");
+    for k in wai_gen::HOLED_KINDS {
+        s.push_str(&format!(
+            "  {:<20} {} (n from {} to {})\n",
+            k.id, k.method, k.min_n, k.max_n
         ));
     }
     s.push_str("\nChapter 4 and 5 layouts (gen --layout ID --seed S):\n");

@@ -4,5 +4,6 @@ mod bytes;
 mod common;
 mod exhaustive;
 mod families;
+mod holes;
 mod random;
 mod strategies;
