@@ -184,6 +184,7 @@ pub(crate) struct Step<D> {
 impl<'m> VisibilityIndex<'m> {
     /// Triangulate `map` for queries.
     pub fn new(map: &'m Map) -> VisibilityIndex<'m> {
+        map.expect_no_holes("the triangular-expansion visibility");
         let coord_bits = map
             .vertices()
             .iter()

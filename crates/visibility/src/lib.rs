@@ -38,4 +38,4 @@ pub use kernel::{kernel_of_ring, ConvexRegion};
 pub use map_skeleton::{MapSkeleton, SkeletonAtError};
 pub use polygon::{EdgeKind, OnMap, VisEdge, VisVertex, VisibilityError, VisibilityPolygon};
 pub use skeleton::{reconstruct, LineLabel, Skeleton, SkeletonEdge, SkeletonError, SkeletonKey};
-pub use triangulation::{Across, Triangulation};
+pub use triangulation::{bridged_ring, Across, Triangulation};

@@ -3,6 +3,7 @@
 
 mod cases;
 mod common;
+mod holes;
 mod laws;
 mod map_skeleton;
 mod production;
