@@ -274,6 +274,7 @@ pub fn group_by_line(rays: &[VisibilityRay]) -> BTreeMap<LineKey, Vec<usize>> {
 /// points in the relative interior of edges. A 76-vertex map with 54
 /// reflex vertices takes well under a millisecond (release build).
 pub fn visibility_rays(map: &Map) -> Vec<VisibilityRay> {
+    map.expect_no_holes("the visibility rays");
     let v = map.vertices();
     let n = v.len();
     let index = VisibilityIndex::new(map);

@@ -109,7 +109,7 @@ fn refuse_holes(path: &Path, loaded: &Loaded) -> Result<(), Failure> {
         .require_no_holes("this command")
         .map_err(|e| {
             Failure::invalid(format!(
-                "{}: {e} (the thesis's chapters 3–5 assume a map without holes; `wai info` reads maps with holes)",
+                "{}: {e} (the thesis's chapters 3–5 assume a map without holes; `wai info`, `wai render` and `wai vis` read maps with holes)",
                 path.display()
             ))
         })

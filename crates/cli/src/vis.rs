@@ -1,7 +1,7 @@
 //! `wai vis`: the visibility polygon V_p and skeleton V*_p of a viewpoint.
 
 use crate::failure::Failure;
-use crate::input::load;
+use crate::input::load_with_holes;
 use rug::{Integer, Rational};
 use std::path::PathBuf;
 use wai_exact::RatPoint;
@@ -199,7 +199,7 @@ pub struct Args {
 
 pub fn run(args: &Args) -> Result<(), Failure> {
     let (path, at, as_json, svg) = (&args.map, &args.at, args.json, args.svg.as_deref());
-    let loaded = load(path, args.format)?;
+    let loaded = load_with_holes(path, args.format)?;
     let map = &loaded.map;
     let p = parse_viewpoint(at, map)?;
     let index = VisibilityIndex::new(map);

@@ -67,12 +67,14 @@ pub struct Embedder<'a> {
 /// The embeddings of skeleton `key` in `map` (Def 3.11), by ascending
 /// map vertex h(v0). See [`Embedder::embeddings`].
 pub fn embeddings(map: &Map, key: &SkeletonKey) -> Vec<Embedding> {
+    map.expect_no_holes("the embeddings");
     Embedder::new(&VisibilityIndex::new(map)).embeddings(key)
 }
 
 impl<'a> Embedder<'a> {
     /// The embedder of the map of `index`.
     pub fn new(index: &'a VisibilityIndex<'a>) -> Embedder<'a> {
+        index.map().expect_no_holes("the embeddings");
         let map = index.map();
         let v = map.vertices();
         let n = v.len();

@@ -615,15 +615,21 @@ fn wall_legend(c: &mut Canvas, inside: &str) {
     c.legend(Mark::area(inside, 1.0, WALL), "map (walls and inside)");
 }
 
+/// The map's walls: the outer ring filled with `fill` (`"none"` for an
+/// outline), each hole (pillar) over it in grey.
+fn map_shape(c: &mut Canvas, map: &Map, fill: &str) {
+    c.polygon(map.outer(), fill, WALL, 1.5);
+    let hole_fill = if fill == "none" { "none" } else { "#d0d0d0" };
+    for hole in map.holes() {
+        c.polygon(hole, hole_fill, WALL, 1.5);
+    }
+}
+
 /// Draw `map`: its polygon, its vertices, its reflex vertices marked in red,
 /// a legend, a scale bar, and a caption with n, r and the scale.
 pub fn map_svg(map: &Map, style: &MapStyle) -> String {
     let mut c = style.canvas(map);
-    c.polygon(map.outer(), "#eef3fb", WALL, 1.5);
-    // Holes (pillars) drawn over the inside, in the page's white.
-    for hole in map.holes() {
-        c.polygon(hole, "white", WALL, 1.5);
-    }
+    map_shape(&mut c, map, "#eef3fb");
     let dot = (style.size / 250.0).clamp(1.5, 4.0);
     for (i, &p) in map.vertices().iter().enumerate() {
         let (fill, kind) = if map.is_reflex(i) {
@@ -698,7 +704,7 @@ pub fn visibility_svg(
 ) -> String {
     use wai_visibility::{EdgeKind, SkeletonEdge};
     let mut c = style.canvas(map);
-    c.polygon(map.vertices(), "#f4f4f4", WALL, 1.5);
+    map_shape(&mut c, map, "#f4f4f4");
     c.polygon_rat(&vp.points(), "#ffe9a8", "none", 0.0);
     let n = vp.len();
     let kind_style = |k: EdgeKind| match k {
@@ -943,7 +949,7 @@ pub fn cells_svg(
     caption: &str,
 ) -> String {
     let mut c = style.canvas(map);
-    c.polygon(map.vertices(), "#ffffff", WALL, 1.5);
+    map_shape(&mut c, map, "#ffffff");
     let classes = cells
         .iter()
         .map(|(_, k)| k + 1)
@@ -978,7 +984,7 @@ pub fn cells_svg(
             _ => {}
         }
     }
-    c.polygon(map.vertices(), "none", WALL, 1.5);
+    map_shape(&mut c, map, "none");
     c.legend(Mark::line(WALL, 1.5, ""), "map walls");
     let class_count = cells.iter().map(|(_, k)| *k).collect::<BTreeSet<_>>().len();
     match highlight {
@@ -1059,7 +1065,7 @@ pub fn embeddings_svg(
     caption: &str,
 ) -> String {
     let mut c = style.canvas(map);
-    c.polygon(map.vertices(), "#ffffff", WALL, 1.5);
+    map_shape(&mut c, map, "#ffffff");
     let v = map.vertices();
     let hue = |i: usize| (i as f64 * 137.508 + 200.0) % 360.0;
     for (i, h) in drawn.iter().enumerate() {
@@ -1120,7 +1126,7 @@ pub fn embeddings_svg(
             &format!("h(v0) = map vertex {}", h.origin),
         );
     }
-    c.polygon(map.vertices(), "none", WALL, 1.5);
+    map_shape(&mut c, map, "none");
     c.legend(Mark::line(WALL, 1.5, ""), "map walls");
     for (i, h) in drawn.iter().enumerate().take(LEGEND_EMBEDDINGS) {
         c.legend(

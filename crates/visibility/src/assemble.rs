@@ -46,7 +46,7 @@ fn ray_meets_edge_line(
     edge: usize,
 ) -> Option<RayPoint> {
     let v = map.vertices();
-    let (a, b) = (edge, (edge + 1) % map.n());
+    let (a, b) = (edge, map.next(edge));
     let (num, den, d) = if fast {
         let (x, y, w) = (
             p.hx().to_i128().expect("fast"),
@@ -89,7 +89,7 @@ fn farther(a: &RayPoint, b: &RayPoint) -> bool {
 
 /// Locate `q`, a point of the closed map edge `e`, on the map boundary.
 fn on_edge(map: &Map, e: usize, q: &RatPoint) -> OnMap {
-    for v in [e, (e + 1) % map.n()] {
+    for v in [e, map.next(e)] {
         if q.to_point() == Some(map.vertices()[v]) {
             return OnMap::Vertex(v);
         }
@@ -115,7 +115,7 @@ pub(crate) fn assemble(
         }
         // The common case, a corner: consecutive edges meeting at the very
         // vertex that defines the direction. Both hits are that vertex.
-        if after == (before + 1) % map.n() && dir == after {
+        if after == map.next(before) && dir == after {
             raw.push(RawVertex {
                 point: RatPoint::from(map.vertices()[dir]),
                 on_map: OnMap::Vertex(dir),

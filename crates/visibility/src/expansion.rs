@@ -184,7 +184,6 @@ pub(crate) struct Step<D> {
 impl<'m> VisibilityIndex<'m> {
     /// Triangulate `map` for queries.
     pub fn new(map: &'m Map) -> VisibilityIndex<'m> {
-        map.expect_no_holes("the triangular-expansion visibility");
         let coord_bits = map
             .vertices()
             .iter()
@@ -365,7 +364,6 @@ impl<'m> VisibilityIndex<'m> {
 
     /// [`VisibilityIndex::vertex_view`] in `frame`, the frame of vertex `x`.
     fn vertex_view_in<F: Frame>(&self, frame: &F, x: usize) -> Vec<(usize, usize)> {
-        let n = self.map.n();
         let tri = &self.triangulation;
         // The fan at x in counter-clockwise order: each triangle's cone runs
         // from the corner after x to the one before, and the next triangle's
@@ -379,11 +377,11 @@ impl<'m> VisibilityIndex<'m> {
         };
         let fan: Vec<(u32, usize, usize, usize)> = self.fans[x].iter().map(|&t| cone(t)).collect();
         let mut ordered = Vec::with_capacity(fan.len());
-        let mut at = (x + 1) % n;
+        let mut at = self.map.next(x);
         while let Some(&f) = fan.iter().find(|f| f.2 == at) {
             ordered.push(f);
             at = f.3;
-            if at == (x + n - 1) % n {
+            if at == self.map.prev(x) {
                 break;
             }
         }

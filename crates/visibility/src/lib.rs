@@ -9,9 +9,10 @@
 //! kernel (Def 3.12), and the reconstruction of V_p from V*_p and the
 //! viewpoint (the constructive direction of Thm 3.2).
 //!
-//! Maps without holes only, as the thesis's chapters 3–5 assume: the entry
-//! points panic on a map with holes ([`wai_map::Map::expect_no_holes`]); the
-//! command line refuses such a map with an error before it gets here.
+//! Maps with holes are read throughout (thesis sec. 2.1, 6.4): the
+//! triangulation joins each hole to the outer ring by a bridge, the
+//! expansion and the reference walk every ring's edges, and V_p — a star
+//! polygon, never holed — and V*_p are built as for a map without holes.
 //!
 //! [`reference::visibility_polygon`] is the simple angular algorithm that
 //! defines what V_p is; every other algorithm is tested against it.

@@ -75,7 +75,7 @@ impl MapSkeleton {
                 .edges
                 .iter()
                 .map(|&(e, artificial)| {
-                    artificial.then(|| LineLabel::through(v[e], v[(e + 1) % map.n()], o))
+                    artificial.then(|| LineLabel::through(v[e], v[map.next(e)], o))
                 })
                 .collect(),
         }
@@ -88,7 +88,6 @@ impl MapSkeleton {
             return false;
         }
         let v = map.vertices();
-        let n = map.n();
         self.edges
             .iter()
             .zip(&other.edges)
@@ -96,8 +95,8 @@ impl MapSkeleton {
                 ae == af
                     && (e == f
                         || (ae
-                            && orientation(v[e], v[(e + 1) % n], v[f]) == Orientation::Collinear
-                            && orientation(v[e], v[(e + 1) % n], v[(f + 1) % n])
+                            && orientation(v[e], v[map.next(e)], v[f]) == Orientation::Collinear
+                            && orientation(v[e], v[map.next(e)], v[map.next(f)])
                                 == Orientation::Collinear))
             })
     }
@@ -106,7 +105,6 @@ impl MapSkeleton {
     /// `origin`.
     pub fn is(&self, map: &Map, origin: usize, key: &SkeletonKey) -> bool {
         let v = map.vertices();
-        let n = map.n();
         if self.origin() != origin
             || self.vertices.len() != key.offsets.len()
             || self.edges.len() != key.labels.len()
@@ -125,7 +123,7 @@ impl MapSkeleton {
                 .zip(&key.labels)
                 .all(|(&(e, artificial), label)| match label {
                     None => !artificial,
-                    Some(l) => artificial && on_label(l, rel(e), rel(succ(e, n))),
+                    Some(l) => artificial && on_label(l, rel(e), rel(map.next(e))),
                 })
     }
 }
@@ -226,7 +224,6 @@ pub(crate) fn from_leaves(
     }
     let (x, y, w) = (p.hx().to_i64()?, p.hy().to_i64()?, p.hw().to_i64()?);
     let v = map.vertices();
-    let n = map.n();
     // Within the bound of `fits_fast`: W, X, Y and the map coordinates fit
     // an `i64` (|W·v| < 2^61), W·v is a widening product, directions are
     // below 2^62, an edge vector below 2^63, cross products below 2^126.
@@ -235,7 +232,7 @@ pub(crate) fn from_leaves(
     // Whether the line of map edge `e` meets the ray from p through vertex
     // `d` beyond d (t > 1), before it (`Less`) or at it.
     let beyond = |d: usize, e: usize| -> Option<Ordering> {
-        let (dv, ra, rb) = (rel(d), rel(e), rel(succ(e, n)));
+        let (dv, ra, rb) = (rel(d), rel(e), rel(map.next(e)));
         let den = dv.cross(Vector::new(rb.x - ra.x, rb.y - ra.y));
         if den == 0 {
             return None;
@@ -255,7 +252,7 @@ pub(crate) fn from_leaves(
         if before == after {
             continue;
         }
-        let ends_at = |e: usize| d == e || d == succ(e, n);
+        let ends_at = |e: usize| d == e || d == map.next(e);
         match (ends_at(before), ends_at(after)) {
             (true, true) => boundary.push((Vertex::At(d), Along::MapEdge(after))),
             (true, false) => {
@@ -302,7 +299,7 @@ pub(crate) fn from_leaves(
         let is_reflex = match (into, out) {
             (Along::Ray, _) | (_, Along::Ray) => true,
             (Along::MapEdge(e1), Along::MapEdge(e2)) => {
-                if e1 != pred(mv, n) || e2 != mv {
+                if e1 != map.prev(mv) || e2 != mv {
                     return None;
                 }
                 reflex[mv]

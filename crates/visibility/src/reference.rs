@@ -7,7 +7,8 @@
 //! strictly inside it. At each vertex direction the boundary of V_p jumps
 //! along the ray from the nearest edge before to the nearest edge after (a
 //! spurious edge, Def 3.4), or passes a corner where the two meet, or goes
-//! straight on when they are the same edge.
+//! straight on when they are the same edge. Maps with holes are read the
+//! same way: a hole's edges are edges, and the outer ring surrounds p.
 
 use crate::assemble::assemble;
 use crate::polygon::{VisibilityError, VisibilityPolygon};
@@ -21,6 +22,8 @@ use wai_map::Map;
 struct Frame {
     /// `W·v_i − (X, Y)` for every map vertex `v_i`, with `p = (X, Y) / W`.
     rel: Vec<BigVector>,
+    /// The vertex after each along its ring.
+    next: Vec<usize>,
 }
 
 /// A fraction `num / den` with `den != 0`: the parameter of a point on a
@@ -51,11 +54,12 @@ impl Frame {
             .iter()
             .map(|&v| BigVector::toward(p, v))
             .collect();
-        Frame { rel }
+        let next = (0..map.n()).map(|i| map.next(i)).collect();
+        Frame { rel, next }
     }
 
     fn edge(&self, i: usize) -> (&BigVector, &BigVector) {
-        (&self.rel[i], &self.rel[(i + 1) % self.rel.len()])
+        (&self.rel[i], &self.rel[self.next[i]])
     }
 
     /// Where the ray in direction `d` meets the line of edge `i`:
@@ -104,8 +108,7 @@ impl Frame {
 
 /// V_p of an interior point p of `map`, by the reference algorithm.
 pub fn visibility_polygon(map: &Map, p: &RatPoint) -> Result<VisibilityPolygon, VisibilityError> {
-    map.expect_no_holes("the reference visibility polygon");
-    match locate_rat(map.vertices(), p) {
+    match locate_in_map(map, p) {
         Containment::Inside => {}
         Containment::OnBoundary => return Err(VisibilityError::OnBoundary(p.clone())),
         Containment::Outside => return Err(VisibilityError::Outside(p.clone())),
@@ -148,4 +151,21 @@ pub fn visibility_polygon(map: &Map, p: &RatPoint) -> Result<VisibilityPolygon, 
         .max()
         .unwrap_or(0);
     Ok(assemble(map, p, coord_bits, &leaves))
+}
+
+/// Where `p` lies in the map's free space: inside the outer ring and
+/// outside every hole (on a hole's boundary is on the map's).
+pub fn locate_in_map(map: &Map, p: &RatPoint) -> Containment {
+    match locate_rat(map.outer(), p) {
+        Containment::Inside => {}
+        other => return other,
+    }
+    for hole in map.holes() {
+        match locate_rat(hole, p) {
+            Containment::Outside => {}
+            Containment::OnBoundary => return Containment::OnBoundary,
+            Containment::Inside => return Containment::Outside,
+        }
+    }
+    Containment::Inside
 }

@@ -133,7 +133,6 @@ pub enum SkeletonError {
 impl Skeleton {
     /// V*_p from V_p.
     pub fn of(map: &Map, vp: &VisibilityPolygon) -> Result<Skeleton, SkeletonError> {
-        map.expect_no_holes("the visibility skeleton");
         let verts = vp.vertices();
         let n = verts.len();
         // Non-spurious vertices and their map vertex.
@@ -186,7 +185,7 @@ impl Skeleton {
                     let me = vp.edges()[*e]
                         .map_edge
                         .expect("non-spurious edges lie on the map");
-                    let (a, b) = (map.vertices()[me], map.vertices()[(me + 1) % map.n()]);
+                    let (a, b) = (map.vertices()[me], map.vertices()[map.next(me)]);
                     SkeletonEdge::Artificial {
                         label: LineLabel::through(a, b, origin),
                         map_edge: me,

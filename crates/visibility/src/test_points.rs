@@ -2,7 +2,7 @@
 //! midpoints of vertex pairs and a rational grid, kept where inside.
 
 use rug::Integer;
-use wai_exact::{locate_rat, Containment, RatPoint};
+use wai_exact::{Containment, RatPoint};
 use wai_map::Map;
 
 /// Midpoints of non-adjacent vertex pairs, and the grid of `steps − 1` by
@@ -26,6 +26,6 @@ pub(crate) fn interior_points(map: &Map, steps: i128, spread: i128) -> Vec<RatPo
             out.push(RatPoint::new(x * spread + 1, y * spread + 2, w).unwrap());
         }
     }
-    out.retain(|q| locate_rat(v, q) == Containment::Inside);
+    out.retain(|q| crate::reference::locate_in_map(map, q) == Containment::Inside);
     out
 }

@@ -190,12 +190,25 @@ fn info_reads_holes_and_the_other_commands_refuse_them_clearly() {
         "the outer ring and the hole"
     );
     assert!(svg.contains("n = 6, r = 3, 1 hole(s)"), "{svg}");
-    for command in ["decompose", "vis", "preprocess", "embeddings"] {
+    let hole_in_grey = svg.matches("#d0d0d0").count();
+    assert_eq!(hole_in_grey, 1, "the pillar drawn in grey");
+    // V_p and V*_p of a viewpoint: the hole blocks the view behind it.
+    let vis = wai(&["vis", "-", "--at", "4,1/2"], HOLED);
+    assert!(vis.status.success(), "{}", text(&vis.stderr));
+    let shown = text(&vis.stdout);
+    // The shadow of the pillar on the wall x = 0, from (0, 7/6) to (0, 2.5).
+    assert!(
+        shown.contains("(0, 7/6)                     on map edge 2, spurious"),
+        "{shown}"
+    );
+    assert!(
+        shown.contains("(0, 2.5)                     on map edge 2, spurious"),
+        "{shown}"
+    );
+    for command in ["decompose", "preprocess", "embeddings"] {
         let mut args = vec![command, "-"];
-        match command {
-            "vis" => args.extend(["--at", "5,1"]),
-            "preprocess" => args.extend(["--out", out_file.to_str().unwrap()]),
-            _ => {}
+        if command == "preprocess" {
+            args.extend(["--out", out_file.to_str().unwrap()]);
         }
         let out = wai(&args, HOLED);
         let err = text(&out.stderr);

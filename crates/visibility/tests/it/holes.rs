@@ -72,3 +72,97 @@ fn agplib_maps_with_holes() {
     }
     assert_eq!(maps, 36);
 }
+
+/// Viewpoints of a map with holes: a shifted rational grid over its
+/// bounding box and the midpoints of vertex pairs, kept where in the free
+/// space.
+fn viewpoints(map: &Map, steps: i128) -> Vec<wai_exact::RatPoint> {
+    use rug::Integer;
+    use wai_exact::{Containment, RatPoint};
+    let v = map.vertices();
+    let mut out = Vec::new();
+    for i in 0..v.len() {
+        for j in (i + 1..v.len()).step_by(3) {
+            out.push(RatPoint::midpoint(&v[i].into(), &v[j].into()));
+        }
+    }
+    let (lo, hi) = map.bounding_box();
+    for i in 1..steps {
+        for j in 1..steps {
+            let x = Integer::from(lo.x) * steps + (hi.x - lo.x) * i;
+            let y = Integer::from(lo.y) * steps + (hi.y - lo.y) * j;
+            out.push(RatPoint::new(x * 7 + 1, y * 7 + 2, Integer::from(steps * 7)).unwrap());
+        }
+    }
+    out.retain(|q| wai_visibility::reference::locate_in_map(map, q) == Containment::Inside);
+    out
+}
+
+#[test]
+fn visibility_and_skeletons_on_maps_with_holes() {
+    let mut compared = 0;
+    let mut maps = vec![];
+    for kind in wai_gen::HOLED_KINDS {
+        for seed in 0..12 {
+            maps.push(wai_gen::random_with_holes(kind.id, 14, 5, seed).unwrap());
+        }
+    }
+    for map in &maps {
+        let index = wai_visibility::VisibilityIndex::new(map);
+        for p in viewpoints(map, 9) {
+            let fast = index.visibility_polygon(&p).unwrap();
+            let reference = wai_visibility::reference::visibility_polygon(map, &p).unwrap();
+            assert_eq!(fast, reference, "{:?} at {p:?}", map.name());
+            // The skeleton: read off the expansion as from V_p; p in its
+            // kernel (Lemma 3.4); V_p rebuilt from the key (Thm 3.2).
+            let sk = wai_visibility::Skeleton::of(map, &fast).unwrap();
+            assert_eq!(
+                index.skeleton_at(&p).unwrap(),
+                wai_visibility::MapSkeleton::of(&sk),
+                "{:?} at {p:?}",
+                map.name()
+            );
+            assert_ne!(sk.kernel().locate(&p), wai_exact::Containment::Outside);
+            let o = sk.origin();
+            let shift = |q: &wai_exact::RatPoint| {
+                wai_exact::RatPoint::new(
+                    rug::Integer::from(q.hx() - q.hw() * o.x),
+                    rug::Integer::from(q.hy() - q.hw() * o.y),
+                    q.hw().clone(),
+                )
+                .unwrap()
+            };
+            let rebuilt = wai_visibility::reconstruct(&sk.key(), &shift(&p));
+            let start = fast
+                .points()
+                .iter()
+                .position(|q| *q == wai_exact::RatPoint::from(o))
+                .unwrap();
+            let mut expect: Vec<_> = fast.points().iter().map(shift).collect();
+            expect.rotate_left(start);
+            assert_eq!(rebuilt, expect, "{:?} at {p:?}", map.name());
+            compared += 1;
+        }
+        // In a hole and on a hole's edge: refused as outside, on the boundary.
+        let hole = map.holes().next().unwrap();
+        // The holes are convex: the centroid of three corners is inside.
+        let inside_hole = wai_exact::RatPoint::new(
+            rug::Integer::from(hole[0].x + hole[1].x + hole[2].x),
+            rug::Integer::from(hole[0].y + hole[1].y + hole[2].y),
+            rug::Integer::from(3),
+        )
+        .unwrap();
+        let got = index.visibility_polygon(&inside_hole);
+        assert!(
+            matches!(got, Err(wai_visibility::VisibilityError::Outside(_))),
+            "{:?} {hole:?}: {got:?}",
+            map.name()
+        );
+        let on_edge = wai_exact::RatPoint::midpoint(&hole[0].into(), &hole[1].into());
+        assert!(matches!(
+            index.visibility_polygon(&on_edge),
+            Err(wai_visibility::VisibilityError::OnBoundary(_))
+        ));
+    }
+    assert!(compared > 2000, "{compared}");
+}
