@@ -14,6 +14,10 @@
 //                               Builds the arrangement and the visibility
 //                               object (the constrained triangulation).
 //                               Reply: `ok N`.
+//   holed N x1 y1 ... xN yN H M1 x y ... M2 x y ...
+//                               a polygon with H holes: the outer ring
+//                               counter-clockwise, each hole (M vertices)
+//                               clockwise. Reply: `ok T`, T every vertex.
 //   query x y                   q strictly inside the polygon. Reply:
 //                               `vis K x1 y1 ... xK yK`, counter-clockwise,
 //                               starting at the lexicographically (x, then y)
@@ -223,7 +227,12 @@ struct Soft : std::runtime_error {
 
 class Session {
  public:
-  void set_polygon(std::vector<Point_2> pts) {
+  void set_polygon(std::vector<Point_2> pts) { set_domain(std::move(pts), {}); }
+
+  // A polygon with holes: the outer ring counter-clockwise, each hole
+  // clockwise; the free face is the bounded face with one inner boundary
+  // per hole.
+  void set_domain(std::vector<Point_2> pts, std::vector<std::vector<Point_2>> holes) {
     // Tear down in dependency order: the visibility object observes arr.
     tev_.reset();
     pl_.reset();
@@ -232,20 +241,40 @@ class Session {
     Polygon_2 poly(pts.begin(), pts.end());
     if (!poly.is_simple()) throw Soft("polygon is not simple");
     if (poly.orientation() != CGAL::COUNTERCLOCKWISE) throw Soft("polygon is not counter-clockwise");
+    std::size_t total = pts.size();
     std::vector<Segment_2> segs;
     segs.reserve(pts.size());
-    for (std::size_t i = 0; i < pts.size(); ++i) {
-      segs.emplace_back(pts[i], pts[(i + 1) % pts.size()]);
+    auto ring = [&segs](const std::vector<Point_2>& r) {
+      for (std::size_t i = 0; i < r.size(); ++i) segs.emplace_back(r[i], r[(i + 1) % r.size()]);
+    };
+    ring(pts);
+    for (const auto& h : holes) {
+      if (h.size() < 3) throw Soft("hole needs at least 3 vertices");
+      Polygon_2 hp(h.begin(), h.end());
+      if (!hp.is_simple()) throw Soft("hole is not simple");
+      if (hp.orientation() != CGAL::CLOCKWISE) throw Soft("hole is not clockwise");
+      ring(h);
+      total += h.size();
     }
     auto arr = std::make_unique<Arrangement_2>();
     CGAL::insert_non_intersecting_curves(*arr, segs.begin(), segs.end());
-    if (arr->number_of_faces() != 2 || arr->number_of_edges() != pts.size()) {
-      throw Soft("arrangement is not a single bounded face");
+    if (arr->number_of_faces() != 2 + holes.size() || arr->number_of_edges() != total) {
+      throw Soft("arrangement is not one bounded face with its holes");
     }
+    bool found = false;
+    for (auto f = arr->faces_begin(); f != arr->faces_end(); ++f) {
+      if (!f->is_unbounded() && f->number_of_holes() == holes.size()) {
+        if (found && !holes.empty()) throw Soft("two faces could be the free space");
+        free_ = f;
+        found = true;
+        if (holes.empty()) break;
+      }
+    }
+    if (!found) throw Soft("no face has every hole inside it");
     arr_ = std::move(arr);
     pl_ = std::make_unique<Naive_pl>(*arr_);
     tev_ = std::make_unique<TEV>(*arr_);  // builds the constrained triangulation
-    n_ = pts.size();
+    n_ = total;
   }
 
   std::size_t n() const { return n_; }
@@ -256,6 +285,7 @@ class Session {
     auto obj = pl_->locate(q);
     if (const Face_const_handle* f = boost::get<Face_const_handle>(&obj)) {
       if ((*f)->is_unbounded()) throw Soft("query point outside the polygon");
+      if (*f != free_) throw Soft("query point inside a hole");
       return *f;
     }
     if (boost::get<Halfedge_const_handle>(&obj)) throw Soft("query point on a polygon edge");
@@ -271,6 +301,7 @@ class Session {
   std::unique_ptr<Arrangement_2> arr_;
   std::unique_ptr<Naive_pl> pl_;
   std::unique_ptr<TEV> tev_;
+  Face_const_handle free_;
   std::size_t n_ = 0;
 };
 
@@ -360,6 +391,19 @@ int main() {
         pts.reserve(static_cast<std::size_t>(n));
         for (long long i = 0; i < n; ++i) pts.push_back(read_point(std::cin));
         session.set_polygon(std::move(pts));
+        std::cout << "ok " << session.n() << '\n' << std::flush;
+      } else if (cmd == "holed") {
+        long long n = parse_count(next_token(std::cin, "N"), "vertex count");
+        std::vector<Point_2> pts;
+        pts.reserve(static_cast<std::size_t>(n));
+        for (long long i = 0; i < n; ++i) pts.push_back(read_point(std::cin));
+        long long h = parse_count(next_token(std::cin, "H"), "hole count");
+        std::vector<std::vector<Point_2>> holes(static_cast<std::size_t>(h));
+        for (auto& hole : holes) {
+          long long m = parse_count(next_token(std::cin, "M"), "hole vertex count");
+          for (long long i = 0; i < m; ++i) hole.push_back(read_point(std::cin));
+        }
+        session.set_domain(std::move(pts), std::move(holes));
         std::cout << "ok " << session.n() << '\n' << std::flush;
       } else if (cmd == "query") {
         Point_2 q = read_point(std::cin);

@@ -105,6 +105,35 @@ impl CgalPeer {
         }
     }
 
+    /// Send a map, holes and all (`holed`; `polygon` without holes), and
+    /// build CGAL's arrangement and triangulation.
+    pub fn set_map(&mut self, map: &wai_map::Map) -> Result<(), String> {
+        if !map.has_holes() {
+            return self.set_polygon(map.vertices(), map.scale());
+        }
+        let ring = |cmd: &mut String, pts: &[Point]| {
+            cmd.push_str(&format!(" {}", pts.len()));
+            for p in pts {
+                cmd.push_str(&format!(" {} {}", p.x, p.y));
+            }
+        };
+        let mut cmd = String::from("holed");
+        ring(&mut cmd, map.outer());
+        cmd.push_str(&format!(" {}", map.hole_count()));
+        for hole in map.holes() {
+            ring(&mut cmd, hole);
+        }
+        self.scale = None;
+        let reply = self.call(&cmd)?;
+        match reply.strip_prefix("ok ") {
+            Some(n) if n.trim() == map.n().to_string() => {
+                self.scale = Some(map.scale().clone());
+                Ok(())
+            }
+            _ => Err(format!("unexpected reply to holed: {reply}")),
+        }
+    }
+
     /// The visibility polygon of `q` (strictly inside the polygon), exactly:
     /// counter-clockwise from the lexicographically smallest vertex, in the
     /// integer frame, as CGAL reports it (see [`drop_collinear`]).

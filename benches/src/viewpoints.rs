@@ -3,7 +3,7 @@
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 use rug::Integer;
-use wai_exact::{locate_rat, Containment, RatPoint};
+use wai_exact::{Containment, RatPoint};
 use wai_map::Map;
 
 /// `count` distinct points strictly inside `map`, each with a denominator of
@@ -22,7 +22,7 @@ pub fn interior_viewpoints(map: &Map, count: usize, seed: u64) -> Vec<RatPoint> 
         let x = Integer::from(lo.x) * 1000 + Integer::from(hi.x - lo.x) * fx;
         let y = Integer::from(lo.y) * 1000 + Integer::from(hi.y - lo.y) * fy;
         let p = RatPoint::new(x, y, Integer::from(1000)).expect("positive denominator");
-        if locate_rat(map.vertices(), &p) == Containment::Inside && !out.contains(&p) {
+        if map.locate(&p) == Containment::Inside && !out.contains(&p) {
             out.push(p);
         }
     }
@@ -39,7 +39,7 @@ pub fn near_vertices(map: &Map) -> Vec<RatPoint> {
     let n = v.len();
     (0..n)
         .map(|i| {
-            let (a, b, c) = (v[(i + n - 1) % n], v[i], v[(i + 1) % n]);
+            let (a, b, c) = (v[map.prev(i)], v[i], v[map.next(i)]);
             let sign = if map.is_reflex(i) { -1 } else { 1 };
             let sx = sign * ((a.x - b.x) + (c.x - b.x));
             let sy = sign * ((a.y - b.y) + (c.y - b.y));
@@ -51,7 +51,7 @@ pub fn near_vertices(map: &Map) -> Vec<RatPoint> {
                     k.clone(),
                 )
                 .expect("positive denominator");
-                if locate_rat(v, &p) == Containment::Inside {
+                if map.locate(&p) == Containment::Inside {
                     break p;
                 }
                 k *= 2;
@@ -82,7 +82,7 @@ pub fn small_denominator_points(map: &Map, count: usize, seed: u64) -> Vec<RatPo
             w,
         )
         .expect("w > 0");
-        if locate_rat(map.vertices(), &p) == Containment::Inside {
+        if map.locate(&p) == Containment::Inside {
             out.push(p);
         }
     }

@@ -3,7 +3,9 @@
 use crate::error::MapErrors;
 use crate::validate::validate_scaled_rings;
 use rug::Integer;
-use wai_exact::{orientation, signed_area_twice, Orientation, Point, Segment};
+use wai_exact::{
+    locate_rat, orientation, signed_area_twice, Containment, Orientation, Point, RatPoint, Segment,
+};
 
 /// A map: a simple polygon, possibly with holes (thesis sec. 2.1; the
 /// thesis's chapters 3–5 assume none, sec. 6.4 drops the assumption),
@@ -328,6 +330,24 @@ impl Map {
         if let Err(e) = self.require_no_holes(stage) {
             panic!("{e}");
         }
+    }
+
+    /// Where `p` lies: in the free space (inside the outer ring and outside
+    /// every hole), on the boundary of any ring, or outside (beyond the
+    /// outer ring or inside a hole).
+    pub fn locate(&self, p: &RatPoint) -> Containment {
+        match locate_rat(self.outer(), p) {
+            Containment::Inside => {}
+            other => return other,
+        }
+        for hole in self.holes() {
+            match locate_rat(hole, p) {
+                Containment::Outside => {}
+                Containment::OnBoundary => return Containment::OnBoundary,
+                Containment::Inside => return Containment::Outside,
+            }
+        }
+        Containment::Inside
     }
 
     /// An error naming `stage` if the map has holes: for the stages that

@@ -31,8 +31,7 @@ use rug::{Integer, Rational};
 use serde_json::{json, Value};
 use wai_cells::{Arrangement, Support};
 use wai_exact::{
-    construct_intersection, locate_rat, orientation_rat, Containment, Line, Orientation, Point,
-    RatPoint,
+    construct_intersection, orientation_rat, Containment, Line, Orientation, Point, RatPoint,
 };
 use wai_map::{format_exact, Map};
 use wai_visibility::{VisibilityIndex, VisibilityPolygon};
@@ -57,7 +56,7 @@ pub fn viewpoints(map: &Map, limit: usize) -> Vec<RatPoint> {
     let n = v.len();
     let mut out: Vec<RatPoint> = Vec::new();
     let keep = |q: RatPoint, out: &mut Vec<RatPoint>| {
-        if out.len() < limit && !out.contains(&q) && locate_rat(v, &q) == Containment::Inside {
+        if out.len() < limit && !out.contains(&q) && map.locate(&q) == Containment::Inside {
             out.push(q);
         }
     };
@@ -86,7 +85,7 @@ pub fn viewpoints(map: &Map, limit: usize) -> Vec<RatPoint> {
         .filter_map(|k| construct_intersection(&lines[line_pairs[k].0], &lines[line_pairs[k].1]));
     // Points on the extensions of map edges: v_i + (v_i − v_{i−1}) / 3.
     let extensions = (0..n).map(|i| {
-        let (a, b) = (v[(i + n - 1) % n], v[i]);
+        let (a, b) = (v[map.prev(i)], v[i]);
         RatPoint::new(
             Integer::from(b.x) * 4 - a.x,
             Integer::from(b.y) * 4 - a.y,
@@ -769,7 +768,7 @@ mod tests {
         let views = viewpoints(&map, 12);
         assert_eq!(views.len(), 12);
         for (k, p) in views.iter().enumerate() {
-            assert_eq!(locate_rat(map.vertices(), p), Containment::Inside);
+            assert_eq!(map.locate(p), Containment::Inside);
             assert!(!views[..k].contains(p));
         }
         // The grid kind contributes (denominator a multiple of 56's factor 7).

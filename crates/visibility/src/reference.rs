@@ -14,7 +14,7 @@ use crate::assemble::assemble;
 use crate::polygon::{VisibilityError, VisibilityPolygon};
 use rug::Integer;
 use std::cmp::Ordering;
-use wai_exact::{locate_rat, BigVector, Containment, RatPoint};
+use wai_exact::{BigVector, Containment, RatPoint};
 use wai_map::Map;
 
 /// The map seen from p, translated to p and scaled by p's denominator so
@@ -108,7 +108,7 @@ impl Frame {
 
 /// V_p of an interior point p of `map`, by the reference algorithm.
 pub fn visibility_polygon(map: &Map, p: &RatPoint) -> Result<VisibilityPolygon, VisibilityError> {
-    match locate_in_map(map, p) {
+    match map.locate(p) {
         Containment::Inside => {}
         Containment::OnBoundary => return Err(VisibilityError::OnBoundary(p.clone())),
         Containment::Outside => return Err(VisibilityError::Outside(p.clone())),
@@ -151,21 +151,4 @@ pub fn visibility_polygon(map: &Map, p: &RatPoint) -> Result<VisibilityPolygon, 
         .max()
         .unwrap_or(0);
     Ok(assemble(map, p, coord_bits, &leaves))
-}
-
-/// Where `p` lies in the map's free space: inside the outer ring and
-/// outside every hole (on a hole's boundary is on the map's).
-pub fn locate_in_map(map: &Map, p: &RatPoint) -> Containment {
-    match locate_rat(map.outer(), p) {
-        Containment::Inside => {}
-        other => return other,
-    }
-    for hole in map.holes() {
-        match locate_rat(hole, p) {
-            Containment::Outside => {}
-            Containment::OnBoundary => return Containment::OnBoundary,
-            Containment::Inside => return Containment::Outside,
-        }
-    }
-    Containment::Inside
 }

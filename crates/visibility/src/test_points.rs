@@ -26,6 +26,6 @@ pub(crate) fn interior_points(map: &Map, steps: i128, spread: i128) -> Vec<RatPo
             out.push(RatPoint::new(x * spread + 1, y * spread + 2, w).unwrap());
         }
     }
-    out.retain(|q| crate::reference::locate_in_map(map, q) == Containment::Inside);
+    out.retain(|q| map.locate(q) == Containment::Inside);
     out
 }

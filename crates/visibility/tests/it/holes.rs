@@ -94,7 +94,7 @@ fn viewpoints(map: &Map, steps: i128) -> Vec<wai_exact::RatPoint> {
             out.push(RatPoint::new(x * 7 + 1, y * 7 + 2, Integer::from(steps * 7)).unwrap());
         }
     }
-    out.retain(|q| wai_visibility::reference::locate_in_map(map, q) == Containment::Inside);
+    out.retain(|q| map.locate(q) == Containment::Inside);
     out
 }
 
