@@ -71,14 +71,15 @@ const RUN: [&str; 8] = [
     "--no-shrink",
 ];
 
-/// `scripts/slurm/submit dir 4 -- RUN`: (array job, merge job).
-fn submit(conf: &str, dir: &Path) -> (String, String) {
+/// `scripts/slurm/submit dir 4 -- RUN` with `bin` as the shards' binary:
+/// (array job, merge job).
+fn submit(conf: &str, dir: &Path, bin: &Path) -> (String, String) {
     let mut args = vec![dir.to_str().unwrap(), "4", "--"];
     args.extend(RUN);
     let out = Command::new(repo().join("scripts/slurm/submit"))
         .args(&args)
         .env("SLURM_CONF", conf)
-        .env("WAI_BIN", env!("CARGO_BIN_EXE_wai"))
+        .env("WAI_BIN", bin)
         // A test may run from a checkout with changes: the shards say
         // +dirty and are merged because one binary ran them.
         .env("WAI_ALLOW_DIRTY", "1")
@@ -134,16 +135,33 @@ fn a_job_array_merges_into_the_unsharded_run_and_a_cancelled_shard_is_repaired()
 
     // Four shards and their merge job.
     let dir = base.join("run");
-    let (_, merge) = submit(&conf, &dir);
+    let wai = Path::new(env!("CARGO_BIN_EXE_wai"));
+    let (_, merge) = submit(&conf, &dir, wai);
     wait_gone(&conf, &merge);
     let merged = json(&dir.join("merged.json"));
     same_run(&merged, &whole);
     assert_eq!(merged["shards"]["missing"], serde_json::json!([]));
     assert_eq!(merged["shards"]["present"].as_array().unwrap().len(), 4);
 
-    // Shard 2 cancelled while it runs: the merge names it missing.
+    // Shard 2 cancelled while it runs: the merge names it missing. A shard
+    // of 80 maps can finish between two polls of squeue, so shard 2 runs
+    // through a wrapper that holds it (as a running task) until cancelled;
+    // the other shards run the binary at once.
     let dir = base.join("cancelled");
-    let (array, merge) = submit(&conf, &dir);
+    let held = base.join("wai-holding-shard-2");
+    std::fs::write(
+        &held,
+        format!(
+            "#!/bin/sh\ncase \" $* \" in *' 2/4 '*) sleep 3600 ;; esac\nexec '{}' \"$@\"\n",
+            wai.display()
+        ),
+    )
+    .unwrap();
+    {
+        use std::os::unix::fs::PermissionsExt;
+        std::fs::set_permissions(&held, std::fs::Permissions::from_mode(0o755)).unwrap();
+    }
+    let (array, merge) = submit(&conf, &dir, &held);
     let task = format!("{array}_2");
     let start = Instant::now();
     loop {
@@ -184,7 +202,7 @@ fn a_job_array_merges_into_the_unsharded_run_and_a_cancelled_shard_is_repaired()
     );
 
     // Submitted again: shard 2 alone, then the merge, equal to the whole.
-    let (array, merge) = submit(&conf, &dir);
+    let (array, merge) = submit(&conf, &dir, wai);
     let out = slurm(&conf, "squeue", &["-h", "-j", &array, "-o", "%K"]);
     let tasks = text(&out.stdout);
     assert!(tasks.trim().is_empty() || tasks.trim() == "2", "{tasks}");
