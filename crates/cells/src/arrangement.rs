@@ -93,7 +93,17 @@ pub struct EdgeGeometry {
 /// [`Arrangement::owner_of_vertex`]).
 ///
 /// Face [`Arrangement::outer_face`] (always 0) is the exterior of the map;
-/// every other face is a visibility cell (Thm 3.3: convex).
+/// on a map with `h` holes, faces `1..=h` are the holes' interiors
+/// ([`Arrangement::hole_face`]); every other face is a visibility cell
+/// (Thm 3.3: convex; [`Arrangement::cells`], [`Arrangement::is_cell`]).
+///
+/// With holes the arrangement is still connected, so every face has one
+/// boundary cycle: take a connected set of holes that touches no ray to
+/// the rest, and a vertex `v` of its convex hull extreme in some direction
+/// `w`. `v` is convex as a vertex of its hole, hence reflex in the free
+/// space, and the ray extending the hole edge that arrives at `v` has a
+/// direction `d` with `w·d > 0`: it leaves the hull at once, never comes
+/// back, and ends on the outer ring or another hole — a contradiction.
 ///
 /// # Edge cases
 /// - Any number of rays through one point give one vertex (points are
@@ -617,7 +627,7 @@ impl Arrangement {
         // visited in order of their boxes' left sides, stopping once a box
         // starts right of the current one.
         let spans: Option<Vec<Span>> =
-            SmallCoords::of(v).map(|c| rays.iter().map(|r| c.span(r)).collect());
+            SmallCoords::of(map).map(|c| rays.iter().map(|r| c.span(r)).collect());
         let eyes: Vec<Eye> = match spans {
             Some(_) => Vec::new(),
             None => ends.iter().map(|&e| Eye::new(pts.exact(e))).collect(),
@@ -684,7 +694,7 @@ impl Arrangement {
             on_line[group_of[j]].push(id);
         }
         // Points on map edges: the ends of rays in their relative interior.
-        let mut on_edge: Vec<Vec<VertexId>> = (0..n).map(|i| vec![i, (i + 1) % n]).collect();
+        let mut on_edge: Vec<Vec<VertexId>> = (0..n).map(|i| vec![i, map.next(i)]).collect();
         for (r, &e) in rays.iter().zip(&ends) {
             if let OnMap::Edge(i) = r.end.on_map {
                 on_edge[i].push(e);
@@ -703,7 +713,7 @@ impl Arrangement {
         let mut ends_of: Vec<(VertexId, VertexId)> = Vec::with_capacity(most);
         let mut dir_of: Vec<Vector> = Vec::with_capacity(most);
         let edge_dirs: Vec<Vector> = (0..n)
-            .map(|i| primitive_dir(&Line::new(v[i], v[(i + 1) % n]).expect("distinct")))
+            .map(|i| primitive_dir(&Line::new(v[i], v[map.next(i)]).expect("distinct")))
             .collect();
         on_edge
             .par_iter_mut()
@@ -713,8 +723,14 @@ impl Arrangement {
             .par_iter_mut()
             .zip(groups)
             .for_each(|(ids, g)| sort_along(g.dir, ids, pt));
+        // By ring, the edge of the first piece of its first map edge.
+        let mut ring_first_piece = Vec::with_capacity(map.hole_count() + 1);
         for (i, ids) in on_edge.iter().enumerate() {
             let d = edge_dirs[i];
+            let ring = ring_first_piece.len();
+            if ring <= map.hole_count() && map.ring_range(ring).start == i {
+                ring_first_piece.push(edges.len());
+            }
             for w in ids.windows(2) {
                 on_boundary[w[0]] = true;
                 on_boundary[w[1]] = true;
@@ -823,9 +839,12 @@ impl Arrangement {
             });
         }
         // Faces; the first traced is the exterior, left of the reverse of
-        // the first piece of map edge 0 (the map is counter-clockwise).
+        // the first piece of map edge 0 (the map is counter-clockwise),
+        // then the holes' interiors, left of the reverse of each hole's
+        // first piece (holes are clockwise), then the cells.
         let mut faces = Vec::new();
-        for start in std::iter::once(1).chain(0..half_edges.len()) {
+        let reversed = ring_first_piece.iter().map(|&e| 2 * e + 1);
+        for start in reversed.chain(0..half_edges.len()) {
             if half_edges[start].face != usize::MAX {
                 continue;
             }
@@ -859,6 +878,20 @@ impl Arrangement {
     pub fn outer_face(&self) -> FaceId {
         0
     }
+    /// The interior of hole `k` (0-based): face `1 + k`.
+    pub fn hole_face(&self, k: usize) -> FaceId {
+        assert!(
+            k < self.map.hole_count(),
+            "hole {k} of {}",
+            self.map.hole_count()
+        );
+        1 + k
+    }
+    /// Whether face `f` is a visibility cell: neither the exterior nor a
+    /// hole's interior.
+    pub fn is_cell(&self, f: FaceId) -> bool {
+        f > self.map.hole_count()
+    }
     pub fn vertex_count(&self) -> usize {
         self.vertices.len()
     }
@@ -872,9 +905,10 @@ impl Arrangement {
     pub fn face_count(&self) -> usize {
         self.faces.len()
     }
-    /// The bounded faces: the visibility cells.
+    /// The faces of the free space: the visibility cells (every bounded
+    /// face but the holes' interiors, which come first).
     pub fn cells(&self) -> impl Iterator<Item = FaceId> {
-        1..self.faces.len()
+        1 + self.map.hole_count()..self.faces.len()
     }
     pub fn vertex(&self, v: VertexId) -> &Vertex {
         &self.vertices[v]

@@ -169,7 +169,7 @@ fn edge_owner(
 ) -> (FaceId, Option<Conflict>) {
     let (f0, f1) = (arr.half_edges[2 * e].face, arr.half_edges[2 * e + 1].face);
     match geom.support {
-        Support::MapEdge(_) => (if f0 != arr.outer_face() { f0 } else { f1 }, None),
+        Support::MapEdge(_) => (if arr.is_cell(f0) { f0 } else { f1 }, None),
         Support::Rays(_) => {
             let rays = arr.edge_rays(e);
             // Half-edge 2e points along `dir`; its face is on its left.
@@ -242,14 +242,14 @@ fn vertex_owner(
     }
     through.sort_unstable();
     // The cells around v, counter-clockwise, starting after the exterior
-    // if v is on it.
+    // (or the hole) if v is on it.
     let k = out.len();
     let start = (0..k)
-        .find(|&i| arr.half_edges[out[i]].face == arr.outer_face())
+        .find(|&i| !arr.is_cell(arr.half_edges[out[i]].face))
         .map_or(0, |i| i + 1);
     for i in (0..k).map(|i| (start + i) % k) {
         let f = arr.half_edges[out[i]].face;
-        if f == arr.outer_face() {
+        if !arr.is_cell(f) {
             continue;
         }
         let w = inside_corner(arr.direction(out[i]), arr.direction(out[(i + 1) % k]));

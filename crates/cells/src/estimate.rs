@@ -37,12 +37,11 @@ use wai_visibility::OnMap;
 /// ```
 pub fn vertex_bound(map: &Map, rays: &[VisibilityRay]) -> u64 {
     let v = map.vertices();
-    let n = v.len();
     let ends: Vec<End> = rays
         .iter()
         .map(|r| match r.end.on_map {
             OnMap::Vertex(i) => End::Vertex(v[i]),
-            OnMap::Edge(k) => End::OnEdge(Line::new(v[k], v[(k + 1) % n]).expect("distinct")),
+            OnMap::Edge(k) => End::OnEdge(Line::new(v[k], v[map.next(k)]).expect("distinct")),
         })
         .collect();
     let keys: Vec<LineKey> = rays.iter().map(|r| LineKey::of(&r.line)).collect();
@@ -64,7 +63,7 @@ pub fn vertex_bound(map: &Map, rays: &[VisibilityRay]) -> u64 {
         .iter()
         .filter(|r| matches!(r.end.on_map, OnMap::Edge(_)))
         .count();
-    (n + on_edges + crossing.len()) as u64
+    (v.len() + on_edges + crossing.len()) as u64
 }
 
 /// An end of a ray: a map vertex, or the meeting point of the ray's line

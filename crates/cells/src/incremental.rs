@@ -43,12 +43,15 @@ use std::sync::atomic::{AtomicU32, AtomicU64, AtomicUsize, Ordering as AtomicOrd
 use std::sync::OnceLock;
 use wai_exact::{Line, Orientation, Point, RatPoint};
 use wai_map::Map;
-use wai_visibility::{LineLabel, Skeleton, SkeletonKey, VisibilityIndex};
+use wai_visibility::{LineLabel, Skeleton, SkeletonEdge, SkeletonKey, VisibilityIndex};
 
 /// A skeleton in map terms: Vis (the map vertices seen, ascending map
 /// ids), for each consecutive pair of Vis (cyclically) the edge between
 /// them, and where in Vis the origin sits; the skeleton's vertices are Vis
-/// rotated to start at the origin. An edge is [`FULL`] or the map edge an
+/// rotated to start at the origin. (On one ring, ascending ids are the
+/// skeleton's counter-clockwise order; on a map with holes they are not,
+/// and Vis is kept in the skeleton's order from the origin instead, with
+/// the origin first: [`Walker::walk`].) An edge is [`FULL`] or the map edge an
 /// artificial edge lies on. Equal compact skeletons are equal skeletons in
 /// the same embedding; the converse fails only where an artificial edge's
 /// line holds several collinear map edges, which
@@ -98,7 +101,6 @@ impl Compact {
     /// The canonical key (as [`Skeleton::key`] would give it).
     pub(crate) fn key(&self, map: &Map) -> SkeletonKey {
         let v = map.vertices();
-        let n = v.len();
         let o = v[self.origin()];
         let (offsets, labels) = self
             .rotated()
@@ -106,7 +108,7 @@ impl Compact {
                 let p = v[u as usize];
                 let label = e.map(|e| {
                     let e = e as usize;
-                    LineLabel::through(v[e], v[(e + 1) % n], o)
+                    LineLabel::through(v[e], v[map.next(e)], o)
                 });
                 ((p.x - o.x, p.y - o.y), label)
             })
@@ -155,10 +157,9 @@ const FULL_WORD: u64 = 0x2545_f491_4f6c_dd1d;
 impl EdgeLines {
     pub(crate) fn new(map: &Map) -> EdgeLines {
         let v = map.vertices();
-        let n = v.len();
-        let by_edge: Vec<(i128, i128, Integer, Option<i128>)> = (0..n)
+        let by_edge: Vec<(i128, i128, Integer, Option<i128>)> = (0..v.len())
             .map(|i| {
-                let line = Line::new(v[i], v[next(i, n)]).expect("distinct vertices");
+                let line = Line::new(v[i], v[map.next(i)]).expect("distinct vertices");
                 let key = LineKey::of(&line);
                 let c = key.c().clone();
                 let small = c.to_i128();
@@ -179,7 +180,7 @@ impl EdgeLines {
         let powers = std::iter::successors(Some(0x9e37_79b9_7f4a_7c15u64), |&p| {
             Some(p.wrapping_mul(0x9e37_79b9_7f4a_7c15))
         })
-        .take(2 * n)
+        .take(2 * v.len())
         .collect();
         EdgeLines {
             by_edge,
@@ -310,7 +311,7 @@ pub(crate) struct Walker<'a> {
 /// The line of each ray group, in the arrangement's order of groups
 /// (built beside the arrangement: [`Arrangement::from_rays_beside`]).
 pub(crate) fn line_views(map: &Map, groups: &[RayGroup], rays: &[VisibilityRay]) -> Vec<LineView> {
-    let small = SmallCoords::of(map.vertices());
+    let small = SmallCoords::of(map);
     groups
         .par_iter()
         .map(|g| LineView::new(map, small.as_ref(), rays[g.rays[0]].from, g.dir))
@@ -497,7 +498,7 @@ impl<'a> Walker<'a> {
             topo,
             views: (0..n).map(|_| OnceLock::new()).collect(),
             reflex: (0..n).map(|i| map.is_reflex(i)).collect(),
-            turns: SmallCoords::of(map.vertices()).map(|c| c.edge_turns()),
+            turns: SmallCoords::of(map).map(|c| c.edge_turns()),
         }
     }
 
@@ -521,6 +522,9 @@ impl<'a> Walker<'a> {
         corners: &[Option<[VertexId; 3]>],
         progress: &mut dyn FnMut(usize),
     ) -> Walked {
+        if self.map.has_holes() {
+            return self.walk_by_queries(corners, progress);
+        }
         let arr = self.arr;
         let order = &self.order;
         let parts = rayon::current_num_threads()
@@ -638,7 +642,7 @@ impl<'a> Walker<'a> {
                     };
                     let t = h ^ 1;
                     let other = self.topo.face(t);
-                    if other == arr.outer_face() || part_of[other] != part || queued[other] {
+                    if !arr.is_cell(other) || part_of[other] != part || queued[other] {
                         continue;
                     }
                     // Half-edge 2e runs along the group's direction, its
@@ -746,6 +750,17 @@ impl<'a> Walker<'a> {
         scratch: &mut Scratch,
     ) -> LowerSkeleton {
         self.faces_of(site, scratch);
+        if self.map.has_holes() {
+            let arr = self.arr;
+            let q = match site {
+                LowerSite::Edge(e) => {
+                    let a = arr.point(arr.half_edge(2 * e).origin);
+                    RatPoint::midpoint(a, arr.point(arr.dest(2 * e)))
+                }
+                LowerSite::Vertex(v) => arr.point(v).clone(),
+            };
+            return LowerSkeleton::Own(self.queried_skeleton(&q));
+        }
         let mut lines = std::mem::take(&mut scratch.lines);
         let mut sides = std::mem::take(&mut scratch.sides);
         lines.clear();
@@ -858,6 +873,64 @@ impl<'a> Walker<'a> {
         }
         out.sort_unstable();
         out.dedup();
+    }
+
+    /// On a map with holes, the skeleton of every 2-cell by a query at its
+    /// point: Vis in ascending ids is boundary order only on a single ring
+    /// (sec. 3.9.2's update walks a simple polygon), so the walk of
+    /// [`Walker::walk`] is for maps without holes. No lower cell is found
+    /// early; [`Walker::lower`] queries each.
+    fn walk_by_queries(
+        &self,
+        corners: &[Option<[VertexId; 3]>],
+        progress: &mut dyn FnMut(usize),
+    ) -> Walked {
+        let arr = self.arr;
+        let faces: Vec<OnceLock<Compact>> =
+            (0..arr.face_count()).map(|_| OnceLock::new()).collect();
+        let hashes: Vec<AtomicU64> = (0..arr.face_count()).map(|_| AtomicU64::new(0)).collect();
+        let done = AtomicUsize::new(0);
+        for block in self.order.chunks(LOWER_BLOCK) {
+            block.par_iter().for_each(|&f| {
+                let c = corners[f].expect("a cell");
+                let sk = self.queried_skeleton(&crate::decomposition::centroid(arr, c));
+                hashes[f].store(sk.class_hash(self.edge_lines), AtomicOrdering::Relaxed);
+                if faces[f].set(sk).is_err() {
+                    unreachable!("each face is queried once");
+                }
+                done.fetch_add(1, AtomicOrdering::Relaxed);
+            });
+            progress(done.load(AtomicOrdering::Relaxed));
+        }
+        Walked {
+            faces,
+            hashes: hashes.into_iter().map(AtomicU64::into_inner).collect(),
+            early: Early {
+                face: vec![NONE; self.topo.sites.len()],
+                own: Vec::new(),
+            },
+        }
+    }
+
+    /// The compact skeleton at `q` by a query, in the skeleton's own order
+    /// (counter-clockwise from its origin, which is first): for maps with
+    /// holes, where [`Compact`]'s Vis is in this order rather than
+    /// ascending.
+    fn queried_skeleton(&self, q: &RatPoint) -> Compact {
+        let vp = self
+            .index
+            .visibility_polygon(q)
+            .unwrap_or_else(|e| panic!("no visibility polygon at the cell point {q}: {e}"));
+        let sk = Skeleton::of(self.map, &vp).unwrap_or_else(|e| panic!("no skeleton at {q}: {e}"));
+        let vis = sk.map_vertices().iter().map(|&m| m as u32);
+        let edges = sk.edges().iter().map(|e| match e {
+            SkeletonEdge::Full { .. } => FULL,
+            SkeletonEdge::Artificial { map_edge, .. } => *map_edge as u32,
+        });
+        Compact {
+            data: vis.chain(edges).collect(),
+            shift: 0,
+        }
     }
 
     /// Vis at a 2-cell's point by a query: the skeleton's map vertices.
@@ -990,7 +1063,7 @@ impl<'a> Walker<'a> {
         // Whether q lies left of map edge e.
         let left_of = |e: usize| match self.turns.as_ref().zip(eye.narrow()) {
             Some((turns, q)) => turns.left(e, q),
-            None => eye.orientation(v[e], v[next(e, n)]) == Orientation::CounterClockwise,
+            None => eye.orientation(v[e], v[self.map.next(e)]) == Orientation::CounterClockwise,
         };
         let e = if y == next(x, n) && k > 1 {
             return FULL;
@@ -1188,7 +1261,7 @@ fn breadth_first(arr: &Arrangement) -> Vec<FaceId> {
             for h in arr.face_cycle(f) {
                 if let Support::Rays(_) = arr.edge_support(h / 2) {
                     let other = arr.half_edge(h ^ 1).face;
-                    if other != arr.outer_face() && !seen[other] {
+                    if arr.is_cell(other) && !seen[other] {
                         seen[other] = true;
                         order.push(other);
                     }

@@ -6,9 +6,12 @@
 //! (Def 3.10). The boundary assignment of sec. 3.6 is computed beside it,
 //! when asked for.
 //!
-//! Maps without holes only, as the thesis's chapters 3–5 assume: the entry
-//! points panic on a map with holes ([`wai_map::Map::expect_no_holes`]); the
-//! command line refuses such a map with an error before it gets here.
+//! Maps with holes (sec. 6.4) are decomposed too: rays from the reflex
+//! vertices of the free space (hole vertices convex as vertices of their
+//! hole among them), the holes' interiors faces of the arrangement but not
+//! cells ([`Arrangement::is_cell`]), and each cell's skeleton by a query at
+//! its point instead of the walk of sec. 3.9.2, whose update assumes one
+//! ring.
 //!
 //! Its principal type is [`Decomposition`]: all of these stages for one
 //! map, with the cells in face order, an exact interior point of each, the

@@ -111,7 +111,6 @@ impl LineView {
     /// they fit it.
     pub(crate) fn new(map: &Map, small: Option<&SmallCoords>, from: usize, d: Vector) -> LineView {
         let v = map.vertices();
-        let n = v.len();
         let through = v[from];
         // By map vertex: `Greater` left of the line, `Less` right of it.
         let sides: Vec<Ordering> = match small {
@@ -124,7 +123,7 @@ impl LineView {
         let mut events: Vec<(Along, Event)> = Vec::new();
         for (i, &p) in v.iter().enumerate() {
             if sides[i] == Ordering::Equal {
-                let nb = [sides[(i + n - 1) % n], sides[(i + 1) % n]];
+                let nb = [sides[map.prev(i)], sides[map.next(i)]];
                 events.push((
                     position_along(p, d),
                     Event::Vertex {
@@ -134,7 +133,7 @@ impl LineView {
                     },
                 ));
             }
-            let j = (i + 1) % n;
+            let j = map.next(i);
             if sides[i] != Ordering::Equal && sides[j] != Ordering::Equal && sides[i] != sides[j] {
                 events.push((crossing_along(through, p, v[j], d), Event::Crossing));
             }
@@ -148,8 +147,8 @@ impl LineView {
         let backward = Dir::Small(-d);
         let inside = |z: u32, w: &Dir| {
             let z = z as usize;
-            let base = dir(v[z], v[(z + 1) % n]);
-            let last = dir(v[z], v[(z + n - 1) % n]);
+            let base = dir(v[z], v[map.next(z)]);
+            let last = dir(v[z], v[map.prev(z)]);
             // Strictly inside the interior angle, which runs
             // counter-clockwise from the edge to z + 1 to the edge to z − 1.
             angle_cmp(&base, &base, w) == Ordering::Less
@@ -159,12 +158,12 @@ impl LineView {
         for i in 0..events.len().saturating_sub(1) {
             let s = match (&events[i].1, &events[i + 1].1) {
                 (Event::Vertex { v: a, .. }, Event::Vertex { v: b, .. })
-                    if (*a as usize + 1) % n == *b as usize =>
+                    if map.next(*a as usize) == *b as usize =>
                 {
                     Stretch::Edge(Beside::Left)
                 }
                 (Event::Vertex { v: a, .. }, Event::Vertex { v: b, .. })
-                    if (*b as usize + 1) % n == *a as usize =>
+                    if map.next(*b as usize) == *a as usize =>
                 {
                     Stretch::Edge(Beside::Right)
                 }

@@ -1,6 +1,5 @@
 //! Visibility rays (Def 3.8), exactly.
 
-use crate::incremental::next;
 use crate::small::SmallCoords;
 use rayon::prelude::*;
 use rug::Integer;
@@ -274,13 +273,13 @@ pub fn group_by_line(rays: &[VisibilityRay]) -> BTreeMap<LineKey, Vec<usize>> {
 /// points in the relative interior of edges. A 76-vertex map with 54
 /// reflex vertices takes well under a millisecond (release build).
 pub fn visibility_rays(map: &Map) -> Vec<VisibilityRay> {
-    map.expect_no_holes("the visibility rays");
     let v = map.vertices();
     let n = v.len();
     let index = VisibilityIndex::new(map);
-    let small = SmallCoords::of(v);
+    let small = SmallCoords::of(map);
     let at = Vertices {
         v,
+        map,
         small: small.as_ref(),
     };
     // Each reflex vertex's rays on their own (in parallel), in order.
@@ -300,10 +299,24 @@ pub fn visibility_rays(map: &Map) -> Vec<VisibilityRay> {
 #[derive(Clone, Copy)]
 struct Vertices<'a> {
     v: &'a [Point],
+    /// For the rings: edge `k` runs from `k` to `map.next(k)`.
+    map: &'a Map,
     small: Option<&'a SmallCoords>,
 }
 
 impl Vertices<'_> {
+    /// The vertex after `k` along its ring.
+    #[inline]
+    fn next(&self, k: usize) -> usize {
+        self.map.next(k)
+    }
+
+    /// The vertex before `k` along its ring.
+    #[inline]
+    fn prev(&self, k: usize) -> usize {
+        self.map.prev(k)
+    }
+
     /// The orientation of vertices `(a, b, c)`: exact either way.
     #[inline]
     fn orientation(&self, a: usize, b: usize, c: usize) -> Orientation {
@@ -339,9 +352,8 @@ impl Vertices<'_> {
         match self.small {
             Some(s) => s.compare_crossings((j, a), k, b),
             None => {
-                let n = self.v.len();
                 let edge = |k: usize| {
-                    Line::new(self.v[k], self.v[next(k, n)]).expect("map vertices are distinct")
+                    Line::new(self.v[k], self.v[self.next(k)]).expect("map vertices are distinct")
                 };
                 compare_intersections_along(line, &edge(k), &edge(b))
                     .expect("crossing edges are not parallel to the ray")
@@ -359,9 +371,8 @@ fn rays_from(
     a: usize,
 ) -> Vec<VisibilityRay> {
     let v = at.v;
-    let n = v.len();
     let mut rays = Vec::new();
-    let (prev, next) = ((a + n - 1) % n, (a + 1) % n);
+    let (prev, next) = (at.prev(a), at.next(a));
     // The candidates: the vertices v_r sees (its own visibility
     // polygon, one query) and its neighbours. Each is still checked
     // below, so the query only narrows the search.
@@ -430,7 +441,7 @@ fn visible(at: Vertices<'_>, line: &Line, sides: &[Side], a: usize, j: usize) ->
                 at.orientation(k0, k1, a).into(),
             )
     };
-    !(0..n).any(|k| (sides[k] == Side::On && between(k)) || crosses(k, next(k, n)))
+    !(0..n).any(|k| (sides[k] == Side::On && between(k)) || crosses(k, at.next(k)))
 }
 
 /// For an edge `p → q` whose endpoints lie strictly on opposite sides of a
@@ -450,11 +461,11 @@ fn before_crossing(at: Vertices<'_>, p: usize, q: usize, side_q: Side, u: usize)
 fn shoot(at: Vertices<'_>, line: Line, sides: &[Side], a: usize, j: usize) -> VisibilityRay {
     let v = at.v;
     let n = v.len();
-    let edge_line = |k: usize| Line::new(v[k], v[(k + 1) % n]).expect("map vertices are distinct");
+    let edge_line = |k: usize| Line::new(v[k], v[at.next(k)]).expect("map vertices are distinct");
     // The nearest crossing of an edge's relative interior beyond v_r.
     let mut nearest: Option<usize> = None;
     for k in 0..n {
-        let k1 = (k + 1) % n;
+        let k1 = at.next(k);
         if !opposite(sides[k], sides[k1]) || !before_crossing(at, k, k1, sides[k1], a) {
             continue;
         }
@@ -471,7 +482,7 @@ fn shoot(at: Vertices<'_>, line: Line, sides: &[Side], a: usize, j: usize) -> Vi
     for (u, &s) in sides.iter().enumerate() {
         if s == Side::On
             && compare_along(&line, v[a], v[u]) == Ordering::Less
-            && nearest.is_none_or(|k| before_crossing(at, k, next(k, n), sides[next(k, n)], u))
+            && nearest.is_none_or(|k| before_crossing(at, k, at.next(k), sides[at.next(k)], u))
         {
             on_ray.push(u);
         }
@@ -480,7 +491,7 @@ fn shoot(at: Vertices<'_>, line: Line, sides: &[Side], a: usize, j: usize) -> Vi
     let mut grazed = Vec::new();
     let mut end = None;
     for u in on_ray {
-        let (sp, sn) = (sides[(u + n - 1) % n], sides[(u + 1) % n]);
+        let (sp, sn) = (sides[at.prev(u)], sides[at.next(u)]);
         if sp != Side::On && sp == sn {
             grazed.push(u); // (b) grazing: the ray continues
         } else {
@@ -500,7 +511,7 @@ fn shoot(at: Vertices<'_>, line: Line, sides: &[Side], a: usize, j: usize) -> Vi
             on_map: OnMap::Edge(k),
         }
     });
-    let (prev, next) = ((a + n - 1) % n, (a + 1) % n);
+    let (prev, next) = (at.prev(a), at.next(a));
     let side = match (sides[prev], sides[next]) {
         (Side::Left, Side::Left | Side::On) | (Side::On, Side::Left) => RaySide::Left,
         (Side::Right, Side::Right | Side::On) | (Side::On, Side::Right) => RaySide::Right,

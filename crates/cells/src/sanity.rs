@@ -7,7 +7,7 @@ use crate::arrangement::{
 use crate::eye::small_of;
 use rug::Rational;
 use std::cmp::Ordering;
-use wai_exact::{orientation_rat, Orientation, Point, RatPoint, Vector};
+use wai_exact::{orientation_rat, signed_area_twice, Orientation, Point, RatPoint, Vector};
 
 impl Arrangement {
     /// Check every invariant; the error names the first that fails.
@@ -15,11 +15,14 @@ impl Arrangement {
     /// Topology: twin(twin(h)) = h, next and prev inverse, origin(twin(h))
     /// = origin(next(h)), one face around each cycle, each face's cycle and
     /// each vertex's fan complete, Euler's V − E + F = 2 (the arrangement is
-    /// connected: every ray starts at a map vertex).
+    /// connected: every ray starts at a map vertex, and with holes the
+    /// holes' interiors count among the faces; see [`Arrangement`] for why
+    /// rays join every hole to the outer ring).
     ///
     /// Geometry: every edge lies on its support (a map edge, or every ray
-    /// covering it) in the support's direction; the outer face runs along
-    /// map edges with area −area(M); every cell is a convex polygon
+    /// covering it) in the support's direction; the outer face and each
+    /// hole's interior run along map edges, with their ring's area reversed;
+    /// every cell is a convex polygon
     /// (Thm 3.3a), counter-clockwise with positive area; the cells' areas sum
     /// to area(M) exactly; no vertex lies in an edge's relative interior; no
     /// two edges cross or overlap.
@@ -104,9 +107,8 @@ impl Arrangement {
     /// overflow ([`Geo`]).
     pub fn check_geometry(&self) -> Result<(), String> {
         let mv = self.map.vertices();
-        let n = mv.len();
         let geo = Geo::new(self);
-        let map_pt = |i: usize| Pt::Map(mv[i % n]);
+        let map_pt = |i: usize| Pt::Map(mv[i]);
         // Edges on their supports, in the support's direction.
         for (e, geom) in self.edges.iter().enumerate() {
             let (a, b) = (self.half_edges[2 * e].origin, self.dest(2 * e));
@@ -120,7 +122,7 @@ impl Arrangement {
             }
             match geom.support {
                 Support::MapEdge(i) => {
-                    let (p, q) = (map_pt(i), map_pt(i + 1));
+                    let (p, q) = (map_pt(i), map_pt(self.map.next(i)));
                     let l = geo.map_lines[i];
                     if !geo.on_segment(l, p, q, a) || !geo.on_segment(l, p, q, b) {
                         return Err(format!("edge {e}: off map edge {i}"));
@@ -144,29 +146,36 @@ impl Arrangement {
                 }
             }
         }
-        // The outer face: map edges only, area −area(M).
+        // The outer face and each hole's interior: map edges only, with the
+        // signed area of the ring they run along reversed (−area of the
+        // outer ring, +area of the hole).
         let points = self.points();
-        let outer = self.outer_face();
-        let outer_hs = self.face_half_edges(outer);
-        if let Some(h) = outer_hs
-            .iter()
-            .find(|&&h| !matches!(self.edges[h / 2].support, Support::MapEdge(_)))
-        {
-            return Err(format!("outer face: half-edge {h} is not on a map edge"));
-        }
-        let map_area = Rational::from(self.map.area_twice());
-        let ring: Vec<&RatPoint> = self
-            .face_vertices(outer)
-            .into_iter()
-            .map(|v| &points[v])
-            .collect();
-        if area_twice_rat(&ring) != -map_area {
-            return Err("outer face: area is not −area(M)".to_string());
+        let not_cells = std::iter::once(("outer face".to_string(), self.outer_face(), 0)).chain(
+            (0..self.map.hole_count()).map(|k| (format!("hole {k}"), self.hole_face(k), k + 1)),
+        );
+        for (name, face, ring) in not_cells {
+            if let Some(h) = self
+                .face_half_edges(face)
+                .iter()
+                .find(|&&h| !matches!(self.edges[h / 2].support, Support::MapEdge(_)))
+            {
+                return Err(format!("{name}: half-edge {h} is not on a map edge"));
+            }
+            let want = -Rational::from(signed_area_twice(self.map.ring(ring)));
+            let cycle: Vec<&RatPoint> = self
+                .face_vertices(face)
+                .into_iter()
+                .map(|v| &points[v])
+                .collect();
+            if area_twice_rat(&cycle) != want {
+                return Err(format!("{name}: area is not that of its ring, reversed"));
+            }
         }
         // Cells: convex, counter-clockwise, positive area. (That their
         // areas sum to area(M) needs no test: every half-edge lies on one
         // face and its twin runs the other way, so the signed areas of all
-        // faces sum to 0 and the cells' to minus the outer face's.)
+        // faces sum to 0, and the cells' to the outer ring's area minus the
+        // holes'.)
         for f in self.cells() {
             let hs = self.face_half_edges(f);
             let vs: Vec<usize> = hs.iter().map(|&h| self.half_edges[h].origin).collect();
@@ -380,10 +389,9 @@ impl<'a> Geo<'a> {
             })
             .collect();
         let mv = arr.map.vertices();
-        let n = mv.len();
-        let map_pt = |i: usize| Some([mv[i % n].x, mv[i % n].y, 1]);
-        let map_lines = (0..n)
-            .map(|i| line_with_bits(map_pt(i), map_pt(i + 1)))
+        let map_pt = |i: usize| Some([mv[i].x, mv[i].y, 1]);
+        let map_lines = (0..mv.len())
+            .map(|i| line_with_bits(map_pt(i), map_pt(arr.map.next(i))))
             .collect();
         let ray_ends: Vec<Option<[i128; 3]>> =
             arr.rays.iter().map(|r| small_of(&r.end.point)).collect();
@@ -669,10 +677,9 @@ mod tests {
                         }
                     }
                     let mv = map.vertices();
-                    let n = mv.len();
                     for v in 0..arr.vertex_count() {
-                        for i in 0..n {
-                            let (p, q) = (Pt::Map(mv[i]), Pt::Map(mv[(i + 1) % n]));
+                        for i in 0..mv.len() {
+                            let (p, q) = (Pt::Map(mv[i]), Pt::Map(mv[map.next(i)]));
                             let want = geo.on_closed_segment(p, q, Pt::Vertex(v));
                             assert_eq!(geo.on_segment(geo.map_lines[i], p, q, v), want);
                         }

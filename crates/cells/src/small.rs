@@ -7,7 +7,8 @@
 
 use crate::rays::VisibilityRay;
 use std::cmp::Ordering;
-use wai_exact::{Orientation, Point, Side, Vector};
+use wai_exact::{Orientation, Side, Vector};
+use wai_map::Map;
 use wai_visibility::OnMap;
 
 /// The bound of the `i64` paths.
@@ -18,8 +19,10 @@ use wai_visibility::OnMap;
 /// two differences) is below `2^63`, which an `i64` holds.
 pub(crate) const SMALL_BITS: u32 = 30;
 
-/// The map's vertex coordinates as `i64`s (all below `2^SMALL_BITS`).
-pub(crate) struct SmallCoords(Vec<[i64; 2]>);
+/// The map's vertex coordinates as `i64`s (all below `2^SMALL_BITS`), and
+/// each vertex's successor along its ring (edge `k` runs from `k` to
+/// `next[k]`; a map with holes has several rings).
+pub(crate) struct SmallCoords(Vec<[i64; 2]>, Vec<u32>);
 
 // The vector helpers below are the `i64` specialisation of
 // `wai_exact::Vector` (whose `cross`/`dot` run in `i128`): on maps below
@@ -54,12 +57,17 @@ fn sign_side(x: i64) -> Side {
 }
 
 impl SmallCoords {
-    /// The coordinates of `v`, if every one is below `2^SMALL_BITS`.
-    pub(crate) fn of(v: &[Point]) -> Option<SmallCoords> {
+    /// The coordinates of `map`'s vertices, if every one is below
+    /// `2^SMALL_BITS`.
+    pub(crate) fn of(map: &Map) -> Option<SmallCoords> {
+        let v = map.vertices();
         let fits = |c: i128| c.unsigned_abs() < 1 << SMALL_BITS;
-        v.iter()
-            .all(|p| fits(p.x) && fits(p.y))
-            .then(|| SmallCoords(v.iter().map(|p| [p.x as i64, p.y as i64]).collect()))
+        v.iter().all(|p| fits(p.x) && fits(p.y)).then(|| {
+            SmallCoords(
+                v.iter().map(|p| [p.x as i64, p.y as i64]).collect(),
+                (0..v.len()).map(|i| map.next(i) as u32).collect(),
+            )
+        })
     }
 
     /// The orientation of vertices `(a, b, c)`.
@@ -109,7 +117,7 @@ impl SmallCoords {
     /// must not be parallel to `d`.
     fn crossing(&self, p: [i64; 2], d: [i64; 2], k: usize) -> (i64, i64) {
         let s = &self.0;
-        let (e, f) = (s[k], sub(s[(k + 1) % s.len()], s[k]));
+        let (e, f) = (s[k], sub(s[self.1[k] as usize], s[k]));
         let (num, den) = (cross(sub(e, p), f), cross(d, f));
         if den < 0 {
             (-num, -den)
@@ -135,11 +143,10 @@ impl SmallCoords {
     /// The map's edges as [`EdgeTurns`].
     pub(crate) fn edge_turns(&self) -> EdgeTurns {
         let s = &self.0;
-        let n = s.len();
         EdgeTurns(
-            (0..n)
+            (0..s.len())
                 .map(|i| {
-                    let (a, d) = (s[i], sub(s[(i + 1) % n], s[i]));
+                    let (a, d) = (s[i], sub(s[self.1[i] as usize], s[i]));
                     [d[0], d[1], cross(d, a)]
                 })
                 .collect(),
@@ -243,7 +250,8 @@ mod tests {
             prop_assert_eq!(i128::from(cross(u, v)), bu.cross(bv));
             prop_assert_eq!(i128::from(dot(u, v)), bu.dot(bv));
             let pt = |p: [i64; 2]| Point::new(i128::from(p[0]), i128::from(p[1]));
-            let s = SmallCoords::of(&[pt(a), pt(b), pt(c)]).expect("below the bound");
+            // Three points, maybe collinear: no map, so built directly.
+            let s = SmallCoords(vec![a, b, c], vec![1, 2, 0]);
             prop_assert_eq!(s.orientation(0, 1, 2), orientation(pt(a), pt(b), pt(c)));
             let turns = s.turns_from(0, bu);
             prop_assert_eq!(turns[2], bu.cross_sign(bv));

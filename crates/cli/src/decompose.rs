@@ -2,7 +2,7 @@
 //! and a picture of the cells coloured by equivalence class.
 
 use crate::failure::{counted_bar, Failure};
-use crate::input::load;
+use crate::input::load_with_holes;
 use std::path::PathBuf;
 use wai_cells::{visibility_rays, Decomposition};
 use wai_render::{cells_svg, MapStyle};
@@ -28,7 +28,7 @@ pub struct Args {
 
 pub fn run(args: &Args) -> Result<(), Failure> {
     let (path, opts) = (&args.map, args);
-    let loaded = load(path, args.format)?;
+    let loaded = load_with_holes(path, args.format)?;
     let map = &loaded.map;
     // The time covers the whole decomposition, rays included.
     let start = std::time::Instant::now();

@@ -4,7 +4,7 @@
 //! on whether their witnesses see each other (Theorem 4.2).
 
 use crate::failure::{counted_bar, Failure};
-use crate::input::load;
+use crate::input::load_with_holes;
 use crate::vis::show;
 use std::path::{Path, PathBuf};
 use wai_cells::{Decomposition, LowerSite};
@@ -251,7 +251,7 @@ fn svg(map: &Map, r: &ClassReport, out: &Path) -> Result<(), Failure> {
 
 pub fn run(args: &Args) -> Result<(), Failure> {
     let opts = args;
-    let loaded = load(&args.map, args.format)?;
+    let loaded = load_with_holes(&args.map, args.format)?;
     let map = &loaded.map;
     let rays = wai_cells::visibility_rays(map);
     crate::budget::check_decomposition(map, &rays, &args.memory)?;

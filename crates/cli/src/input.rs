@@ -109,7 +109,7 @@ fn refuse_holes(path: &Path, loaded: &Loaded) -> Result<(), Failure> {
         .require_no_holes("this command")
         .map_err(|e| {
             Failure::invalid(format!(
-                "{}: {e} (the thesis's chapters 3–5 assume a map without holes; `wai info`, `wai render` and `wai vis` read maps with holes)",
+                "{}: {e} (the thesis's chapters 3–5 assume a map without holes; `wai info`, `render`, `vis`, `decompose`, `embeddings`, `preprocess`, `localize`, `scan`, `localize-scan` and `eval` read maps with holes)",
                 path.display()
             ))
         })
@@ -132,15 +132,13 @@ pub(crate) fn generated(path: &Path) -> Result<Option<wai_map::Map>, Failure> {
 /// The help line of a map argument.
 pub(crate) const MAP_HELP: &str = "Map file (JSON map format or GeoJSON; `-` reads standard input), or a generated map: `rooms:K`, `office:K[:SEED]`, `family:ID:P1,P2,…` (in metres)";
 
-/// [`load`] for bytes already read from `path` (named in messages).
+/// [`load_with_holes`] for bytes already read from `path` (named in messages).
 pub fn load_bytes(
     path: &Path,
     bytes: &[u8],
     read: impl Into<FormatArg>,
 ) -> Result<Loaded, Failure> {
-    let loaded = read_map(path, bytes, &read.into())?;
-    refuse_holes(path, &loaded)?;
-    Ok(loaded)
+    read_map(path, bytes, &read.into())
 }
 
 /// Parse, validate and normalise a map file's bytes, holes and all.

@@ -4,7 +4,7 @@
 use std::path::PathBuf;
 
 use crate::failure::Failure;
-use crate::input::load;
+use crate::input::load_with_holes;
 use crate::localize::preprocessed;
 
 #[derive(clap::Args, Debug)]
@@ -22,7 +22,7 @@ pub struct Args {
 
 pub fn run(args: &Args) -> Result<(), Failure> {
     let (path, out) = (&args.map, &args.out);
-    let loaded = load(path, args.format)?;
+    let loaded = load_with_holes(path, args.format)?;
     let loc = preprocessed(path, &loaded.map, &args.memory)?;
     let text = wai_localize::file::to_json(&loc);
     std::fs::write(out, &text).map_err(|e| Failure::io(format!("{}: {e}", out.display())))?;

@@ -10,7 +10,7 @@ use std::path::{Path, PathBuf};
 use serde_json::json;
 use wai_scan::{random_obstacles, simulate, Pose, Sensor};
 
-use crate::input::{load, Format};
+use crate::input::{load_with_holes, Format};
 use crate::Failure;
 
 #[derive(clap::Args, Debug)]
@@ -88,7 +88,7 @@ pub fn run(args: &Args) -> Result<(), Failure> {
             (m.map, m.units, m.units_assumed)
         }
         _ => {
-            let map = load(&args.map, Format::Auto)?.map;
+            let map = load_with_holes(&args.map, Format::Auto)?.map;
             let m = crate::scan_maps::in_metres(&args.map.display().to_string(), map, "auto")?;
             (m.map, m.units, m.assumed)
         }

@@ -13,7 +13,7 @@ use wai_map::Map;
 use wai_scan::units::{to_metres, LonLatFrame, Units};
 use wai_scan::Pose;
 
-use crate::input::{load, Format};
+use crate::input::{load_with_holes, Format};
 use crate::Failure;
 
 /// A map of an evaluation, in metres.
@@ -213,7 +213,7 @@ fn load_file(spec: &str, units: &str) -> Result<EvalMap, Failure> {
         Some((p, u)) if !Path::new(spec).exists() => (p, u),
         _ => (spec, units),
     };
-    let map = load(Path::new(path), Format::Auto)?.map;
+    let map = load_with_holes(Path::new(path), Format::Auto)?.map;
     let name = map.name().map_or_else(|| path.to_owned(), str::to_owned);
     let m = in_metres(path, map, units)?;
     let kind = if path.contains("westport") {

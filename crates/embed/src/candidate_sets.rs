@@ -49,9 +49,8 @@ impl CandidateSets {
         valid: impl IntoIterator<Item = (usize, Vec<Vec<usize>>)>,
     ) -> CandidateSets {
         let v = map.vertices();
-        let n = v.len();
         let least = |e: usize| {
-            let (a, b) = (v[e], v[(e + 1) % n]);
+            let (a, b) = (v[e], v[map.next(e)]);
             (a.x, a.y).min((b.x, b.y))
         };
         let mut embeddings = Vec::new();

@@ -67,21 +67,19 @@ pub struct Embedder<'a> {
 /// The embeddings of skeleton `key` in `map` (Def 3.11), by ascending
 /// map vertex h(v0). See [`Embedder::embeddings`].
 pub fn embeddings(map: &Map, key: &SkeletonKey) -> Vec<Embedding> {
-    map.expect_no_holes("the embeddings");
     Embedder::new(&VisibilityIndex::new(map)).embeddings(key)
 }
 
 impl<'a> Embedder<'a> {
     /// The embedder of the map of `index`.
     pub fn new(index: &'a VisibilityIndex<'a>) -> Embedder<'a> {
-        index.map().expect_no_holes("the embeddings");
         let map = index.map();
         let v = map.vertices();
         let n = v.len();
         let mut on_line: HashMap<LineLabel, Vec<usize>> = HashMap::default();
         let zero = Point::new(0, 0);
         for e in 0..n {
-            let label = LineLabel::through(v[e], v[(e + 1) % n], zero);
+            let label = LineLabel::through(v[e], v[map.next(e)], zero);
             on_line.entry(label).or_default().push(e);
         }
         Embedder {
@@ -114,8 +112,8 @@ impl<'a> Embedder<'a> {
     /// The embedding of `key` with h(v0) at map vertex `origin`, if
     /// conditions 1–3 of Def 3.11 hold there.
     pub fn embedding_at(&self, key: &SkeletonKey, origin: usize) -> Option<Embedding> {
-        let v = self.map.vertices();
-        let n = v.len();
+        let map = self.map;
+        let v = map.vertices();
         let o = v[origin];
         let k = key.offsets.len();
         let lands = |&(dx, dy): &(i128, i128)| {
@@ -133,11 +131,11 @@ impl<'a> Embedder<'a> {
         for i in 0..k {
             let j = (i + 1) % k;
             let adjacent =
-                vertices[j] == (vertices[i] + 1) % n || vertices[i] == (vertices[j] + 1) % n;
+                vertices[j] == map.next(vertices[i]) || vertices[i] == map.next(vertices[j]);
             if full(i) != adjacent {
                 return None;
             }
-            for m in [(vertices[i] + 1) % n, (vertices[i] + n - 1) % n] {
+            for m in [map.next(vertices[i]), map.prev(vertices[i])] {
                 if let Some(j) = image(m) {
                     let joined = (j == (i + 1) % k && full(i)) || (i == (j + 1) % k && full(j));
                     if !joined {

@@ -36,8 +36,7 @@ impl EdgeSight {
     /// (`VisibilityIndex::vertex_view(y)`).
     pub fn of(map: &Map, view: &[(usize, usize)], y: usize, e: usize) -> EdgeSight {
         let v = map.vertices();
-        let n = v.len();
-        let (e0, e1) = (e, (e + 1) % n);
+        let (e0, e1) = (e, map.next(e));
         let f = diff(v[e1], v[e0]);
         // Where the ray from y in direction d meets the line of e, as a
         // position along e: y + s·d = e0 + t·f gives
@@ -56,7 +55,7 @@ impl EdgeSight {
             if reached != e {
                 continue;
             }
-            let hi = view.get(i + 1).map_or((y + n - 1) % n, |s| s.0);
+            let hi = view.get(i + 1).map_or(map.prev(y), |s| s.0);
             let (a, b) = (at(diff(v[lo], v[y])), at(diff(v[hi], v[y])));
             let (a, b) = if a <= b { (a, b) } else { (b, a) };
             // Every ray of the open sector meets e, so its ends meet the
@@ -67,7 +66,7 @@ impl EdgeSight {
             }
         }
         let mut points = Vec::new();
-        let seen_vertex = |u: usize| u != (y + 1) % n && view.iter().any(|&(lo, _)| lo == u);
+        let seen_vertex = |u: usize| u != map.next(y) && view.iter().any(|&(lo, _)| lo == u);
         for (u, t) in [(e0, 0), (e1, 1)] {
             if u == y || seen_vertex(u) {
                 points.push(Rational::from(t));

@@ -76,9 +76,8 @@ fn seen_between<'v>(
     q: &RatPoint,
 ) -> usize {
     let v = map.vertices();
-    let n = v.len();
-    let left_of = |e: usize| strictly_left(v[e], v[(e + 1) % n], q);
-    let before_y = (y + n - 1) % n;
+    let left_of = |e: usize| strictly_left(v[e], v[map.next(e)], q);
+    let before_y = map.prev(y);
     if left_of(x) {
         x
     } else if left_of(before_y) {

@@ -8,7 +8,7 @@
 //! # Invariant
 //! A file that was edited or damaged is refused, never read as if it were
 //! whole: it carries SHA-256 digests of its map (`digest.map`: the scale and
-//! the vertices) and of its whole content (`digest.content`: every field
+//! the vertices, and where each hole starts) and of its whole content (`digest.content`: every field
 //! but the digests, as written), and loading recomputes both; then it
 //! checks the structure against the map — every index in range, each
 //! class's skeleton embedded at each item's origin onto map vertices, every
@@ -18,7 +18,7 @@ use crate::overlay::{CellSite, ClassOverlay, Item, Line, Shape, Slab};
 use crate::Localizer;
 use rug::{Integer, Rational};
 use serde::{Deserialize, Serialize};
-use wai_exact::{locate_rat, Containment, Point, RatPoint};
+use wai_exact::{Containment, Point, RatPoint};
 use wai_map::digest::sha256;
 use wai_map::Map;
 use wai_visibility::{LineLabel, SkeletonKey};
@@ -77,6 +77,10 @@ struct Body {
     name: Option<String>,
     scale: String,
     vertices: Vec<[String; 2]>,
+    /// Where each hole's ring starts in `vertices` (absent for a map
+    /// without holes, so such files are as before).
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    hole_starts: Vec<usize>,
     classes: Vec<ClassDto>,
 }
 
@@ -84,17 +88,21 @@ impl Digests {
     /// The digests of `body`, as the writer seals it.
     fn of(body: &Body) -> Digests {
         Digests {
-            map: map_digest(&body.scale, &body.vertices),
+            map: map_digest(&body.scale, &body.vertices, &body.hole_starts),
             content: content_digest(body),
         }
     }
 }
 
-/// The map's digest: its scale and vertices, one per line.
-fn map_digest(scale: &str, vertices: &[[String; 2]]) -> String {
+/// The map's digest: its scale and vertices, one per line, then where
+/// each hole starts (nothing for a map without holes).
+fn map_digest(scale: &str, vertices: &[[String; 2]], hole_starts: &[usize]) -> String {
     let mut text = format!("{scale}\n");
     for [x, y] in vertices {
         text.push_str(&format!("{x} {y}\n"));
+    }
+    for s in hole_starts {
+        text.push_str(&format!("hole at {s}\n"));
     }
     sha256(text.as_bytes())
 }
@@ -226,6 +234,9 @@ pub fn to_json(loc: &Localizer) -> String {
             .iter()
             .map(|p| [p.x.to_string(), p.y.to_string()])
             .collect(),
+        hole_starts: (1..=loc.map.hole_count())
+            .map(|k| loc.map.ring_range(k).start)
+            .collect(),
         classes,
     };
     let dto = FileDto {
@@ -276,8 +287,19 @@ pub fn from_json(bytes: &[u8]) -> Result<Localizer, FileError> {
     if scale <= 0 {
         return Err(FileError::Number(dto.scale));
     }
-    let (mut map, norm) =
-        Map::from_scaled_ring(ring.clone(), scale).map_err(|e| FileError::Map(e.to_string()))?;
+    // The rings: the outer one, then each hole from its start.
+    let mut bounds = vec![0];
+    bounds.extend(dto.hole_starts.iter().copied());
+    bounds.push(ring.len());
+    if bounds.windows(2).any(|w| w[0] >= w[1]) {
+        return Err(FileError::Structure(
+            "hole starts are not ascending positions inside the vertices".into(),
+        ));
+    }
+    let mut rings = bounds.windows(2).map(|w| ring[w[0]..w[1]].to_vec());
+    let outer = rings.next().expect("at least one ring");
+    let (mut map, norm) = Map::from_scaled_rings(outer, rings.collect(), scale)
+        .map_err(|e| FileError::Map(e.to_string()))?;
     if map.vertices() != ring.as_slice() || !norm.is_identity() {
         return Err(FileError::Map(
             "the stored vertices are not in normal form".into(),
@@ -344,7 +366,7 @@ pub fn from_json(bytes: &[u8]) -> Result<Localizer, FileError> {
             // moved back, every point lies in the closed map.
             if let Some(p) = pts
                 .iter()
-                .find(|p| locate_rat(v, &crate::shifted(p, o, 1)) == Containment::Outside)
+                .find(|p| map.locate(&crate::shifted(p, o, 1)) == Containment::Outside)
             {
                 return Err(bad(&format!(
                     "an item's point {p}, at origin {}, lies outside the map",

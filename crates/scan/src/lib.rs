@@ -100,7 +100,7 @@ use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 use rug::Rational;
 use serde_json::{json, Value};
-use wai_exact::{locate_rat, Containment, RatPoint};
+use wai_exact::{Containment, RatPoint};
 use wai_map::Map;
 
 /// Where the robot is and where it looks: a position in the map's input
@@ -121,7 +121,7 @@ impl Pose {
         }
         let exact = |v: f64| Rational::from_f64(v).expect("finite") * map.scale();
         let p = RatPoint::from_rationals(exact(self.x), exact(self.y));
-        match locate_rat(map.vertices(), &p) {
+        match map.locate(&p) {
             Containment::Inside => Ok(()),
             Containment::OnBoundary => Err(ScanError::OnBoundary(*self)),
             Containment::Outside => Err(ScanError::Outside(*self)),
@@ -274,7 +274,7 @@ pub(crate) fn walls(map: &Map) -> Vec<[(f64, f64); 2]> {
     let v = map.vertices();
     (0..v.len())
         .map(|i| {
-            let (a, b) = (v[i], v[(i + 1) % v.len()]);
+            let (a, b) = (v[i], v[map.next(i)]);
             [
                 (a.x as f64 / scale, a.y as f64 / scale),
                 (b.x as f64 / scale, b.y as f64 / scale),

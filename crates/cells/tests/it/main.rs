@@ -9,6 +9,7 @@ mod common;
 mod datasets;
 mod decomposition;
 mod hand;
+mod holes;
 mod incremental;
 mod laws;
 mod snapshots;

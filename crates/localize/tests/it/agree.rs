@@ -42,7 +42,7 @@ pub fn viewpoints(d: &Decomposition<'_>, random: usize, seed: u64) -> Vec<RatPoi
         let x = rng.random_range(lo.x * w..=hi.x * w);
         let y = rng.random_range(lo.y * w..=hi.y * w);
         let p = RatPoint::from_i128(x, y, w).expect("w > 0");
-        if wai_exact::locate_rat(map.vertices(), &p) == Containment::Inside {
+        if map.locate(&p) == Containment::Inside {
             pts.push(p);
             added += 1;
         }
@@ -337,4 +337,73 @@ fn degenerate_point_location_equals_testing_every_cell() {
     }
     eprintln!("{checked} points located, {degenerate} on slab lines or pieces");
     assert!(degenerate > 10_000, "{degenerate}");
+}
+
+/// Maps with holes (sec. 6.4): the localizer against the brute force at
+/// every cell of every dimension and at random points of the free space
+/// (the one-shot query assumes no holes, [`oracle::one_shot`]).
+#[test]
+fn localizer_agrees_with_brute_force_on_maps_with_holes() {
+    let mut total = Tally::default();
+    for kind in wai_gen::HOLED_KINDS {
+        for seed in 0..8 {
+            let map = wai_gen::random_with_holes(
+                kind.id,
+                8 + 2 * (seed as usize % 3),
+                1 + seed as usize % 3,
+                seed,
+            )
+            .unwrap();
+            assert!(map.has_holes());
+            let t = check_map(&map, 40, seed);
+            total.queries += t.queries;
+            total.answers += t.answers;
+            total.max_answers = total.max_answers.max(t.max_answers);
+            total.on_lower += t.on_lower;
+        }
+    }
+    // Two identical rooms off a corridor, each with a pillar: from most of
+    // a room the other room looks the same (several answers).
+    let pts = |v: &[(i128, i128)]| {
+        v.iter()
+            .map(|&(x, y)| wai_exact::Point::new(x, y))
+            .collect::<Vec<_>>()
+    };
+    let outer = pts(&[
+        (0, 0),
+        (40, 0),
+        (40, 4),
+        (29, 4),
+        (29, 5),
+        (32, 5),
+        (32, 15),
+        (24, 15),
+        (24, 5),
+        (27, 5),
+        (27, 4),
+        (9, 4),
+        (9, 5),
+        (12, 5),
+        (12, 15),
+        (4, 15),
+        (4, 5),
+        (7, 5),
+        (7, 4),
+        (0, 4),
+    ]);
+    let pillar = |x: i128| pts(&[(x, 10), (x + 1, 10), (x + 1, 11), (x, 11)]);
+    let (rooms, _) = Map::from_rings(outer, vec![pillar(9), pillar(29)]).unwrap();
+    let t = check_map(&rooms, 200, 1);
+    assert!(t.max_answers >= 2, "two rooms with pillars: {t:?}");
+    total.queries += t.queries;
+    total.answers += t.answers;
+    total.max_answers = total.max_answers.max(t.max_answers);
+    total.on_lower += t.on_lower;
+    eprintln!("maps with holes: {total:?}");
+    assert!(total.queries >= 10_000, "{} queries", total.queries);
+    assert!(
+        total.on_lower > 1000,
+        "points on 1- and 0-cells were examined"
+    );
+    assert!(total.max_answers >= 2, "some query has several answers");
 }
