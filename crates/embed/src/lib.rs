@@ -8,9 +8,10 @@
 //! (condition 3). [`embeddings`] finds every such placement of a
 //! [`wai_visibility::SkeletonKey`] in a map, exactly.
 //!
-//! Maps without holes only, as the thesis's chapters 3–5 assume: the entry
-//! points panic on a map with holes ([`wai_map::Map::expect_no_holes`]); the
-//! command line refuses such a map with an error before it gets here.
+//! Maps with holes (sec. 6.4) are embedded too: map edges and neighbours
+//! follow each vertex's ring ([`wai_map::Map::next`]). The mutual-visibility
+//! test of Theorem 4.2 (module `mutual`) still assumes one ring and panics on a
+//! map with holes ([`wai_map::Map::expect_no_holes`]).
 //!
 //! Seeing follows sec. 2.2 as the rest of the workspace reads it: two
 //! points see each other when the closed segment between them meets the
