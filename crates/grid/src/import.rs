@@ -194,9 +194,7 @@ pub fn import_parts(
     if let Some(t) = &options.simplify {
         let t_cells = Rational::from(t / res);
         let t2 = Rational::from(&t_cells * &t_cells);
-        for ring in &mut rings {
-            *ring = simplify::ring(ring, &t2);
-        }
+        rings = simplify::rings(&rings, &t2);
     }
     let kept: usize = rings.iter().map(Vec::len).sum();
     // Grid corner (c, r) is at origin + res · (c, r): integers over the

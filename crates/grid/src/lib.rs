@@ -20,7 +20,8 @@
 //!    boundary traced along cell edges: the outer ring and one hole per
 //!    enclosed obstacle;
 //! 5. [`simplify`] (optional): vertices dropped while the boundary stays
-//!    within a stated tolerance, the map validated again.
+//!    within a stated tolerance and no two rings (or two parts of one)
+//!    are simplified into each other, the map validated again.
 //!
 //! Every step says what it changed in the [`Report`].
 
