@@ -4,10 +4,10 @@
 //! where the robot can be (the answer set A, Def 3.2), each with the
 //! embedding that gives it.
 //!
-//! Maps with holes (sec. 6.4) are localized too, and checked against the
-//! brute force; the one-shot query ([`oracle::one_shot`]) rests on P ⊆ M
-//! following from ∂P ⊆ M, which a pillar inside P breaks, and panics on a
-//! map with holes ([`wai_map::Map::expect_no_holes`]).
+//! Maps with holes (sec. 6.4) are localized too, and checked against both
+//! oracles; the one-shot query ([`oracle::one_shot`]) then also asks that
+//! no hole lie inside the placed polygon (∂P ⊆ M gives P ⊆ M only without
+//! holes).
 //!
 //! - [`RobotView`]: V checked to be a visibility polygon (star-shaped from
 //!   the robot, winding once) and its skeleton V* computed from V alone.

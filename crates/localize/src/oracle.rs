@@ -58,10 +58,9 @@ pub struct CrossCheck {
     pub one_shot_sweeps: usize,
 }
 
-/// Localize the view of map point `p` by the localizer and both oracles
-/// (the brute force alone on a map with holes, see [`one_shot`]): the
-/// skeleton formed from V alone must be the map-side one (Def 3.7), the
-/// answer must contain `p`, and the answer sets must be equal.
+/// Localize the view of map point `p` by the localizer and both oracles:
+/// the skeleton formed from V alone must be the map-side one (Def 3.7),
+/// the answer must contain `p`, and the three answer sets must be equal.
 /// `Err` says what differs.
 pub fn cross_check(
     loc: &Localizer,
@@ -93,26 +92,19 @@ pub fn cross_check(
             brute.len()
         ));
     }
-    // The one-shot query's argument that ∂P ⊆ M gives P ⊆ M needs a map
-    // without holes (a pillar could stand inside P): on a map with holes
-    // the brute force alone is the oracle.
-    let mut sweeps = 0;
-    if !index.map().has_holes() {
-        let one_shot = one_shot(index.map(), &view);
-        if positions != one_shot.positions {
-            return Err(format!(
-                "localizer {} answers, one-shot {}",
-                positions.len(),
-                one_shot.positions.len()
-            ));
-        }
-        sweeps = one_shot.sweeps;
+    let one_shot = one_shot(index.map(), &view);
+    if positions != one_shot.positions {
+        return Err(format!(
+            "localizer {} answers, one-shot {}",
+            positions.len(),
+            one_shot.positions.len()
+        ));
     }
     Ok(CrossCheck {
         view,
         skeleton,
         answer,
-        one_shot_sweeps: sweeps,
+        one_shot_sweeps: one_shot.sweeps,
     })
 }
 
@@ -153,12 +145,12 @@ enum Cone {
 }
 
 /// Where the direction `d` (homogeneous numerators, any positive scale)
-/// goes from map vertex `a` of the counter-clockwise `ring`: the interior
-/// near `a` is the cone turning counter-clockwise from the edge to `a + 1`
-/// to the edge to `a − 1`.
-fn cone(ring: &[Point], a: usize, d: &BigVector) -> Cone {
-    let n = ring.len();
-    let (p, v, q) = (ring[(a + n - 1) % n], ring[a], ring[(a + 1) % n]);
+/// goes from map vertex `a`: the interior near `a` is the cone turning
+/// counter-clockwise from the edge to the next vertex of its ring to the
+/// edge to the previous one.
+fn cone(map: &Map, a: usize, d: &BigVector) -> Cone {
+    let ring = map.vertices();
+    let (p, v, q) = (ring[map.prev(a)], ring[a], ring[map.next(a)]);
     let (out, back) = ((q - v).to_big(), (p - v).to_big());
     let (s1, s2) = (out.cross_sign(d), back.cross_sign(d).reverse());
     let parallel =
@@ -203,7 +195,10 @@ pub struct OneShot {
 ///    exit of the ray from a in its direction, on the side where P lies
 ///    ([`RayExits`]).
 ///
-/// Then ∂P lies in M, so P ⊆ M (M has no holes) and q sees all of P; and
+/// Then ∂P lies in M, so P ⊆ M when M has no holes, and on a map with
+/// holes when no hole lies inside P (5: a point inside each hole is not
+/// inside P, since a hole meets ∂P ⊆ M in boundary points only); q sees all
+/// of P; and
 /// every ray from q in a direction through no vertex of P leaves M's
 /// interior where it leaves P, so V_q = P (both are closures of what q
 /// sees). Conversely V_q = P satisfies all four. Rays that run along walls,
@@ -217,7 +212,6 @@ pub struct OneShot {
 /// placement reaches test 4, and once per direction: O(n + r·m + s·n log n)
 /// for s spurious edges, O(mn log n) at worst.
 pub fn one_shot(map: &Map, v: &RobotView) -> OneShot {
-    map.expect_no_holes("the brute-force localization oracle");
     let mut out = OneShot {
         positions: Vec::new(),
         sweeps: 0,
@@ -226,7 +220,7 @@ pub fn one_shot(map: &Map, v: &RobotView) -> OneShot {
         return out;
     };
     let ring = map.vertices();
-    let n = ring.len();
+    let inside_holes = hole_points(map);
     let at: HashMap<Point, usize> = ring.iter().enumerate().map(|(i, &p)| (p, i)).collect();
     let verts = v.vertices();
     let m = verts.len();
@@ -280,9 +274,9 @@ pub fn one_shot(map: &Map, v: &RobotView) -> OneShot {
                 continue;
             }
             let ok = match (spurious[i], spurious[j]) {
-                (false, false) => idx[j] == (idx[i] + 1) % n,
-                (false, true) => on_edge(ring, idx[i], &place(&rel[j])),
-                (true, false) => on_edge(ring, (idx[j] + n - 1) % n, &place(&rel[i])),
+                (false, false) => idx[j] == map.next(idx[i]),
+                (false, true) => on_edge(map, idx[i], &place(&rel[j])),
+                (true, false) => on_edge(map, map.prev(idx[j]), &place(&rel[i])),
                 (true, true) => true,
             };
             if !ok {
@@ -297,7 +291,7 @@ pub fn one_shot(map: &Map, v: &RobotView) -> OneShot {
                 continue;
             }
             let d = BigVector::new(verts[i].hx().clone(), verts[i].hy().clone());
-            if cone(ring, idx[i], &d) != Cone::Outside {
+            if cone(map, idx[i], &d) != Cone::Outside {
                 continue 'placement;
             }
         }
@@ -311,7 +305,7 @@ pub fn one_shot(map: &Map, v: &RobotView) -> OneShot {
             let table = tables[k].get_or_insert_with(|| {
                 out.sweeps += 1;
                 let ((dx, dy), side) = &rays[k];
-                RayExits::new(ring, (dx, dy), *side)
+                RayExits::of_map(map, (dx, dy), *side)
             });
             let exit = table.exit(idx[near_of[far]]);
             let s = place(&rel[far]);
@@ -320,7 +314,7 @@ pub fn one_shot(map: &Map, v: &RobotView) -> OneShot {
                 // s lies on the ray beyond its map vertex, which meets the
                 // line of the edge once.
                 Exit::Edge(e) => {
-                    let (a, b) = (RatPoint::from(ring[e]), RatPoint::from(ring[(e + 1) % n]));
+                    let (a, b) = (RatPoint::from(ring[e]), RatPoint::from(ring[map.next(e)]));
                     orientation_rat(&a, &b, &s) == Orientation::Collinear
                 }
             };
@@ -338,13 +332,20 @@ pub fn one_shot(map: &Map, v: &RobotView) -> OneShot {
             }
             let edges = match exit_at[i] {
                 Exit::Edge(e) => [e, e],
-                Exit::Vertex(b) => [b, (b + n - 1) % n],
+                Exit::Vertex(b) => [b, map.prev(b)],
             };
             let (s1, s2) = (place(&rel[i]), place(&rel[j]));
             let on_one = edges.iter().any(|&e| {
-                on_edge(ring, e, &s1) && on_edge(ring, e, &s2) && same_way(ring, e, &s1, &s2)
+                on_edge(map, e, &s1) && on_edge(map, e, &s2) && same_way(map, e, &s1, &s2)
             });
             if !on_one {
+                continue 'placement;
+            }
+        }
+        // 5. No hole inside P.
+        if !inside_holes.is_empty() {
+            let p: Vec<RatPoint> = rel.iter().map(place).collect();
+            if inside_holes.iter().any(|h| strictly_inside(&p, h)) {
                 continue 'placement;
             }
         }
@@ -360,9 +361,80 @@ fn primitive(p: &RatPoint) -> (Integer, Integer) {
     (Integer::from(p.hx() / &g), Integer::from(p.hy() / &g))
 }
 
+/// A point strictly inside each hole of `map`: for the hole's least vertex
+/// v (a convex corner of the hole) with neighbours u and w, the centroid of
+/// u v w if no other vertex of the hole lies in that closed triangle, else
+/// the midpoint of v and the vertex in it farthest from the line u w
+/// (a diagonal of the hole).
+fn hole_points(map: &Map) -> Vec<RatPoint> {
+    let v = map.vertices();
+    (1..=map.hole_count())
+        .map(|k| {
+            let range = map.ring_range(k);
+            let c = range
+                .clone()
+                .min_by_key(|&i| (v[i].x, v[i].y))
+                .expect("a ring");
+            let (u, w) = (map.prev(c), map.next(c));
+            let (pu, pc, pw) = (v[u], v[c], v[w]);
+            let in_triangle = |x: Point| {
+                use wai_exact::orientation as o;
+                let s = [o(pu, pc, x), o(pc, pw, x), o(pw, pu, x)];
+                let turn = o(pu, pc, pw);
+                s.iter().all(|&t| t == turn || t == Orientation::Collinear)
+            };
+            let far = range
+                .filter(|&i| i != u && i != c && i != w && in_triangle(v[i]))
+                .max_by_key(|&i| (v[w] - v[u]).to_big().cross(&(v[i] - v[u]).to_big()).abs());
+            match far {
+                Some(f) => RatPoint::midpoint(&RatPoint::from(pc), &RatPoint::from(v[f])),
+                None => {
+                    let three = |a: i128, b: i128, c: i128| Integer::from(a) + b + c;
+                    RatPoint::new(
+                        three(pu.x, pc.x, pw.x),
+                        three(pu.y, pc.y, pw.y),
+                        Integer::from(3),
+                    )
+                    .expect("w > 0")
+                }
+            }
+        })
+        .collect()
+}
+
+/// Whether `x` lies strictly inside the polygon `p` (rational vertices,
+/// any simple polygon): the crossing number, exactly.
+fn strictly_inside(p: &[RatPoint], x: &RatPoint) -> bool {
+    // a.y compared with x.y, through the positive denominators.
+    let above = |a: &RatPoint| {
+        (Integer::from(a.hy() * x.hw()) - Integer::from(x.hy() * a.hw())).cmp0()
+            == Ordering::Greater
+    };
+    let m = p.len();
+    let mut inside = false;
+    for i in 0..m {
+        let (a, b) = (&p[i], &p[(i + 1) % m]);
+        let o = orientation_rat(a, b, x);
+        if o == Orientation::Collinear {
+            let (d1, d2) = (x.sub(a), b.sub(x));
+            let e = b.sub(a);
+            if d1.dot_sign(&e) != Ordering::Less && d2.dot_sign(&e) != Ordering::Less {
+                return false; // on the boundary
+            }
+        }
+        let (aa, ba) = (above(a), above(b));
+        // An upward edge crosses x's rightward ray when x lies left of it.
+        if aa != ba && (o == Orientation::CounterClockwise) == ba {
+            inside = !inside;
+        }
+    }
+    inside
+}
+
 /// Whether `p` lies on the closed map edge `e`.
-fn on_edge(ring: &[Point], e: usize, p: &RatPoint) -> bool {
-    let (a, b) = (ring[e], ring[(e + 1) % ring.len()]);
+fn on_edge(map: &Map, e: usize, p: &RatPoint) -> bool {
+    let ring = map.vertices();
+    let (a, b) = (ring[e], ring[map.next(e)]);
     let (a, b) = (RatPoint::from(a), RatPoint::from(b));
     if orientation_rat(&a, &b, p) != Orientation::Collinear {
         return false;
@@ -374,8 +446,9 @@ fn on_edge(ring: &[Point], e: usize, p: &RatPoint) -> bool {
 }
 
 /// Whether s1 → s2 runs the way of map edge `e`.
-fn same_way(ring: &[Point], e: usize, s1: &RatPoint, s2: &RatPoint) -> bool {
-    let (a, b) = (ring[e], ring[(e + 1) % ring.len()]);
+fn same_way(map: &Map, e: usize, s1: &RatPoint, s2: &RatPoint) -> bool {
+    let ring = map.vertices();
+    let (a, b) = (ring[e], ring[map.next(e)]);
     let d = s2.sub(s1);
     (Integer::from(d.hx() * (b.x - a.x)) + Integer::from(d.hy() * (b.y - a.y))).cmp0()
         == Ordering::Greater

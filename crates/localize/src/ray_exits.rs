@@ -43,7 +43,7 @@ use wai_exact::Point;
 pub enum Exit {
     /// At map vertex `b` (`b` may be the ray's own start: it leaves at once).
     Vertex(usize),
-    /// In the interior of map edge `e` (from vertex `e` to `e + 1`).
+    /// In the interior of map edge `e` (from vertex `e` to the next vertex of its ring).
     Edge(usize),
 }
 
@@ -67,13 +67,33 @@ impl RayExits {
     /// The exits in direction `d` (not zero), on side `side`, from every
     /// vertex of the counter-clockwise simple polygon `ring`.
     pub fn new(ring: &[Point], d: (&Integer, &Integer), side: Side) -> RayExits {
+        let n = ring.len();
+        let next: Vec<usize> = (0..n).map(|i| (i + 1) % n).collect();
+        RayExits::of_rings(ring, &next, d, side)
+    }
+
+    /// [`RayExits::new`] for every vertex of a map, holes and all: the
+    /// edges of every ring, the free space on their left. The sweep needs
+    /// only that no two edges cross, which holds for a map with holes too.
+    pub fn of_map(map: &wai_map::Map, d: (&Integer, &Integer), side: Side) -> RayExits {
+        let next: Vec<usize> = (0..map.n()).map(|i| map.next(i)).collect();
+        RayExits::of_rings(map.vertices(), &next, d, side)
+    }
+
+    /// The exits over the edges `i → next[i]` of `points`.
+    fn of_rings(points: &[Point], next: &[usize], d: (&Integer, &Integer), side: Side) -> RayExits {
         assert!(
             d.0.cmp0() != Ordering::Equal || d.1.cmp0() != Ordering::Equal,
             "a direction is not zero"
         );
-        let exits = match rotate_small(ring, d) {
-            Some(rotated) => sweep(&rotated, side),
-            None => sweep(&rotate_big(ring, d), side),
+        let mut prev = vec![0; next.len()];
+        for (i, &j) in next.iter().enumerate() {
+            prev[j] = i;
+        }
+        let links = Links { next, prev: &prev };
+        let exits = match rotate_small(points, d) {
+            Some(rotated) => sweep(&rotated, &links, side),
+            None => sweep(&rotate_big(points, d), &links, side),
         };
         RayExits { exits }
     }
@@ -82,6 +102,12 @@ impl RayExits {
     pub fn exit(&self, a: usize) -> Exit {
         self.exits[a]
     }
+}
+
+/// Each vertex's neighbours along its ring.
+struct Links<'a> {
+    next: &'a [usize],
+    prev: &'a [usize],
 }
 
 /// (u, w) of every vertex in `i128`, if each is below 2^126 in magnitude.
@@ -193,12 +219,11 @@ impl<T: Coord> Eq for Key<'_, T> {}
 /// edge back to the edge out, less than a half-plane) meets the
 /// half-plane: when an edge points strictly into it, or the wedge holds up
 /// or down turned towards it.
-fn blocks<T: Coord>(r: &[[T; 2]], b: usize, convex: bool, side: Side) -> bool {
+fn blocks<T: Coord>(r: &[[T; 2]], links: &Links<'_>, b: usize, convex: bool, side: Side) -> bool {
     if convex {
         return true;
     }
-    let n = r.len();
-    let (prev, v, next) = (&r[(b + n - 1) % n], &r[b], &r[(b + 1) % n]);
+    let (prev, v, next) = (&r[links.prev[b]], &r[b], &r[links.next[b]]);
     // The side as the sign of u: left of up is −u.
     let s = match side {
         Side::Left => Ordering::Less,
@@ -229,11 +254,11 @@ fn blocks<T: Coord>(r: &[[T; 2]], b: usize, convex: bool, side: Side) -> bool {
     in_wedge(true) || in_wedge(false)
 }
 
-fn sweep<T: Coord>(r: &[[T; 2]], side: Side) -> Vec<Exit> {
+fn sweep<T: Coord>(r: &[[T; 2]], links: &Links<'_>, side: Side) -> Vec<Exit> {
     let n = r.len();
     let convex: Vec<bool> = (0..n)
         .map(|i| {
-            let (p, v, q) = (&r[(i + n - 1) % n], &r[i], &r[(i + 1) % n]);
+            let (p, v, q) = (&r[links.prev[i]], &r[i], &r[links.next[i]]);
             T::orient(p, v, q) == Ordering::Greater
         })
         .collect();
@@ -241,7 +266,7 @@ fn sweep<T: Coord>(r: &[[T; 2]], side: Side) -> Vec<Exit> {
     order.sort_by(|&a, &b| r[a].cmp(&r[b]));
     // The edge from vertex e to e + 1, left end first, if not vertical.
     let edge_key = |e: usize| {
-        let (a, b) = (&r[e], &r[(e + 1) % n]);
+        let (a, b) = (&r[e], &r[links.next[e]]);
         match a[0].cmp(&b[0]) {
             Ordering::Less => Some(Key {
                 p: a,
@@ -269,7 +294,7 @@ fn sweep<T: Coord>(r: &[[T; 2]], side: Side) -> Vec<Exit> {
         let group = &order[start..end];
         // Edges ending on this line stop crossing it properly.
         for &v in group {
-            for e in [(v + n - 1) % n, v] {
+            for e in [links.prev[v], v] {
                 if let Some(k) = edge_key(e) {
                     if std::ptr::eq(k.q, &r[v]) {
                         status.remove(&k);
@@ -280,7 +305,7 @@ fn sweep<T: Coord>(r: &[[T; 2]], side: Side) -> Vec<Exit> {
         // Going up the line: the next vertex that stops the region.
         let mut next_stop: Option<usize> = None;
         for &a in group.iter().rev() {
-            let stops = blocks(r, a, convex[a], side);
+            let stops = blocks(r, links, a, convex[a], side);
             exits[a] = if stops {
                 Exit::Vertex(a)
             } else {
@@ -320,7 +345,7 @@ fn sweep<T: Coord>(r: &[[T; 2]], side: Side) -> Vec<Exit> {
         }
         // Edges starting on this line cross the lines to its right.
         for &v in group {
-            for e in [(v + n - 1) % n, v] {
+            for e in [links.prev[v], v] {
                 if let Some(k) = edge_key(e) {
                     if std::ptr::eq(k.p, &r[v]) {
                         status.insert(k);

@@ -339,9 +339,9 @@ fn degenerate_point_location_equals_testing_every_cell() {
     assert!(degenerate > 10_000, "{degenerate}");
 }
 
-/// Maps with holes (sec. 6.4): the localizer against the brute force at
-/// every cell of every dimension and at random points of the free space
-/// (the one-shot query assumes no holes, [`oracle::one_shot`]).
+/// Maps with holes (sec. 6.4): the localizer against the brute force and
+/// the one-shot query at every cell of every dimension and at random points
+/// of the free space.
 #[test]
 fn localizer_agrees_with_brute_force_on_maps_with_holes() {
     let mut total = Tally::default();
@@ -360,6 +360,7 @@ fn localizer_agrees_with_brute_force_on_maps_with_holes() {
             total.answers += t.answers;
             total.max_answers = total.max_answers.max(t.max_answers);
             total.on_lower += t.on_lower;
+            total.one_shot_sweeps += t.one_shot_sweeps;
         }
     }
     // Two identical rooms off a corridor, each with a pillar: from most of
@@ -406,4 +407,48 @@ fn localizer_agrees_with_brute_force_on_maps_with_holes() {
         "points on 1- and 0-cells were examined"
     );
     assert!(total.max_answers >= 2, "some query has several answers");
+}
+
+/// Step 5 of the one-shot query: two identical rooms off a corridor, a
+/// pillar in the second only. What the robot sees in the empty room fits
+/// the second room wall for wall (steps 1–4 pass there), but the pillar
+/// would stand inside it: the robot is in the first room only.
+#[test]
+fn the_one_shot_query_rules_out_a_placement_around_a_pillar() {
+    let pts = |v: &[(i128, i128)]| {
+        v.iter()
+            .map(|&(x, y)| wai_exact::Point::new(x, y))
+            .collect::<Vec<_>>()
+    };
+    let outer = pts(&[
+        (0, 0),
+        (40, 0),
+        (40, 4),
+        (29, 4),
+        (29, 5),
+        (32, 5),
+        (32, 15),
+        (24, 15),
+        (24, 5),
+        (27, 5),
+        (27, 4),
+        (9, 4),
+        (9, 5),
+        (12, 5),
+        (12, 15),
+        (4, 15),
+        (4, 5),
+        (7, 5),
+        (7, 4),
+        (0, 4),
+    ]);
+    let pillar = pts(&[(29, 10), (30, 10), (30, 11), (29, 11)]);
+    let (map, _) = Map::from_rings(outer, vec![pillar]).unwrap();
+    let index = VisibilityIndex::new(&map);
+    let p = RatPoint::from_i128(5, 14, 1).unwrap();
+    let view = RobotView::from_visibility(&index.visibility_polygon(&p).unwrap());
+    assert_eq!(oracle::brute_force(&index, &view), vec![p.clone()]);
+    assert_eq!(oracle::one_shot(&map, &view).positions, vec![p.clone()]);
+    let c = oracle::cross_check(&Localizer::new(&map), &index, &p).unwrap();
+    assert_eq!(c.answer.positions(), vec![p]);
 }
