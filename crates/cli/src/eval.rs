@@ -175,14 +175,14 @@ fn look_alike_figures(
 }
 
 /// A running peer: answers one scan at a time.
-trait Peer {
+pub(crate) trait Peer {
     fn name(&self) -> String;
     /// The settings the peer runs with on this map, as it reports them.
     fn settings(&self) -> Value;
     fn localize(&mut self, scan: &Scan, max_range: Option<f64>) -> Result<Outcome, String>;
 }
 
-fn start_peer(name: &str, map: &Map) -> Result<Box<dyn Peer>, Failure> {
+pub(crate) fn start_peer(name: &str, map: &Map) -> Result<Box<dyn Peer>, Failure> {
     peers::start(name, map)
 }
 

@@ -28,6 +28,7 @@ mod decompose;
 mod demo;
 mod embeddings;
 mod eval;
+mod eval_log;
 mod failure;
 mod gen;
 mod import_grid;
@@ -81,6 +82,10 @@ enum Command {
     /// Build a map with holes from a laser log's scans (CARMEN FLASER /
     /// ROBOTLASER1, plain or .gz) through an occupancy grid.
     MapFromLog(map_from_log::Args),
+    /// Localize a laser log's scans globally against a map built from the
+    /// log's other scans, with and without a compass, beside a peer: success
+    /// rates, answer sets, times and the error CDF.
+    EvalLog(eval_log::Args),
     /// The visibility polygon V_p of a viewpoint (edge kinds, blocking
     /// vertices) and its skeleton V*_p (origin, labels, kernel).
     Vis(vis::Args),
@@ -148,6 +153,7 @@ fn main() -> ExitCode {
         Command::Info(args) => info::run(&args),
         Command::ImportGrid(args) => import_grid::run(&args),
         Command::MapFromLog(args) => map_from_log::run(&args),
+        Command::EvalLog(args) => eval_log::run(&args),
         Command::Vis(args) => vis::run(&args),
         Command::Decompose(args) => decompose::run(&args),
         Command::Embeddings(args) => embeddings::run(&args),

@@ -66,30 +66,61 @@ pub fn read_log(path: &std::path::Path) -> Result<carmen::CarmenLog, Failure> {
     carmen::read(&bytes).map_err(|e| Failure::invalid(format!("{}: {e}", path.display())))
 }
 
-pub fn run(args: &Args) -> Result<(), Failure> {
-    let resolution = number("resolution", &args.resolution)?;
-    if resolution <= 0 {
-        return Err(Failure::usage("--resolution: must be above 0"));
+/// How to build a map from a log's scans.
+pub struct Build<'a> {
+    pub resolution: rug::Rational,
+    pub min_hole_area: rug::Rational,
+    pub simplify: Option<rug::Rational>,
+    pub half: Half,
+    /// Also write the occupancy grid as PREFIX.pgm and PREFIX.yaml.
+    pub grid_out: Option<&'a std::path::Path>,
+}
+
+impl Build<'_> {
+    /// The options of `wai map-from-log` (and `wai eval-log`), read.
+    pub fn parse<'a>(
+        resolution: &str,
+        min_hole_area: &str,
+        simplify: Option<&str>,
+        half: Half,
+        grid_out: Option<&'a std::path::Path>,
+    ) -> Result<Build<'a>, Failure> {
+        let resolution = number("resolution", resolution)?;
+        if resolution <= 0 {
+            return Err(Failure::usage("--resolution: must be above 0"));
+        }
+        let min_hole_area = number("min-hole-area", min_hole_area)?;
+        let simplify = simplify.map(|t| number("simplify", t)).transpose()?;
+        Ok(Build {
+            resolution,
+            min_hole_area,
+            simplify,
+            half,
+            grid_out,
+        })
     }
-    let min_hole_area = number("min-hole-area", &args.min_hole_area)?;
-    let simplify = args
-        .simplify
-        .as_deref()
-        .map(|t| number("simplify", t))
-        .transpose()?;
-    let log = read_log(&args.log)?;
+}
+
+/// The map built from the scans of `log` (read from `path`) that `build`
+/// picks, and a line saying what was done.
+pub fn build_map(
+    path: &std::path::Path,
+    log: &carmen::CarmenLog,
+    build: &Build<'_>,
+) -> Result<(wai_map::Map, String), Failure> {
+    let resolution = &build.resolution;
     let picked: Vec<usize> = (0..log.scans.len())
-        .filter(|&k| args.scans.picks(k))
+        .filter(|&k| build.half.picks(k))
         .collect();
     if picked.is_empty() {
         return Err(Failure::invalid(format!(
             "{}: no scan in the {:?} half",
-            args.log.display(),
-            args.scans
+            path.display(),
+            build.half
         )));
     }
     let (meta, image) = occupancy_grid(
-        &log,
+        log,
         &picked,
         &GridOptions {
             resolution: resolution.clone(),
@@ -100,13 +131,13 @@ pub fn run(args: &Args) -> Result<(), Failure> {
     if cells > 200_000_000 {
         return Err(Failure::invalid(format!(
             "{}: the scans span {} × {} cells at {} m; use a coarser --resolution",
-            args.log.display(),
+            path.display(),
             image.width,
             image.height,
-            format_exact(&resolution)
+            format_exact(resolution)
         )));
     }
-    if let Some(prefix) = &args.grid_out {
+    if let Some(prefix) = build.grid_out {
         let pgm = prefix.with_extension("pgm");
         let name = pgm
             .file_name()
@@ -121,34 +152,33 @@ pub fn run(args: &Args) -> Result<(), Failure> {
         write_file(&prefix.with_extension("yaml"), &yaml(&meta, &name))?;
     }
     let options = ImportOptions {
-        min_hole_area,
-        simplify,
+        min_hole_area: build.min_hole_area.clone(),
+        simplify: build.simplify.clone(),
         ..ImportOptions::default()
     };
     let (map, report) =
         import_parts(&meta, &image, &options).map_err(|e| Failure::invalid(e.to_string()))?;
-    let name = args
-        .log
+    let name = path
         .file_name()
         .map(|n| n.to_string_lossy().into_owned())
         .unwrap_or_default();
     let map = map
-        .with_name(format!("{name} ({:?} scans)", args.scans).to_lowercase())
+        .with_name(format!("{name} ({:?} scans)", build.half).to_lowercase())
         .with_source(format!(
             "{} of {} scans of the laser log {name} through a {} m occupancy grid",
             picked.len(),
             log.scans.len(),
-            format_exact(&resolution)
+            format_exact(resolution)
         ));
     let g = &report.region;
-    eprintln!(
+    let said = format!(
         "{}: {} scans of {} into {} × {} cells of {} m; free component {} cells; {} pinch cell(s) given up; {} speck(s) filled; map: {} vertices (r = {}), {} hole(s){}",
-        args.log.display(),
+        path.display(),
         picked.len(),
         log.scans.len(),
         image.width,
         image.height,
-        format_exact(&resolution),
+        format_exact(resolution),
         g.region_cells,
         g.pinch_cells,
         g.specks_filled,
@@ -161,5 +191,19 @@ pub fn run(args: &Args) -> Result<(), Failure> {
             String::new()
         }
     );
+    Ok((map, said))
+}
+
+pub fn run(args: &Args) -> Result<(), Failure> {
+    let build = Build::parse(
+        &args.resolution,
+        &args.min_hole_area,
+        args.simplify.as_deref(),
+        args.scans,
+        args.grid_out.as_deref(),
+    )?;
+    let log = read_log(&args.log)?;
+    let (map, said) = build_map(&args.log, &log, &build)?;
+    eprintln!("{said}");
     output(args.out.as_deref(), &wai_map::json::to_json(&map))
 }

@@ -581,6 +581,7 @@ fn embeddings_refuses_a_class_out_of_range() {
 }
 mod check;
 mod claims;
+mod eval_log;
 mod extremes;
 mod grid;
 mod localize;
