@@ -48,10 +48,16 @@ pub fn map_walls(map: &Map) -> Vec<Wall> {
     crate::walls(map)
 }
 
-/// The map's boundary ring in metres, for [`KartoPeer::spawn_map`]: the
-/// free space is its inside, so the peer searches only windows meeting it.
+/// The map's outer ring in metres, for [`KartoPeer::spawn_map`]: the free
+/// space lies inside it (less the holes, which the walls bring), so the
+/// peer searches only windows meeting it.
 pub fn map_free(map: &Map) -> Vec<(f64, f64)> {
-    crate::walls(map).into_iter().map(|[a, _]| a).collect()
+    let outer = map.outer().len();
+    crate::walls(map)
+        .into_iter()
+        .take(outer)
+        .map(|[a, _]| a)
+        .collect()
 }
 
 /// The peer's settings, sent with the walls.
