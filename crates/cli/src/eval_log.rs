@@ -11,7 +11,8 @@
 //! map, with no compass and with the log's heading as a compass; success
 //! is the best pose within 0.5 m and 10° (strict 0.1 m and 2°, loose 1 m
 //! and 30°), and the answer set holding the truth is counted apart. A peer
-//! (karto-scanmatcher) runs on the first queries, side by side.
+//! (karto-scanmatcher) runs on the first queries, side by side. Pictures:
+//! the error CDF, and the map with the query poses coloured by outcome.
 
 use crate::eval::start_peer;
 use crate::failure::Failure;
@@ -258,6 +259,48 @@ pub fn run(args: &Args) -> Result<(), Failure> {
             ));
         }
     }
+    // The query poses on the map, coloured by outcome, one picture per
+    // compass mode.
+    let kinds = [
+        ("#2ca02c", "best pose within 0.5 m and 10°"),
+        ("#ff7f0e", "answer set holds the truth, best pose elsewhere"),
+        ("#d62728", "truth not in the answer set"),
+    ];
+    let mut pictures = Vec::new();
+    for (label, trials, outs) in &rows {
+        let points: Vec<((f64, f64), usize)> = trials
+            .iter()
+            .zip(outs)
+            .map(|(t, o)| {
+                let right = o
+                    .best
+                    .as_ref()
+                    .is_some_and(|b| eval::NORMAL.accepts(b, &t.truth));
+                let held = o.set.iter().any(|p| eval::NORMAL.accepts(p, &t.truth));
+                (
+                    (t.truth.x, t.truth.y),
+                    if right {
+                        0
+                    } else if held {
+                        1
+                    } else {
+                        2
+                    },
+                )
+            })
+            .collect();
+        let slug = label.replace(|c: char| !c.is_ascii_alphanumeric(), "-");
+        let path = args.out.join(format!("outcomes-{stem}-{slug}.svg"));
+        let svg = wai_scan::draw::points_svg(
+            loc.walls(),
+            &format!("{stem}: {} query scans, {label}", trials.len()),
+            &points,
+            &kinds,
+            900.0,
+        );
+        crate::scan::write(&path, &svg)?;
+        pictures.push(path.display().to_string());
+    }
     let csv_path = args.out.join(format!("outcomes-{stem}.csv"));
     crate::output::write_file(&csv_path, &csv)?;
 
@@ -283,6 +326,7 @@ pub fn run(args: &Args) -> Result<(), Failure> {
         "peers": peer_summaries.iter().map(|(n, settings, s)| json!({"peer": n, "settings": settings, "summary": s.to_json()})).collect::<Vec<_>>(),
         "cdf_svg": cdf.display().to_string(),
         "outcomes_csv": csv_path.display().to_string(),
+        "outcome_maps_svg": pictures,
     });
     crate::output::write_file(
         &args.out.join(format!("eval-log-{stem}.json")),

@@ -238,3 +238,89 @@ pub fn answer_svg(
     s.push_str("</svg>\n");
     s
 }
+
+/// The map's walls (metres) with a dot at each of `points`, coloured by its
+/// kind: `kinds[k]` is the colour and legend label of kind `k` (the legend
+/// counts each kind's dots). For the query poses of an evaluation
+/// coloured by outcome.
+pub fn points_svg(
+    walls: &Walls,
+    title: &str,
+    points: &[((f64, f64), usize)],
+    kinds: &[(&str, &str)],
+    size: f64,
+) -> String {
+    let segs = walls.segments();
+    let (lo, hi) = walls.bounds();
+    let span = (hi.0 - lo.0).max(hi.1 - lo.1).max(1e-9);
+    let k = size / span;
+    let margin = 10.0;
+    let top_text = 24.0;
+    let (dw, dh) = (
+        (hi.0 - lo.0) * k + 2.0 * margin,
+        (hi.1 - lo.1) * k + 2.0 * margin + top_text,
+    );
+    let tx = |p: (f64, f64)| {
+        (
+            margin + (p.0 - lo.0) * k,
+            top_text + margin + (hi.1 - p.1) * k,
+        )
+    };
+    let mut body = String::new();
+    for seg in segs {
+        let (a, b) = (tx(seg[0]), tx(seg[1]));
+        let _ = write!(
+            body,
+            r#"<line x1="{:.2}" y1="{:.2}" x2="{:.2}" y2="{:.2}" stroke="black" stroke-width="1"/>"#,
+            a.0, a.1, b.0, b.1
+        );
+    }
+    let mut counts = vec![0usize; kinds.len()];
+    for &(p, kind) in points {
+        counts[kind] += 1;
+        let a = tx(p);
+        let _ = write!(
+            body,
+            r#"<circle cx="{:.2}" cy="{:.2}" r="2.2" fill="{}"/>"#,
+            a.0, a.1, kinds[kind].0
+        );
+    }
+    let mut entries = vec![(
+        Mark::Line("black".into(), 1.0, String::new()),
+        "map walls".to_string(),
+    )];
+    entries.extend(
+        kinds
+            .iter()
+            .zip(&counts)
+            .map(|((c, l), n)| (Mark::Dot((*c).into(), 3.0), format!("{l} ({n})"))),
+    );
+    let (legend_svg, lw, lh) = legend(dw + 8.0, top_text + margin, &entries);
+    let metres = wai_render::nice_floor(0.2 * (dw - 2.0 * margin) / k);
+    let bar = metres * k;
+    let top = dh.max(lh + top_text + margin + 10.0);
+    let (w, h) = ((dw + lw + 16.0).max(320.0), top + 30.0);
+    let (bx, by) = (margin, top + 14.0);
+    let text = format!("{} m", tick_text(metres, metres));
+    let mut s = String::new();
+    let _ = write!(
+        s,
+        r##"<svg xmlns="http://www.w3.org/2000/svg" width="{w:.0}" height="{h:.0}" viewBox="0 0 {w:.2} {h:.2}"><rect width="{w:.0}" height="{h:.0}" fill="white"/><text x="{margin:.1}" y="16" font-size="14" font-family="sans-serif" fill="#222">{}</text>"##,
+        xml(title)
+    );
+    s.push_str(&body);
+    s.push_str(&legend_svg);
+    let _ = write!(
+        s,
+        r##"<g class="scale-bar"><title>scale bar: {text}</title><rect x="{bx:.1}" y="{:.1}" width="{:.2}" height="5" fill="#222"/><rect x="{:.2}" y="{:.1}" width="{:.2}" height="5" fill="white" stroke="#222"/><text x="{:.1}" y="{:.1}" font-size="12" font-family="sans-serif" fill="#222">{text}</text></g>"##,
+        by - 5.0,
+        bar / 2.0,
+        bx + bar / 2.0,
+        by - 5.0,
+        bar / 2.0,
+        bx + bar + 8.0,
+        by + 1.0
+    );
+    s.push_str("</svg>\n");
+    s
+}
