@@ -113,6 +113,22 @@ pub(crate) fn xml(text: &str) -> String {
         .replace('>', "&gt;")
 }
 
+/// A scale bar `bar` pixels long, labelled `text`, its left end at `at`
+/// (the bar's baseline).
+fn scale_bar(s: &mut String, (bx, by): (f64, f64), bar: f64, text: &str) {
+    let _ = write!(
+        s,
+        r##"<g class="scale-bar"><title>scale bar: {text}</title><rect x="{bx:.1}" y="{:.1}" width="{:.2}" height="5" fill="#222"/><rect x="{:.2}" y="{:.1}" width="{:.2}" height="5" fill="white" stroke="#222"/><text x="{:.1}" y="{:.1}" font-size="12" font-family="sans-serif" fill="#222">{text}</text></g>"##,
+        by - 5.0,
+        bar / 2.0,
+        bx + bar / 2.0,
+        by - 5.0,
+        bar / 2.0,
+        bx + bar + 8.0,
+        by + 1.0
+    );
+}
+
 /// The picture of `answer` to `scan` on `walls` (metres), the drawing
 /// `size` pixels along its longer side.
 pub fn answer_svg(
@@ -224,17 +240,7 @@ pub fn answer_svg(
     );
     s.push_str(&body);
     s.push_str(&legend_svg);
-    let _ = write!(
-        s,
-        r##"<g class="scale-bar"><title>scale bar: {text}</title><rect x="{bx:.1}" y="{:.1}" width="{:.2}" height="5" fill="#222"/><rect x="{:.2}" y="{:.1}" width="{:.2}" height="5" fill="white" stroke="#222"/><text x="{:.1}" y="{:.1}" font-size="12" font-family="sans-serif" fill="#222">{text}</text></g>"##,
-        by - 5.0,
-        bar / 2.0,
-        bx + bar / 2.0,
-        by - 5.0,
-        bar / 2.0,
-        bx + bar + 8.0,
-        by + 1.0
-    );
+    scale_bar(&mut s, (bx, by), bar, &text);
     s.push_str("</svg>\n");
     s
 }
@@ -310,17 +316,7 @@ pub fn points_svg(
     );
     s.push_str(&body);
     s.push_str(&legend_svg);
-    let _ = write!(
-        s,
-        r##"<g class="scale-bar"><title>scale bar: {text}</title><rect x="{bx:.1}" y="{:.1}" width="{:.2}" height="5" fill="#222"/><rect x="{:.2}" y="{:.1}" width="{:.2}" height="5" fill="white" stroke="#222"/><text x="{:.1}" y="{:.1}" font-size="12" font-family="sans-serif" fill="#222">{text}</text></g>"##,
-        by - 5.0,
-        bar / 2.0,
-        bx + bar / 2.0,
-        by - 5.0,
-        bar / 2.0,
-        bx + bar + 8.0,
-        by + 1.0
-    );
+    scale_bar(&mut s, (bx, by), bar, &text);
     s.push_str("</svg>\n");
     s
 }

@@ -365,35 +365,7 @@ fn localizer_agrees_with_brute_force_on_maps_with_holes() {
     }
     // Two identical rooms off a corridor, each with a pillar: from most of
     // a room the other room looks the same (several answers).
-    let pts = |v: &[(i128, i128)]| {
-        v.iter()
-            .map(|&(x, y)| wai_exact::Point::new(x, y))
-            .collect::<Vec<_>>()
-    };
-    let outer = pts(&[
-        (0, 0),
-        (40, 0),
-        (40, 4),
-        (29, 4),
-        (29, 5),
-        (32, 5),
-        (32, 15),
-        (24, 15),
-        (24, 5),
-        (27, 5),
-        (27, 4),
-        (9, 4),
-        (9, 5),
-        (12, 5),
-        (12, 15),
-        (4, 15),
-        (4, 5),
-        (7, 5),
-        (7, 4),
-        (0, 4),
-    ]);
-    let pillar = |x: i128| pts(&[(x, 10), (x + 1, 10), (x + 1, 11), (x, 11)]);
-    let (rooms, _) = Map::from_rings(outer, vec![pillar(9), pillar(29)]).unwrap();
+    let rooms = two_rooms(&[9, 29]);
     let t = check_map(&rooms, 200, 1);
     assert!(t.max_answers >= 2, "two rooms with pillars: {t:?}");
     total.queries += t.queries;
@@ -415,6 +387,19 @@ fn localizer_agrees_with_brute_force_on_maps_with_holes() {
 /// would stand inside it: the robot is in the first room only.
 #[test]
 fn the_one_shot_query_rules_out_a_placement_around_a_pillar() {
+    let map = two_rooms(&[29]);
+    let index = VisibilityIndex::new(&map);
+    let p = RatPoint::from_i128(5, 14, 1).unwrap();
+    let view = RobotView::from_visibility(&index.visibility_polygon(&p).unwrap());
+    assert_eq!(oracle::brute_force(&index, &view), vec![p.clone()]);
+    assert_eq!(oracle::one_shot(&map, &view).positions, vec![p.clone()]);
+    let c = oracle::cross_check(&Localizer::new(&map), &index, &p).unwrap();
+    assert_eq!(c.answer.positions(), vec![p]);
+}
+
+/// Two identical 8 × 10 rooms off a 40 m corridor (doors at x = 7..9 and
+/// 27..29), with a unit pillar at (x, 10) for each x of `pillars`.
+fn two_rooms(pillars: &[i128]) -> Map {
     let pts = |v: &[(i128, i128)]| {
         v.iter()
             .map(|&(x, y)| wai_exact::Point::new(x, y))
@@ -442,13 +427,9 @@ fn the_one_shot_query_rules_out_a_placement_around_a_pillar() {
         (7, 4),
         (0, 4),
     ]);
-    let pillar = pts(&[(29, 10), (30, 10), (30, 11), (29, 11)]);
-    let (map, _) = Map::from_rings(outer, vec![pillar]).unwrap();
-    let index = VisibilityIndex::new(&map);
-    let p = RatPoint::from_i128(5, 14, 1).unwrap();
-    let view = RobotView::from_visibility(&index.visibility_polygon(&p).unwrap());
-    assert_eq!(oracle::brute_force(&index, &view), vec![p.clone()]);
-    assert_eq!(oracle::one_shot(&map, &view).positions, vec![p.clone()]);
-    let c = oracle::cross_check(&Localizer::new(&map), &index, &p).unwrap();
-    assert_eq!(c.answer.positions(), vec![p]);
+    let holes = pillars
+        .iter()
+        .map(|&x| pts(&[(x, 10), (x + 1, 10), (x + 1, 11), (x, 11)]))
+        .collect();
+    Map::from_rings(outer, holes).unwrap().0
 }
