@@ -42,7 +42,7 @@ pub mod registry;
 #[cfg(test)]
 pub(crate) mod fixtures;
 
-pub use framework::{Case, Ceiling, Checker, Known, Largest, Report, Violation};
+pub use framework::{Case, Ceiling, Checker, Known, Largest, Report, Rings, Violation};
 pub use registry::{
     chapter_of, checker, checkers, checkers_of_chapter, claim, claims_without_checker, Claim, Kind,
     CLAIMS,

@@ -41,7 +41,11 @@ pub struct Args {
     /// datasets, counterexamples/), which may precede generated kinds
     /// (`corpus,all`: the corpus first). Map i of the generated part has
     /// seed S + i. With --budget every kind (and the corpus) gets an equal
-    /// share of the time.
+    /// share of the time. The kinds with holes (`orthogonal-pillars`,
+    /// `simple-holes`, n default 6-20, 1 to 3 holes; the group `holes`) are
+    /// outside `all`: the claims assume a map without holes, and such a run
+    /// shows what holes do to them; checkers that walk one ring examine
+    /// nothing there.
     #[arg(long, default_value = "all")]
     pub maps: String,
     /// Instead of --maps: these map files.

@@ -43,7 +43,8 @@
 use std::cmp::Ordering;
 
 use rug::Rational;
-use wai_exact::{convex_hull, sees, turn, Point, QPoint};
+use wai_exact::{convex_hull, turn, QPoint};
+use wai_map::Map;
 
 use crate::piece::{line_cut, segments_meet, Bounds, Piece};
 
@@ -360,11 +361,11 @@ impl SightFan {
 
     /// A witness `w` of the cell and a point `p` of the candidate edge
     /// whose line of sight through h(a) passes through `x`, a point of the
-    /// fan. Re-checked against the map `ring`.
+    /// fan. Re-checked against `map` (every ring).
     ///
     /// # Panics
     /// If no such line is found or it fails the re-check (a bug).
-    pub fn sight_through(&self, ring: &[Point], x: &QPoint) -> (QPoint, QPoint) {
+    pub fn sight_through(&self, map: &Map, x: &QPoint) -> (QPoint, QPoint) {
         let (v1, v2) = (&self.v1, &self.v2);
         let to_c = |w: &QPoint, through: &QPoint| line_cut(w, through, &self.c.0, &self.c.1);
         let on_c_line = turn(&self.c.0, &self.c.1, x) == Ordering::Equal;
@@ -391,11 +392,11 @@ impl SightFan {
             let p = if on_c_line { x.clone() } else { to_c(&w, x) };
             (w, p)
         };
-        self.recheck(ring, x, &w, &p);
+        self.recheck(map, x, &w, &p);
         (w, p)
     }
 
-    fn recheck(&self, ring: &[Point], x: &QPoint, w: &QPoint, p: &QPoint) {
+    fn recheck(&self, map: &Map, x: &QPoint, w: &QPoint, p: &QPoint) {
         let (v1, v2) = (&self.v1, &self.v2);
         let through = turn(v1, v2, w) == Ordering::Greater
             && turn(v1, v2, p) == Ordering::Less
@@ -405,7 +406,7 @@ impl SightFan {
             && through
             && segments_meet(p, p, &self.c.0, &self.c.1)
             && segments_meet(x, x, w, p)
-            && sees(ring, &w.to_rat_point(), &p.to_rat_point()).is_visible();
+            && map.sees(&w.to_rat_point(), &p.to_rat_point()).is_visible();
         assert!(
             ok,
             "the line of sight {w}–{p} through {v1}–{v2} found for {x} fails its re-check: a bug in the sight fans"
@@ -524,12 +525,12 @@ impl Chord {
 
 /// Def 4.4 for two fans: a pair of lines of sight, one of each, that meet
 /// (anywhere, or behind both artificial edges with `beyond_only`),
-/// certified against the map `ring`.
-pub fn crossing(ring: &[Point], f: &SightFan, g: &SightFan, beyond_only: bool) -> Option<Crossing> {
+/// certified against `map` (every ring).
+pub fn crossing(map: &Map, f: &SightFan, g: &SightFan, beyond_only: bool) -> Option<Crossing> {
     let at = f.meets(g, beyond_only)?;
     Some(Crossing {
-        first: f.sight_through(ring, &at),
-        second: g.sight_through(ring, &at),
+        first: f.sight_through(map, &at),
+        second: g.sight_through(map, &at),
         at,
     })
 }

@@ -24,12 +24,13 @@
 //! other form an open subset of A × B (the boundary is closed, the pieces'
 //! points interior), so if there is one, there is one in general position,
 //! which the strict in-between samples find. Every "visible" answer comes
-//! with two exact points, re-checked by [`wai_exact::sees`].
+//! with two exact points, re-checked by [`Map::sees`]. Maps with holes are
+//! handled alike (see [`Sightlines::new`]).
 
 use crate::piece::{offsets_between, projection, segments_meet, Bounds, Parallel, Piece, Span};
 use rug::{Integer, Rational};
 use std::cmp::Ordering;
-use wai_exact::{convex_hull, sees, turn, Point, QPoint};
+use wai_exact::{convex_hull, turn, Point, QPoint};
 use wai_map::Map;
 
 /// The verdict of a mutual-visibility test.
@@ -52,7 +53,10 @@ impl Mutual {
 /// A map prepared for sight-line tests.
 #[derive(Debug)]
 pub struct Sightlines<'m> {
-    ring: &'m [Point],
+    map: &'m Map,
+    /// By vertex: the vertex after it along its ring (edge i runs from
+    /// vertex i to `next[i]`).
+    next: Vec<usize>,
     points: Vec<QPoint>,
     reflex: Vec<bool>,
     /// By map edge: its line as homogeneous integer coefficients (the
@@ -188,8 +192,13 @@ fn segment_meets_hull(h: &[QPoint], a: &QPoint, b: &QPoint) -> bool {
 
 impl<'m> Sightlines<'m> {
     pub fn new(map: &'m Map) -> Sightlines<'m> {
-        map.expect_no_holes("the mutual-visibility test");
+        // Holes (thesis sec. 6.4) change nothing in the argument: a sight
+        // line starts or stops meeting a hole as the line passes a vertex
+        // of the hole that is convex in it, which is a reflex vertex of the
+        // free space and so in E; the edges near a hull are those of every
+        // ring.
         let ring = map.vertices();
+        let next: Vec<usize> = (0..ring.len()).map(|i| map.next(i)).collect();
         let reflex = {
             let mut f = vec![false; ring.len()];
             for &r in map.reflex_vertices() {
@@ -202,11 +211,12 @@ impl<'m> Sightlines<'m> {
         let lines = (0..n)
             .map(|i| {
                 let h = |p: Point| [Integer::from(p.x), Integer::from(p.y), one()];
-                line_through(&h(ring[i]), &h(ring[(i + 1) % n]))
+                line_through(&h(ring[i]), &h(ring[next[i]]))
             })
             .collect();
         Sightlines {
-            ring,
+            map,
+            next,
             points: ring.iter().map(|&p| QPoint::from(p)).collect(),
             reflex,
             lines,
@@ -214,7 +224,7 @@ impl<'m> Sightlines<'m> {
     }
 
     fn edge(&self, i: usize) -> (&QPoint, &QPoint) {
-        (&self.points[i], &self.points[(i + 1) % self.points.len()])
+        (&self.points[i], &self.points[self.next[i]])
     }
 
     /// The map edges that meet the closed hull `h`.
@@ -252,7 +262,8 @@ impl<'m> Sightlines<'m> {
         let (ha, hb) = (homogeneous(a), homogeneous(b));
         let l = line_through(&ha, &hb);
         edges.iter().all(|&i| {
-            let (c, d) = (self.ring[i], self.ring[(i + 1) % self.ring.len()]);
+            let ring = self.map.vertices();
+            let (c, d) = (ring[i], ring[self.next[i]]);
             let side = |p: Point| {
                 side_of(
                     &l,
@@ -279,7 +290,9 @@ impl<'m> Sightlines<'m> {
     /// The certificate, re-checked by the reference predicate.
     fn certify(&self, from: QPoint, to: QPoint) -> Mutual {
         assert!(
-            sees(self.ring, &from.to_rat_point(), &to.to_rat_point()).is_visible(),
+            self.map
+                .sees(&from.to_rat_point(), &to.to_rat_point())
+                .is_visible(),
             "a sight line found between {from} and {to} is blocked: a bug in the mutual-visibility search"
         );
         Mutual::Visible { from, to }

@@ -50,4 +50,4 @@ pub use vector::{
     convex_hull, det3_sign_i128, turn, BigVector, QPoint, Vector, HOMOGENEOUS_FAST_BITS,
     VECTOR_FAST_BITS,
 };
-pub use visibility::{sees, Sight};
+pub use visibility::{sees, sees_among, Sight};

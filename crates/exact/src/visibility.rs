@@ -65,16 +65,34 @@ fn between(p: &RatPoint, q: &RatPoint, x: &RatPoint) -> bool {
 /// assert_eq!(sees(&l, &at(0, 0), &at(4, 0)), Sight::Blocked { edge: 0 }); // along an edge
 /// ```
 pub fn sees(ring: &[Point], p: &RatPoint, q: &RatPoint) -> Sight {
-    let lp = locate_rat(ring, p);
-    let lq = locate_rat(ring, q);
+    let n = ring.len();
+    sees_among(
+        (0..n).map(|i| (i, ring[i], ring[(i + 1) % n])),
+        |x| locate_rat(ring, x),
+        p,
+        q,
+    )
+}
+
+/// [`sees`] in a region bounded by several rings (a map with holes, thesis
+/// sec. 2.1): `edges` are the boundary's edges `(id, a, b)`, `locate` the
+/// region's containment. A blocked sight names the first edge of `edges`
+/// it meets.
+pub fn sees_among(
+    edges: impl IntoIterator<Item = (usize, Point, Point)>,
+    locate: impl Fn(&RatPoint) -> Containment,
+    p: &RatPoint,
+    q: &RatPoint,
+) -> Sight {
+    let lp = locate(p);
+    let lq = locate(q);
     if lp == Containment::Outside || lq == Containment::Outside {
         return Sight::EndpointOutside;
     }
     if p == q {
         return Sight::Visible;
     }
-    for i in 0..ring.len() {
-        let (a, b) = (ring[i], ring[(i + 1) % ring.len()]);
+    for (i, a, b) in edges {
         let Some(edge) = Line::new(a, b) else {
             continue;
         };
@@ -86,7 +104,7 @@ pub fn sees(ring: &[Point], p: &RatPoint, q: &RatPoint) -> Sight {
     if lp == Containment::Inside || lq == Containment::Inside {
         return Sight::Visible;
     }
-    match locate_rat(ring, &RatPoint::midpoint(p, q)) {
+    match locate(&RatPoint::midpoint(p, q)) {
         Containment::Inside => Sight::Visible,
         _ => Sight::Exterior,
     }

@@ -57,22 +57,32 @@ fn body_text(map: &Map, f: &Fields<'_>) -> String {
             map.scale().clone(),
         )))
     };
-    let outer: Vec<String> = map
-        .vertices()
-        .iter()
-        .map(|p| format!("    [\"{}\", \"{}\"]", unit(p.x), unit(p.y)))
-        .collect();
+    let ring = |r: &[wai_exact::Point], indent: &str| -> String {
+        r.iter()
+            .map(|p| format!("{indent}[\"{}\", \"{}\"]", unit(p.x), unit(p.y)))
+            .collect::<Vec<_>>()
+            .join(",\n")
+    };
+    let outer = ring(map.outer(), "    ");
+    let holes = if map.has_holes() {
+        let rings: Vec<String> = map
+            .holes()
+            .map(|h| format!("    [\n{}\n    ]", ring(h, "      ")))
+            .collect();
+        format!("[\n{}\n  ]", rings.join(",\n"))
+    } else {
+        "[]".to_owned()
+    };
     let meta_text = serde_json::to_string_pretty(f.meta)
         .expect("plain JSON values")
         .replace('\n', "\n  ");
     format!(
-        "{{\n  \"name\": {},\n  \"source\": {},\n  \"claim\": {},\n  \"kind\": {},\n  \"note\": {},\n  \"outer\": [\n{}\n  ],\n  \"holes\": [],\n  \"meta\": {meta_text}\n}}\n",
+        "{{\n  \"name\": {},\n  \"source\": {},\n  \"claim\": {},\n  \"kind\": {},\n  \"note\": {},\n  \"outer\": [\n{outer}\n  ],\n  \"holes\": {holes},\n  \"meta\": {meta_text}\n}}\n",
         field(f.name),
         field(f.source),
         field(f.claim),
         field(f.kind),
         field(f.note),
-        outer.join(",\n"),
     )
 }
 
@@ -152,6 +162,21 @@ mod tests {
             (Some("T4.2"), Some("violation"))
         );
         assert_eq!(v["meta"], meta);
+        assert_eq!(verify(text.as_bytes()), Ok(true));
+    }
+
+    #[test]
+    fn a_map_with_holes_keeps_its_holes_in_the_file() {
+        let map = wai_gen::random_with_holes("orthogonal-pillars", 8, 2, 3).expect("holed map");
+        assert!(map.has_holes());
+        let meta = serde_json::json!({});
+        let text = file_text(&map, "m", "by hand", "T4.2", "violation", "", &meta);
+        let back = wai_map::json::from_json(text.as_bytes())
+            .expect("a map")
+            .map;
+        assert_eq!(back.hole_count(), map.hole_count());
+        assert_eq!(back.vertices(), map.vertices());
+        assert_eq!(back.digest(), map.digest());
         assert_eq!(verify(text.as_bytes()), Ok(true));
     }
 

@@ -19,10 +19,13 @@
 //!    become 0, 1, 2, … (the order type of an orthogonal map survives);
 //! 5. pull one coordinate of one vertex toward 0: halve it, or subtract 1.
 //!
+//! On a map with holes, dropping one hole comes first; the moves above then
+//! change the outer ring only, the holes staying where they are.
+//!
 //! A proposal is accepted only if it lowers the measure (n, width + height,
 //! the sum of the coordinates relative to the least corner)
 //! lexicographically, so shrinking ends; the result is finally translated
-//! to the origin. Every proposal goes through [`Map::from_ring`] (a
+//! to the origin. Every proposal goes through [`Map::from_rings`] (a
 //! self-intersecting or degenerate ring is skipped, never a panic; collinear
 //! vertices it removes are gone) and only then to the predicate.
 //! Deterministic: the same map and predicate give the same result.
@@ -66,17 +69,30 @@ pub fn shrink(map: &Map, mut holds: impl FnMut(&Map) -> bool, max_tries: usize) 
         exhausted: false,
     };
     'pass: loop {
-        let ring = best.vertices().to_vec();
-        let bound = measure(&ring);
-        let proposals = wai_gen::shrink_map(&best)
-            .into_iter()
+        let rings = rings_of(&best);
+        let all: Vec<Point> = rings.concat();
+        let bound = measure(&all);
+        let (outer, holes) = (&rings[0], &rings[1..]);
+        // A map with holes: drop one hole, then move the outer ring with the
+        // holes kept where they are.
+        let drop_hole = (0..holes.len()).map(|k| {
+            let mut kept = rings.clone();
+            kept.remove(k + 1);
+            kept
+        });
+        let outer_only = Map::from_ring(outer.clone()).map(|(m, _)| m);
+        let outer_moves = outer_only
+            .iter()
+            .flat_map(wai_gen::shrink_map)
             .map(|m| m.vertices().to_vec())
-            .chain(proposals(&ring));
-        for proposal in proposals {
-            if measure(&proposal) >= bound {
+            .chain(proposals(outer))
+            .map(|o| std::iter::once(o).chain(holes.iter().cloned()).collect());
+        for proposal in drop_hole.chain(outer_moves) {
+            let proposal: Vec<Vec<Point>> = proposal;
+            if measure(&proposal.concat()) >= bound {
                 continue;
             }
-            let Ok((candidate, _)) = Map::from_ring(proposal) else {
+            let Some(candidate) = assemble(proposal) else {
                 continue;
             };
             if out.tries == max_tries {
@@ -92,12 +108,34 @@ pub fn shrink(map: &Map, mut holds: impl FnMut(&Map) -> bool, max_tries: usize) 
         }
         break;
     }
-    let at_origin = normalised(best.vertices(), false);
-    if let Ok((moved, _)) = Map::from_ring(at_origin) {
+    let rings = rings_of(&best);
+    let all = rings.concat();
+    let (dx, dy) = (
+        all.iter().map(|p| p.x).min().unwrap_or(0),
+        all.iter().map(|p| p.y).min().unwrap_or(0),
+    );
+    let moved = rings
+        .iter()
+        .map(|r| r.iter().map(|p| Point::new(p.x - dx, p.y - dy)).collect())
+        .collect();
+    if let Some(moved) = assemble(moved) {
         best = moved;
     }
     out.map = best.with_name(format!("{name}, shrunk"));
     out
+}
+
+/// The map's rings: the outer ring, then the holes.
+fn rings_of(map: &Map) -> Vec<Vec<Point>> {
+    (0..=map.hole_count())
+        .map(|k| map.ring(k).to_vec())
+        .collect()
+}
+
+/// The map of these rings, if they make a valid one.
+fn assemble(mut rings: Vec<Vec<Point>>) -> Option<Map> {
+    let outer = rings.remove(0);
+    Map::from_rings(outer, rings).ok().map(|(m, _)| m)
 }
 
 /// What every accepted move lowers: (n, width + height, the sum of the
@@ -235,6 +273,22 @@ mod tests {
         Map::from_ring(ring.iter().map(|&(x, y)| Point::new(x, y)).collect())
             .expect("valid")
             .0
+    }
+
+    #[test]
+    fn a_map_with_holes_shrinks_to_a_valid_map_with_holes() {
+        let map = wai_gen::random_with_holes("orthogonal-pillars", 12, 3, 5).expect("holed map");
+        assert!(map.hole_count() >= 2, "{}", map.hole_count());
+        // Kept while some hole remains: the holes are dropped down to one,
+        // and the outer ring shrinks around it.
+        let s = shrink(&map, |m| m.has_holes(), 10_000);
+        assert_eq!(s.map.hole_count(), 1);
+        assert!(s.map.n() < map.n() && s.steps > 0);
+        let (lo, _) = s.map.bounding_box();
+        assert_eq!((lo.x, lo.y), (0, 0));
+        // Kept only with every hole: no hole is dropped.
+        let s = shrink(&map, |m| m.hole_count() == map.hole_count(), 10_000);
+        assert_eq!(s.map.hole_count(), map.hole_count());
     }
 
     #[test]

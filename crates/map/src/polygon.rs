@@ -350,6 +350,20 @@ impl Map {
         Containment::Inside
     }
 
+    /// Whether `p` and `q` see each other in the free space (thesis sec.
+    /// 2.2, every ring a boundary): [`wai_exact::sees`] over the edges of
+    /// every ring, `Blocked { edge: i }` naming map edge `i` (from vertex
+    /// `i` to [`Map::next`]`(i)`).
+    pub fn sees(&self, p: &RatPoint, q: &RatPoint) -> wai_exact::Sight {
+        let v = &self.vertices;
+        wai_exact::sees_among(
+            (0..v.len()).map(|i| (i, v[i], v[self.next(i)])),
+            |x| self.locate(x),
+            p,
+            q,
+        )
+    }
+
     /// An error naming `stage` if the map has holes: for the stages that
     /// assume the thesis's chapters 3–5 setting of a map without holes.
     pub fn require_no_holes(&self, stage: &str) -> Result<(), crate::MapError> {

@@ -845,13 +845,13 @@ impl<'m> Study<'m> {
             return x.clone();
         }
         let p = &self.overlapping_pairs()[pair];
-        let ring = self.map.vertices();
+        let map = self.map;
         let found = self.timer.stage("crossings", || {
             (first.1 != second.1)
                 .then(|| {
                     self.fans_seeing(p.class, p.a, first)
                         .flat_map(|f| self.fans_seeing(p.class, p.b, second).map(move |g| (f, g)))
-                        .find_map(|(f, g)| crossing(ring, f, g, false))
+                        .find_map(|(f, g)| crossing(map, f, g, false))
                 })
                 .flatten()
         });

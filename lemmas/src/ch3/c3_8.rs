@@ -35,7 +35,7 @@
 //! something else, Remark 3.4).
 
 use serde_json::json;
-use wai_exact::{locate_rat, Containment, Point, RatPoint};
+use wai_exact::{Containment, Point, RatPoint};
 use wai_study::sample::{self, translate};
 use wai_study::Study;
 use wai_visibility::VisibilityPolygon;
@@ -96,7 +96,7 @@ pub fn check_points(study: &Study<'_>, points: &[CellPoint], r: usize) -> Report
                 let t = v[h.embedding.origin];
                 let (dx, dy) = (t.x - o.x, t.y - o.y);
                 let q = translate(&p.point, dx, dy);
-                if locate_rat(v, &q) != Containment::Inside {
+                if map.locate(&q) != Containment::Inside {
                     continue;
                 }
                 report.count("translates", 1);

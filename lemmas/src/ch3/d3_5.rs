@@ -106,7 +106,7 @@ fn along_map_edge(map: &Map, vp: &VisibilityPolygon, i: usize) -> bool {
         return false;
     }
     let u = &v[near].point;
-    [(m + 1) % map.n(), (m + map.n() - 1) % map.n()]
+    [map.next(m), map.prev(m)]
         .into_iter()
         .map(|k| RatPoint::from(map.vertices()[k]))
         .any(|w| orientation_rat(p, u, &w) == Orientation::Collinear && closer(p, u, &w))

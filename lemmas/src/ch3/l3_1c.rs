@@ -25,7 +25,7 @@
 //!    order of their directions around p. A violation is located (a point
 //!    of e' seen or hidden wrongly) by the former method: cut e' where the
 //!    lines through p and the map vertices meet it, and test every cut and
-//!    piece midpoint with [`wai_exact::sees`]; a test compares the two
+//!    piece midpoint with [`Map::sees`]; a test compares the two
 //!    methods on degenerate and generic maps, true and wrong edges.
 //!
 //! What is not covered: viewpoints outside the sample.
@@ -42,8 +42,8 @@ use serde_json::json;
 use std::cmp::Ordering;
 
 use wai_exact::{
-    det3_sign_i128, orientation, orientation_rat, sees, side_of_line_rat, Orientation, Point,
-    RatPoint, Side,
+    det3_sign_i128, orientation, orientation_rat, side_of_line_rat, Orientation, Point, RatPoint,
+    Side,
 };
 use wai_map::Map;
 use wai_visibility::{EdgeKind, VisibilityPolygon};
@@ -136,9 +136,9 @@ pub fn check_polygon(map: &Map, vp: &VisibilityPolygon) -> Report {
 
 /// Whether some other map edge lies on the line of map edge `k`.
 fn has_collinear_edge(map: &Map, k: usize) -> bool {
-    let (a, b) = (map.vertices()[k], map.vertices()[(k + 1) % map.n()]);
+    let (a, b) = (map.vertices()[k], map.vertices()[map.next(k)]);
     (0..map.n()).filter(|&j| j != k).any(|j| {
-        let (c, d) = (map.vertices()[j], map.vertices()[(j + 1) % map.n()]);
+        let (c, d) = (map.vertices()[j], map.vertices()[map.next(j)]);
         orientation(a, b, c) == Orientation::Collinear
             && orientation(a, b, d) == Orientation::Collinear
     })
@@ -311,7 +311,7 @@ fn check_edge(
         ));
     }
     // 2. No other non-spurious edge on e'.
-    let (ea, eb) = (&pts[k], &pts[(k + 1) % map.n()]);
+    let (ea, eb) = (&pts[k], &pts[map.next(k)]);
     let (ea, eb) = ((ea, row(ea)), (eb, row(eb)));
     for j in (0..n).filter(|&j| j != i && !edges.collinear[j]) {
         let named = vp.edges()[j].map_edge == Some(k);
@@ -357,7 +357,7 @@ fn check_edge(
 /// e", e = (`ls`, `lt`) in the parameters of `line`: cut e' at the lines
 /// through p and each map vertex (between two consecutive cuts the nearest
 /// map edge in every direction is fixed) and at e's endpoints, and test
-/// every cut and the midpoint of every piece with [`wai_exact::sees`].
+/// every cut and the midpoint of every piece with [`Map::sees`].
 /// `None` if every probe agrees. O(n) probes of O(n) each: used only to
 /// locate a violation, and as the reference the interval method is tested
 /// against.
@@ -392,7 +392,7 @@ fn locate_by_cut_points(
         }
         let want = *ls < l && l < *lt;
         let x = line.point(&l);
-        let sight = sees(map.vertices(), vp.viewpoint(), &x);
+        let sight = map.sees(vp.viewpoint(), &x);
         if sight.is_visible() != want {
             let what = if want {
                 format!("p does not see its point {x} ({sight:?})")
@@ -582,7 +582,7 @@ fn covers<'a>(cone: &Cone<'a>, blocked: &[Blocked<'a>], from: End<'a>, to: End<'
 fn visible_part_is(map: &Map, turns: &Turns<'_>, k: usize, s: &RatPoint, t: &RatPoint) -> bool {
     let v = map.vertices();
     let n = map.n();
-    let (ia, ib) = (k, (k + 1) % n);
+    let (ia, ib) = (k, map.next(k));
     let (a, b) = (D::V(ia), D::V(ib));
     let sense = turns.turn(a, b);
     let cone = Cone { turns, a, b, sense };
@@ -592,7 +592,7 @@ fn visible_part_is(map: &Map, turns: &Turns<'_>, k: usize, s: &RatPoint, t: &Rat
     let in_front = |x: usize| orientation(v[ia], v[ib], v[x]) == p_side;
     let mut blocked: Vec<Blocked<'_>> = Vec::new();
     for j in (0..n).filter(|&j| j != k) {
-        let (ic, id) = (j, (j + 1) % n);
+        let (ic, id) = (j, map.next(j));
         let turn = turns.turn(D::V(ic), D::V(id));
         if turn == Orientation::Collinear {
             // p on f's line, off f: f is seen edge-on, in one direction.
@@ -681,6 +681,34 @@ mod tests {
     use crate::fixtures::l_room;
     use wai_visibility::{EdgeKind, OnMap, VisEdge, VisVertex, VisibilityIndex};
 
+    /// What a hole does to the lemma (thesis sec. 6.4): a pillar in front
+    /// of a wall splits the part of the wall that p sees in two, two
+    /// non-spurious edges of V_p on one map edge. The checker, which sees
+    /// and locates against every ring, reports it; the lemma needs a map
+    /// without holes.
+    #[test]
+    fn a_pillar_splits_the_wall_that_p_sees() {
+        let pt = |x, y| Point::new(x, y);
+        let (map, _) = Map::from_rings(
+            vec![pt(0, 0), pt(10, 0), pt(10, 10), pt(0, 10)],
+            vec![vec![pt(4, 4), pt(4, 6), pt(6, 6), pt(6, 4)]],
+        )
+        .expect("a room with a pillar");
+        assert!(CHECKER.examines(&map));
+        let p = RatPoint::from(pt(5, 1));
+        let vp = VisibilityIndex::new(&map).visibility_polygon(&p).unwrap();
+        let report = check_polygon(&map, &vp);
+        assert!(report.examined > 0);
+        assert!(
+            report
+                .violations
+                .iter()
+                .any(|v| v.what.contains("also lies on map edge 2")),
+            "{:?}",
+            report.violations
+        );
+    }
+
     proptest::proptest! {
         /// λ by the checked `i128` formula is the rational one, for points
         /// of the line with any denominator, near and beyond `i128`.
@@ -749,6 +777,12 @@ mod tests {
             maps.push(wai_gen::family(id, &[2]).unwrap());
         }
         maps.push(crate::fixtures::doorway().0);
+        // Pillars and holes: the intervals and the probes over every ring.
+        for kind in ["orthogonal-pillars", "simple-holes"] {
+            for seed in 0..4 {
+                maps.push(wai_gen::random_with_holes(kind, 10, 2, seed).unwrap());
+            }
+        }
         let (mut compared, mut hidden) = (0, 0);
         for map in &maps {
             let index = VisibilityIndex::new(map);

@@ -100,7 +100,7 @@ pub fn short_candidates(study: &Study<'_>) -> (Vec<(usize, usize, usize)>, usize
                     let own = squared_length(v[h.vertices[i]], v[h.vertices[(i + 1) % k]]);
                     h.candidates[i]
                         .iter()
-                        .all(|&e| squared_length(v[e], v[(e + 1) % map.n()]) < own)
+                        .all(|&e| squared_length(v[e], v[map.next(e)]) < own)
                 }
             });
             match found {

@@ -52,7 +52,7 @@
 use std::collections::BTreeMap;
 
 use serde_json::json;
-use wai_exact::{locate_rat, Containment, Point, RatPoint};
+use wai_exact::{Containment, Point, RatPoint};
 use wai_map::Map;
 use wai_visibility::{reconstruct, Skeleton, SkeletonKey, VisibilityIndex, VisibilityPolygon};
 
@@ -336,7 +336,7 @@ fn check_translated_with(
                "translated_viewpoint": q.to_string(),
                "translated_viewpoint_file_units": sample::point_json(map, &q)})
     };
-    if locate_rat(map.vertices(), &q) != Containment::Inside {
+    if map.locate(&q) != Containment::Inside {
         if !embedding {
             return (report, None);
         }

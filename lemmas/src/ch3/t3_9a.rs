@@ -302,8 +302,7 @@ mod tests {
                             continue;
                         }
                         let u = RatPoint::from(map.vertices()[other.from]);
-                        let sees =
-                            |q: &RatPoint| wai_exact::sees(map.vertices(), q, &u).is_visible();
+                        let sees = |q: &RatPoint| map.sees(q, &u).is_visible();
                         if comes_into_sight(ray, other) {
                             assert!(
                                 !sees(&before) && sees(&after),

@@ -31,7 +31,8 @@ use wai_study::Study;
 const ID: &str = "C4.20";
 
 /// The checker of this claim.
-pub const CHECKER: Checker = Checker::new(ID, check_study).with_cases(&[
+pub const CHECKER: Checker = Checker::new(ID, check_study)
+    .outer_ring_only("the claim orders candidate edges counter-clockwise along the boundary: one ring").with_cases(&[
     Case {
         name: "same artificial edge",
         what: "mutually crossing candidate edges of artificial edges h(a), h'(a') on the same two map vertices (the necks of Fig 4.31)",

@@ -54,7 +54,8 @@ use wai_study::Study;
 const ID: &str = "L4.17";
 
 /// The checker of this claim.
-pub const CHECKER: Checker = Checker::new(ID, check_study).with_cases(&[
+pub const CHECKER: Checker = Checker::new(ID, check_study)
+    .outer_ring_only("its sight fans (wai_embed::SightFan) take the boundary behind an artificial edge as one chain of one ring").with_cases(&[
     Case {
         name: "regions apart",
         what: "two (artificial edge, candidate edge) of one embedding whose lines of sight lie in regions that are apart (Fig 4.29 cannot arise)",
@@ -72,7 +73,8 @@ pub const CHECKER: Checker = Checker::new(ID, check_study).with_cases(&[
 /// Checks L4.17 on every embedding.
 fn check_study(study: &Study<'_>) -> Report {
     let mut report = Report::new(ID);
-    let ring = study.map().vertices();
+    let map = study.map();
+    let ring = map.vertices();
     for (class, hs) in study.embeddings().iter().enumerate() {
         for (i, h) in hs.iter().enumerate() {
             if check_candidates(&h.embedding.candidates).is_some() {
@@ -100,12 +102,7 @@ fn check_study(study: &Study<'_>) -> Report {
             for (a, edges) in valid.iter().enumerate() {
                 for &c in edges {
                     let cells = views.iter().filter(|v| v[a] == Some(c)).count();
-                    let corners = [
-                        polygon[a],
-                        polygon[(a + 1) % k],
-                        ring[c],
-                        ring[(c + 1) % ring.len()],
-                    ];
+                    let corners = [polygon[a], polygon[(a + 1) % k], ring[c], ring[map.next(c)]];
                     regions.push(Region::new((a, c), cells, corners));
                 }
             }
@@ -122,7 +119,7 @@ fn check_study(study: &Study<'_>) -> Report {
                     let found = study
                         .fans_seeing(class, i, r1.key)
                         .flat_map(|f| study.fans_seeing(class, i, r2.key).map(move |g| (f, g)))
-                        .find_map(|(f, g)| violation(ring, f, g));
+                        .find_map(|(f, g)| violation(map, f, g));
                     report.record(found.map(tag));
                 }
             }
@@ -246,8 +243,8 @@ pub fn check_candidates(candidates: &[Vec<usize>]) -> Option<Violation> {
 
 /// Two fans of one embedding on different artificial edges: their lines
 /// of sight meet behind the artificial edges (outside h(V◇)).
-pub fn violation(ring: &[wai_exact::Point], f: &SightFan, g: &SightFan) -> Option<Violation> {
-    crossing(ring, f, g, true).map(|x| {
+pub fn violation(map: &wai_map::Map, f: &SightFan, g: &SightFan) -> Option<Violation> {
+    crossing(map, f, g, true).map(|x| {
         Violation::with_data(
             format!(
                 "lines of sight through artificial edges {} and {} of one embedding meet at {} outside it",
@@ -302,12 +299,8 @@ mod tests {
                     let mut regions = Vec::new();
                     for (a, edges) in study.valid_candidates(class, i).iter().enumerate() {
                         for &c in edges {
-                            let corners = [
-                                polygon[a],
-                                polygon[(a + 1) % k],
-                                ring[c],
-                                ring[(c + 1) % ring.len()],
-                            ];
+                            let corners =
+                                [polygon[a], polygon[(a + 1) % k], ring[c], ring[map.next(c)]];
                             regions.push(Region::new((a, c), 1, corners));
                         }
                     }

@@ -38,7 +38,8 @@ use wai_study::Study;
 const ID: &str = "T4.19";
 
 /// The checker of this claim.
-pub const CHECKER: Checker = Checker::new(ID, check_study).with_cases(&[
+pub const CHECKER: Checker = Checker::new(ID, check_study)
+    .outer_ring_only("its cases order candidate edges counter-clockwise along the boundary: one ring").with_cases(&[
     Case {
         name: "z' on h(a)",
         what: "c' crosses c1 and c2, and an end of its artificial edge h'(a') is an end of h(a) (the proof's first case, Fig 4.35)",

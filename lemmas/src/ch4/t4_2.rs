@@ -61,7 +61,7 @@ const ID: &str = "T4.2";
 
 /// The cases of the order on ∂M of the ends of a, a', b, b' (sec. 4.3),
 /// and the line of Lemma 4.14 missing; shared with Theorem 4.3.
-pub const ORDER_CASES: [Case; 6] = [
+pub const ORDER_CASES: [Case; 7] = [
     Case {
         name: "order 1",
         what: "a1' ≺ a1 ≺ b1' ≺ b1 ≺ b2 ≺ b2' ≺ a2 ≺ a2' on ∂M (sec. 4.3, case 1, Fig 4.4)",
@@ -86,6 +86,10 @@ pub const ORDER_CASES: [Case; 6] = [
         name: "no line l",
         what: "no line parallel to t through the intersection leaves it through an artificial edge of h one way and of h' the other (Lemma 4.14 says there always is one)",
     },
+    Case {
+        name: "ends on several rings",
+        what: "a map with holes: the eight ends lie on more than one ring of ∂M, so the proof's order along ∂M does not exist (thesis sec. 6.4)",
+    },
 ];
 
 /// The checker of this claim.
@@ -104,6 +108,7 @@ pub const CHECKER: Checker = Checker::new(ID, check_study).with_cases(&[
     ORDER_CASES[3],
     ORDER_CASES[4],
     ORDER_CASES[5],
+    ORDER_CASES[6],
 ]);
 
 /// Maps up to this many vertices have every verdict cross-checked. The
@@ -185,7 +190,7 @@ pub fn proof_lines(
     let (p, q) = (&rings[pair.class][pair.a], &rings[pair.class][pair.b]);
     exits(x, &t, within, &|i| p.artificial[i], &|j| q.artificial[j])
         .into_iter()
-        .map(|(i, j)| order_case(map.len(), &t, map, h, h2, i, j))
+        .map(|(i, j)| order_case(study.map(), &t, h, h2, i, j))
         .collect()
 }
 
@@ -250,18 +255,19 @@ pub fn exits(
     out
 }
 
-/// The case of the order on ∂M (a map of `n` vertices) of the ends of a =
-/// h's skeleton edge `i`, a' = h''s, b' = h''s edge `j`, b = h's, "above"
-/// meaning left of `t`.
+/// The case of the order on ∂M of the ends of a = h's skeleton edge `i`,
+/// a' = h''s, b' = h''s edge `j`, b = h's, "above" meaning left of `t`.
+/// On a map with holes the order is along the one ring that holds all
+/// eight ends; ends on several rings have no such order.
 fn order_case(
-    n: usize,
+    whole: &wai_map::Map,
     t: &QPoint,
-    map: &[wai_exact::Point],
     h: &wai_embed::Embedding,
     h2: &wai_embed::Embedding,
     i: usize,
     j: usize,
 ) -> &'static str {
+    let map = whole.vertices();
     let k = h.vertices.len();
     let ends = |e: &wai_embed::Embedding, s: usize| {
         let (u, v) = (e.vertices[s], e.vertices[(s + 1) % k]);
@@ -277,7 +283,16 @@ fn order_case(
     let (a1p, a2p) = ends(h2, i);
     let (b1, b2) = ends(h, j);
     let (b1p, b2p) = ends(h2, j);
-    let pos = |v: usize| (v + n - a1p) % n;
+    let ring = whole.ring_of(a1p);
+    if [a1, a2, a2p, b1, b2, b1p, b2p]
+        .iter()
+        .any(|&v| whole.ring_of(v) != ring)
+    {
+        return "ends on several rings";
+    }
+    let on_ring = whole.ring_range(ring);
+    let (base, n) = (on_ring.start, on_ring.len());
+    let pos = |v: usize| (v - base + n - (a1p - base)) % n;
     let lt = |x: usize, y: usize| pos(x) < pos(y);
     let le = |x: usize, y: usize| pos(x) <= pos(y);
     // a1' ≺ ·, the ends above l before those below, and the outer ones.

@@ -46,7 +46,8 @@ pub const ONE_EMBEDDING: &str = "one embedding";
 pub const TWO_EMBEDDINGS: &str = "two embeddings";
 
 /// The checker of this claim.
-pub const CHECKER: Checker = Checker::new(ID, check_study).with_cases(&[
+pub const CHECKER: Checker = Checker::new(ID, check_study)
+    .outer_ring_only("a chord between two map vertices cuts a map without holes in two (wai_embed::Chord); with holes it need not").with_cases(&[
     Case {
         name: K2,
         what: "map edges e, f candidate edges of different artificial edges in k = 2 embeddings",

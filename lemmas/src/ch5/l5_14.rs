@@ -41,7 +41,8 @@ pub const APART: &str = "apart";
 pub const THREE_APART: &str = "three apart";
 
 /// The checker of this claim.
-pub const CHECKER: Checker = Checker::new(ID, check_study).with_cases(&[
+pub const CHECKER: Checker = Checker::new(ID, check_study)
+    .outer_ring_only("gap chains run along the boundary from one candidate edge to the next (Def 5.4): boundary order on one ring").with_cases(&[
     Case {
         name: K4,
         what: "map edges e, f candidate edges of different artificial edges in k ≥ 4 \

@@ -28,7 +28,8 @@ pub const NESTED: &str = "nested";
 pub const INTERWEAVED: &str = "interweaved";
 
 /// The checker of this claim.
-pub const CHECKER: Checker = Checker::new(ID, check_study).with_cases(&[
+pub const CHECKER: Checker = Checker::new(ID, check_study)
+    .outer_ring_only("gap chains run along the boundary from one candidate edge to the next (Def 5.4): boundary order on one ring").with_cases(&[
     Case {
         name: NESTED,
         what: "two gaps of which one is nested into the other (Def 5.6)",

@@ -31,7 +31,8 @@ pub const SAME_EDGE: &str = "same artificial edge";
 pub const OTHER_EDGES: &str = "different artificial edges";
 
 /// The checker of this claim.
-pub const CHECKER: Checker = Checker::new(ID, check_study).with_cases(&[
+pub const CHECKER: Checker = Checker::new(ID, check_study)
+    .outer_ring_only("gap chains run along the boundary from one candidate edge to the next (Def 5.4): boundary order on one ring").with_cases(&[
     Case {
         name: SAME_EDGE,
         what: "interweaved gaps of two embeddings h1(a), h2(a) of one artificial edge a",

@@ -31,7 +31,8 @@ pub const ONE_PAIR: &str = "one pair";
 pub const SEVERAL_PAIRS: &str = "several pairs";
 
 /// The checker of this claim.
-pub const CHECKER: Checker = Checker::new(ID, check_study).with_cases(&[
+pub const CHECKER: Checker = Checker::new(ID, check_study)
+    .outer_ring_only("gap chains run along the boundary from one candidate edge to the next (Def 5.4): boundary order on one ring").with_cases(&[
     Case {
         name: ONE_PAIR,
         what: "two embeddings with exactly one pair of interweaved gaps (Def 5.6)",

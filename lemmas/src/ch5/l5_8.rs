@@ -35,7 +35,8 @@ pub const TREES: &str = "trees";
 pub const MIXED: &str = "mixed kinds";
 
 /// The checker of this claim.
-pub const CHECKER: Checker = Checker::new(ID, check_study).with_cases(&[
+pub const CHECKER: Checker = Checker::new(ID, check_study)
+    .outer_ring_only("gap chains run along the boundary from one candidate edge to the next (Def 5.4): boundary order on one ring").with_cases(&[
     Case {
         name: STARS,
         what: "an interweavement graph whose components have one special node each (no \

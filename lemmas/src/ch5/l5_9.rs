@@ -40,7 +40,8 @@ pub const PART_4: &str = "part 4";
 pub const PART_4_TIGHT: &str = "part 4 tight";
 
 /// The checker of this claim.
-pub const CHECKER: Checker = Checker::new(ID, check_study).with_cases(&[
+pub const CHECKER: Checker = Checker::new(ID, check_study)
+    .outer_ring_only("gap chains run along the boundary from one candidate edge to the next (Def 5.4): boundary order on one ring").with_cases(&[
     Case {
         name: PART_1,
         what: "a special node (its degree is at least 2: Lemma 5.9 (1))",

@@ -70,6 +70,7 @@ const CASES: &[Case] = &[
 /// a 10-minute `wai search-extremes --ratio cmult`
 /// (`counterexamples/T5.12-extreme-*`).
 pub const CHECKER: Checker = Checker::new(ID, check_study)
+    .outer_ring_only("gap chains run along the boundary from one candidate edge to the next (Def 5.4): boundary order on one ring")
     .with_cases(CASES)
     .with_ceiling(Ceiling(4, 1));
 
@@ -121,12 +122,11 @@ pub fn assumption_cases(
 /// of the edges' directions.
 pub fn has_parallel_lines(map: &wai_map::Map, c: &CandidateSets, class: &[(usize, usize)]) -> bool {
     let v = map.vertices();
-    let n = v.len();
     let dirs: Vec<(i128, i128)> = class
         .iter()
         .filter_map(|&(j, i)| c.sets[j][i].first())
         .map(|&e| {
-            let (a, b) = (v[e], v[(e + 1) % n]);
+            let (a, b) = (v[e], v[map.next(e)]);
             (b.x - a.x, b.y - a.y)
         })
         .collect();

@@ -9,5 +9,5 @@
 pub mod checker;
 pub mod report;
 
-pub use checker::{Case, Ceiling, Checker, Known};
+pub use checker::{Case, Ceiling, Checker, Known, Rings};
 pub use report::{over, Largest, Report, Violation};

@@ -105,7 +105,7 @@ fn the_pieces_hold_every_sampled_line_of_sight_and_nothing_else() {
 
 #[test]
 fn lines_of_sight_from_two_cells_cross_and_are_certified() {
-    let ring = room();
+    let ring = wai_map::Map::from_ring(room()).expect("a valid room").0;
     let (left, right) = (fan_of(square(1, 1)), fan_of(square(8, 1)));
     let x = crossing(&ring, &left, &right, false).expect("they cross");
     // The certificate's segments meet at `at`, each from its cell.
