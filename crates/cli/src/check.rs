@@ -180,7 +180,7 @@ fn stream(args: &Args) -> Result<Stream, Failure> {
     if !args.files.is_empty() {
         let mut maps = Vec::new();
         for f in &args.files {
-            let map = crate::input::load(f, crate::input::Format::Auto)?.map;
+            let map = crate::input::load_with_holes(f, crate::input::Format::Auto)?.map;
             let name = map
                 .name()
                 .map_or_else(|| f.display().to_string(), str::to_owned);
@@ -570,6 +570,23 @@ fn text_summary(
             untested.join(", ")
         );
     }
+    let with_holes = !args.files.is_empty()
+        || wai_hunt::parse_kinds(&args.maps).is_ok_and(|kinds| {
+            kinds
+                .iter()
+                .any(|k| matches!(k.kind, wai_hunt::MapKind::Holed(_)))
+        });
+    if with_holes {
+        let one_ring: Vec<&str> = wai_lemmas::checkers()
+            .filter(|c| matches!(c.rings, wai_lemmas::Rings::Outer(_)))
+            .map(|c| c.id)
+            .collect();
+        let _ = writeln!(
+            s,
+            "  checkers that walk one ring, run on the maps without holes only: {}",
+            one_ring.join(", ")
+        );
+    }
     for v in outcome.counterexamples().iter().take(5) {
         let _ = writeln!(
             s,
@@ -609,7 +626,7 @@ fn replay(args: &Args, file: &Path) -> Result<(), Failure> {
             .as_str()
             .map(str::to_owned)
     });
-    let map = crate::input::load(file, crate::input::Format::Auto)?.map;
+    let map = crate::input::load_with_holes(file, crate::input::Format::Auto)?.map;
     let (report, open) = wai_hunt::store::replay(&checker, &map);
     outln!(
         "wai check --replay {}: {claim}{} on {} (n = {}, r = {}): examined {}, violations {}, known failures {}",

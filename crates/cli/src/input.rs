@@ -109,7 +109,7 @@ fn refuse_holes(path: &Path, loaded: &Loaded) -> Result<(), Failure> {
         .require_no_holes("this command")
         .map_err(|e| {
             Failure::invalid(format!(
-                "{}: {e} (the thesis's chapters 3–5 assume a map without holes; `wai info`, `render`, `vis`, `decompose`, `embeddings`, `preprocess`, `localize`, `scan`, `localize-scan` and `eval` read maps with holes)",
+                "{}: {e} (the thesis's chapters 3–5 assume a map without holes; `wai info`, `render`, `vis`, `decompose`, `embeddings`, `preprocess`, `localize`, `scan`, `localize-scan`, `eval` and `check --files` or `--replay` read maps with holes)",
                 path.display()
             ))
         })

@@ -9,9 +9,9 @@
 //! [`wai_visibility::SkeletonKey`] in a map, exactly.
 //!
 //! Maps with holes (sec. 6.4) are embedded too: map edges and neighbours
-//! follow each vertex's ring ([`wai_map::Map::next`]). The mutual-visibility
-//! test of Theorem 4.2 (module `mutual`) still assumes one ring and panics on a
-//! map with holes ([`wai_map::Map::expect_no_holes`]).
+//! follow each vertex's ring ([`wai_map::Map::next`]), and so does the
+//! mutual-visibility test of Theorem 4.2 (module `mutual`). Gap chains
+//! (module `gaps`) and [`Chord`] still take the boundary as one ring.
 //!
 //! Seeing follows sec. 2.2 as the rest of the workspace reads it: two
 //! points see each other when the closed segment between them meets the

@@ -60,6 +60,50 @@ fn a_clean_run_reports_examined_counts_and_exits_0() {
     assert_eq!(v["counterexamples"], serde_json::json!([]));
 }
 
+/// Maps with holes: the claims that assume none are checked on them, the
+/// one-ring checkers are named apart, and a stored counterexample keeps
+/// its holes (L3.1c: a pillar splits the wall p sees).
+#[test]
+fn a_run_on_maps_with_holes_names_the_one_ring_checkers_and_stores_holes() {
+    let dir = tmp("holes");
+    let out = wai(
+        &[
+            "check",
+            "L3.1c",
+            "L5.13",
+            "T3.3b",
+            "--maps",
+            "orthogonal-pillars",
+            "--count",
+            "6",
+            "--out",
+            dir.to_str().unwrap(),
+        ],
+        b"",
+    );
+    let stdout = text(&out.stdout);
+    assert_eq!(
+        out.status.code(),
+        Some(1),
+        "{stdout}\n{}",
+        text(&out.stderr)
+    );
+    assert!(
+        stdout.contains("checkers that walk one ring, run on the maps without holes only: ")
+            && stdout.contains("L5.13"),
+        "{stdout}"
+    );
+    let file = dir.join("L3.1c-check-seed0-map0.json");
+    let stored: serde_json::Value =
+        serde_json::from_slice(&std::fs::read(&file).expect("a counterexample")).expect("JSON");
+    assert!(
+        !stored["holes"].as_array().expect("holes").is_empty(),
+        "{stored}"
+    );
+    let replay = wai(&["check", "--replay", file.to_str().unwrap()], b"");
+    assert_eq!(replay.status.code(), Some(1), "{}", text(&replay.stdout));
+}
+
 #[test]
 fn the_planted_bug_is_found_shrunk_stored_and_replayed() {
     let dir = tmp("planted");
