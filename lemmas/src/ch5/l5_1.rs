@@ -18,7 +18,9 @@ const ID: &str = "L5.1";
 /// 1,502 maps — the stress corpus (901), 150 each of `bottled_niches` and
 /// `repeated_niches`, and 300 random maps of every kind with n from 8 to
 /// 30.
-pub const CHECKER: Checker = Checker::new(ID, check_study).with_ceiling(Ceiling(4, 1));
+pub const CHECKER: Checker = Checker::new(ID, check_study)
+    .outer_ring_only(super::OWN_ORIGIN)
+    .with_ceiling(Ceiling(4, 1));
 
 /// The largest ratio over the map's instances.
 fn check_study(study: &Study<'_>) -> Report {

@@ -18,7 +18,9 @@ const ID: &str = "L5.2";
 
 /// The checker. The ceiling is 8× the largest ratio seen: 2 (random-simple-2opt n = 11)
 /// over the 1,502 maps of [`super::l5_1::ceiling`].
-pub const CHECKER: Checker = Checker::new(ID, check_study).with_ceiling(Ceiling(16, 1));
+pub const CHECKER: Checker = Checker::new(ID, check_study)
+    .outer_ring_only(super::OWN_ORIGIN)
+    .with_ceiling(Ceiling(16, 1));
 
 /// r + (Σ (c − 1))² − Σ (c − 1)² for the c_{i,j} of one embedding.
 pub fn bound(r: usize, cs: &[usize]) -> u128 {

@@ -20,6 +20,12 @@ pub mod t5_16;
 pub mod t5_17;
 pub mod t5_17t;
 
+/// Why the checkers that read each cell's embedding at the cell's own
+/// origin examine nothing on a map with holes ([`crate::Rings::Outer`]).
+pub(crate) const OWN_ORIGIN: &str = "they read each cell's embedding at its own origin, which \
+     Def 3.11 does not give on a map with holes: a hole can split the part of a map edge that a \
+     cell sees in two (L3.1c fails there), and condition 2 then rules the placement out";
+
 use wai_embed::CandidateSets;
 use wai_study::{GapStructure, Study};
 

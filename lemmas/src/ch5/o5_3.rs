@@ -54,6 +54,7 @@ pub const BOTH: &str = "both";
 
 /// The checker of this claim, with its cases and its known failure.
 pub const CHECKER: Checker = Checker::new(ID, check_study)
+    .outer_ring_only(super::OWN_ORIGIN)
     .with_cases(&[
         Case {
             name: MAP_EDGE,

@@ -16,7 +16,9 @@ const ID: &str = "T5.16";
 
 /// The checker. The ceiling is 8× the largest ratio seen: 2 (random-simple-2opt n = 8,
 /// where r is small) over the 1,502 maps of [`super::l5_1::ceiling`].
-pub const CHECKER: Checker = Checker::new(ID, check_study).with_ceiling(Ceiling(16, 1));
+pub const CHECKER: Checker = Checker::new(ID, check_study)
+    .outer_ring_only(super::OWN_ORIGIN)
+    .with_ceiling(Ceiling(16, 1));
 
 /// The largest ratio over the map's instances.
 fn check_study(study: &Study<'_>) -> Report {

@@ -64,9 +64,10 @@ pub enum Rings {
     /// decomposition, the embeddings). Its verdict on a map with holes is
     /// the claim's.
     Every,
-    /// The outer ring only: the checker's own arithmetic takes the map as
-    /// one ring (the reason says where). On a map with holes it examines
-    /// nothing, so its silence is never read as the claim holding.
+    /// The outer ring only: the checker's own arithmetic, or a structure
+    /// it reads, takes the map as one ring (the reason says where). On a
+    /// map with holes it examines nothing, so its silence is never read as
+    /// the claim holding.
     Outer(&'static str),
 }
 

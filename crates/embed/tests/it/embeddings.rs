@@ -100,3 +100,55 @@ fn broken_keys_embed_nowhere() {
     let origins: BTreeSet<usize> = embeddings(&m, &full).iter().map(|h| h.origin).collect();
     assert!(origins.is_empty(), "{origins:?}");
 }
+
+/// What a hole does to Def 3.11 (thesis sec. 6.4): from a cell beside a
+/// pillar, an outer edge is seen in two parts, either side of the pillar's
+/// shadow, so the skeleton has both of its ends but not the edge between
+/// them as a full edge, and two artificial edges on its line. Condition 2
+/// (full edges are exactly the map edges among the images) then rules out
+/// the placement at the cell's own origin, and Lemma 3.5 (every point lies
+/// in the kernel of one embedding of its skeleton) needs the map without
+/// holes.
+#[test]
+fn a_pillar_leaves_a_skeleton_without_an_embedding_at_its_own_origin() {
+    let pt = |x, y| wai_exact::Point::new(x, y);
+    let (map, _) = wai_map::Map::from_rings(
+        vec![pt(22, 0), pt(24, 10), pt(0, 5)],
+        vec![vec![pt(20, 6), pt(20, 9), pt(23, 9), pt(23, 6)]],
+    )
+    .expect("a triangle with a pillar");
+    let d = Decomposition::new(&map);
+    let mut without = 0;
+    for (class, key) in d.skeletons().iter().enumerate() {
+        let origin = d.origin_of(d.classes()[class][0]);
+        if embeddings(&map, key).iter().any(|h| h.origin == origin) {
+            continue;
+        }
+        without += 1;
+        let o = map.vertices()[origin];
+        let k = key.offsets.len();
+        let image = |i: usize| {
+            let (dx, dy) = key.offsets[i];
+            let p = pt(o.x + dx, o.y + dy);
+            map.vertices()
+                .iter()
+                .position(|&v| v == p)
+                .expect("a map vertex")
+        };
+        let images: Vec<usize> = (0..k).map(image).collect();
+        // A map edge between two images that is not a full skeleton edge.
+        let split = (0..k).any(|i| {
+            (0..k).any(|j| {
+                images[j] == map.next(images[i]) && !(j == (i + 1) % k && key.labels[i].is_none())
+            })
+        });
+        assert!(split, "class {class}: condition 2 holds at the origin");
+        // Two artificial edges on one line: one map edge seen in two parts.
+        let labels: Vec<_> = key.labels.iter().flatten().collect();
+        assert!(
+            (0..labels.len()).any(|a| (a + 1..labels.len()).any(|b| labels[a] == labels[b])),
+            "class {class}: {key:?}"
+        );
+    }
+    assert!(without > 0, "every skeleton embeds at its own origin");
+}
