@@ -21,7 +21,7 @@ use serde_json::{json, Value};
 use std::path::PathBuf;
 use std::time::Instant;
 use wai_scan::eval::{self, CompassMode, Outcome, Summary, Trial};
-use wai_scan::{Compass, Options, Pose, ScanLocalizer};
+use wai_scan::{Compass, Options, Pose};
 
 #[derive(clap::Args, Debug)]
 pub struct Args {
@@ -162,7 +162,7 @@ pub fn run(args: &Args) -> Result<(), Failure> {
         max_memory: args.max_memory,
         ..Options::default()
     };
-    let loc = ScanLocalizer::try_new(&map, opts)
+    let loc = crate::failure::scan_localizer(&map, opts)
         .map_err(|e| Failure::invalid(format!("{}: refused: {e}", args.log.display())))?;
     let preprocess_s = t.elapsed().as_secs_f64();
 

@@ -13,6 +13,23 @@ pub fn progress_bar(len: u64) -> indicatif::ProgressBar {
     bar
 }
 
+/// The scan localizer of `map`, preprocessed with a progress bar on
+/// standard error (its stages: cells, signatures, tree); refused as
+/// [`wai_scan::ScanLocalizer::try_new`] refuses.
+pub fn scan_localizer(
+    map: &wai_map::Map,
+    opts: wai_scan::Options,
+) -> Result<wai_scan::ScanLocalizer, wai_scan::TooLarge> {
+    let bar = progress_bar(1);
+    let loc = wai_scan::ScanLocalizer::try_new_with_progress(map, opts, &|stage, done, total| {
+        bar.set_length(total.max(1) as u64);
+        bar.set_position(done as u64);
+        bar.set_message(format!("preprocessing: {stage} {done} of {total}"));
+    });
+    bar.finish_and_clear();
+    loc
+}
+
 /// A failure with its exit code.
 #[derive(Debug)]
 pub struct Failure {

@@ -160,7 +160,7 @@ pub fn run(args: &Args) -> Result<(), Failure> {
         ..Options::default()
     };
     let asked = opts.lattice;
-    let loc = ScanLocalizer::try_new(&m.map, opts)
+    let loc = crate::failure::scan_localizer(&m.map, opts)
         .map_err(|e| Failure::invalid(format!("{}: refused: {e}", m.name)))?;
     let lattice = match (loc.lattice_spacing(), asked) {
         (Some(g), Some(d)) if g > d => format!(

@@ -269,7 +269,21 @@ impl ScanLocalizer {
     /// [`ScanLocalizer::new`], refusing a map whose cells alone need more
     /// than [`Options::max_memory`].
     pub fn try_new(map: &Map, opts: Options) -> Result<ScanLocalizer, TooLarge> {
-        let d = Decomposition::new(map);
+        ScanLocalizer::try_new_with_progress(map, opts, &|_, _, _| {})
+    }
+
+    /// [`ScanLocalizer::try_new`], reporting `progress(stage, done, total)`
+    /// through the stages of a long preprocessing: `"cells"` (the
+    /// decomposition, over its cells of every dimension), `"signatures"`
+    /// (over the sites), then `"tree"` once before and after the metric
+    /// tree is built.
+    pub fn try_new_with_progress(
+        map: &Map,
+        opts: Options,
+        progress: &(dyn Fn(&str, usize, usize) + Sync),
+    ) -> Result<ScanLocalizer, TooLarge> {
+        let d =
+            Decomposition::with_progress(map, &mut |done, total| progress("cells", done, total));
         let cells = d.cells().len();
         if cells as u64 > site_budget(&opts) {
             return Err(TooLarge {
@@ -278,14 +292,23 @@ impl ScanLocalizer {
                 limit_mib: opts.max_memory >> 20,
             });
         }
-        Ok(ScanLocalizer::from_decomposition(&d, opts))
+        Ok(ScanLocalizer::preprocess(&d, opts, progress))
     }
 
     /// Preprocesses a decomposed map: one signature per 2-cell, and the
     /// lattice points of the big cells, the lattice widened to fit
     /// [`Options::max_memory`] ([`ScanLocalizer::lattice_spacing`]).
     pub fn from_decomposition(d: &Decomposition<'_>, opts: Options) -> ScanLocalizer {
+        ScanLocalizer::preprocess(d, opts, &|_, _, _| {})
+    }
+
+    fn preprocess(
+        d: &Decomposition<'_>,
+        opts: Options,
+        progress: &(dyn Fn(&str, usize, usize) + Sync),
+    ) -> ScanLocalizer {
         use rayon::prelude::*;
+        use std::sync::atomic::{AtomicUsize, Ordering};
         let walls = Walls::new(crate::walls(d.map()));
         let (cells, neighbours) = cell_sites(d);
         let spacing = opts
@@ -316,10 +339,21 @@ impl ScanLocalizer {
         }
         let plans = Plans::new(opts.samples);
         let cap = opts.max_range.unwrap_or(f64::INFINITY);
+        let (done, total) = (AtomicUsize::new(0), sites.len());
+        let step = (total / 100).max(1);
+        progress("signatures", 0, total);
         let mut signatures: Vec<Signature> = sites
             .par_iter()
-            .map(|s| Signature::of_point(&walls, s.at, cap, &plans))
+            .map(|s| {
+                let sig = Signature::of_point(&walls, s.at, cap, &plans);
+                let k = done.fetch_add(1, Ordering::Relaxed) + 1;
+                if k % step == 0 {
+                    progress("signatures", k, total);
+                }
+                sig
+            })
             .collect();
+        progress("signatures", total, total);
         let before = cell_list.len();
         let mut after = before;
         if let Some(threshold) = opts.coarsen {
@@ -344,10 +378,12 @@ impl ScanLocalizer {
             let mut k = 0;
             signatures.retain(|_| (keep[k], k += 1).0);
         }
+        progress("tree", 0, 1);
         let tree = Mbt::build(signatures.len(), 8, |i, j| {
             signatures[i].distance(&signatures[j])
         })
         .with_slack(ROTATION_SLACK);
+        progress("tree", 1, 1);
         ScanLocalizer {
             walls,
             cells: cell_list,

@@ -741,3 +741,26 @@ fn the_sampled_pcm_agrees_with_the_closed_form_on_exact_visibility_polygons() {
     // Sampling a PCF with jumps at 0.5° steps: 0.9 % measured.
     assert!(worst < 0.02, "worst relative difference {worst}");
 }
+
+/// A long preprocessing shows where it is: the decomposition over its
+/// cells, the signatures over the sites, the tree, each ending complete.
+#[test]
+fn preprocessing_reports_its_stages_to_the_end() {
+    use std::sync::Mutex;
+    let map = wai_gen::office(2, 3);
+    let seen: Mutex<Vec<(String, usize, usize)>> = Mutex::new(Vec::new());
+    let loc =
+        ScanLocalizer::try_new_with_progress(&map, Options::default(), &|stage, done, total| {
+            seen.lock().unwrap().push((stage.to_owned(), done, total));
+        })
+        .expect("a small office fits");
+    let seen = seen.into_inner().unwrap();
+    for stage in ["cells", "signatures", "tree"] {
+        let last = seen.iter().rev().find(|(s, _, _)| s == stage);
+        let (_, done, total) = last.unwrap_or_else(|| panic!("no {stage} in {seen:?}"));
+        assert!(done == total && *total > 0, "{stage}: {done} of {total}");
+    }
+    let first = |stage: &str| seen.iter().position(|(s, _, _)| s == stage).unwrap();
+    assert!(first("cells") < first("signatures") && first("signatures") < first("tree"));
+    assert!(loc.sites().len() >= loc.cells().len());
+}
