@@ -42,7 +42,9 @@ pub struct Args {
     /// (`corpus,all`: the corpus first). Map i of the generated part has
     /// seed S + i. With --budget every kind (and the corpus) gets an equal
     /// share of the time. The kinds with holes (`orthogonal-pillars`,
-    /// `simple-holes`, n default 6-20, 1 to 3 holes; the group `holes`) are
+    /// `simple-holes`, n default 6-20, 1 to 3 holes; `repeated-niches-pillars`
+    /// and `kernel-funnels-pillars`, chapter 4's layouts with pillars; the
+    /// group `holes`) are
     /// outside `all`: the claims assume a map without holes, and such a run
     /// shows what holes do to them; checkers that walk one ring examine
     /// nothing there.

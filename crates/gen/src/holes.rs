@@ -39,6 +39,22 @@ pub const HOLED_KINDS: &[HoledKindInfo] = &[
         min_n: 3,
         max_n: 5_000,
     },
+    HoledKindInfo {
+        id: "repeated-niches-pillars",
+        method: "the repeated-niches layout of chapter 4 (seed), enlarged 4 times, with up to \
+                 h rectangular pillars: overlapping embeddings of one skeleton beside pillars \
+                 (Theorem 4.2 with holes); n is ignored",
+        min_n: 1,
+        max_n: 5_000,
+    },
+    HoledKindInfo {
+        id: "kernel-funnels-pillars",
+        method: "the kernel-funnels layout of chapter 4 (seed), enlarged 4 times, with up to \
+                 h rectangular pillars: overlapping kernels beside pillars (Theorem 4.3 with \
+                 holes); n is ignored",
+        min_n: 1,
+        max_n: 5_000,
+    },
 ];
 
 /// A random map of `kind` (see [`HOLED_KINDS`]) with about `n` outer
@@ -62,11 +78,14 @@ pub fn random_with_holes(
             max: info.max_n,
         });
     }
-    let (base_kind, factor) = match info.id {
-        "orthogonal-pillars" => ("random-orthogonal", 4),
-        _ => ("random-simple-star", 8),
+    let (base, factor) = match info.id {
+        "orthogonal-pillars" => (crate::random("random-orthogonal", n, seed)?, 4),
+        "simple-holes" => (crate::random("random-simple-star", n, seed)?, 8),
+        layout => {
+            let id = layout.trim_end_matches("-pillars");
+            (crate::layout(id, seed)?, 4)
+        }
     };
-    let base = crate::random(base_kind, n, seed)?;
     let outer: Vec<Point> = base
         .vertices()
         .iter()
@@ -80,7 +99,7 @@ pub fn random_with_holes(
         budget -= 1;
         let x = rng.random_range(lo.x..hi.x);
         let y = rng.random_range(lo.y..hi.y);
-        let hole = if info.id == "orthogonal-pillars" {
+        let hole = if info.id != "simple-holes" {
             let (w, h) = (rng.random_range(1..=3), rng.random_range(1..=3));
             vec![
                 Point::new(x, y),
