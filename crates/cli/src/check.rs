@@ -44,10 +44,9 @@ pub struct Args {
     /// share of the time. The kinds with holes (`orthogonal-pillars`,
     /// `simple-holes`, n default 6-20, 1 to 3 holes; `repeated-niches-pillars`
     /// and `kernel-funnels-pillars`, chapter 4's layouts with pillars; the
-    /// group `holes`) are
-    /// outside `all`: the claims assume a map without holes, and such a run
-    /// shows what holes do to them; checkers that walk one ring examine
-    /// nothing there.
+    /// group `holes`) are outside `all`: the claims assume a map without
+    /// holes, and such a run shows what holes do to them; checkers that
+    /// walk one ring examine nothing there.
     #[arg(long, default_value = "all")]
     pub maps: String,
     /// Instead of --maps: these map files.
