@@ -28,3 +28,13 @@ for target, length in TARGETS.items():
         data = bytes([i]) + bytes(rnd.randrange(256) for _ in range(length))
         with open(os.path.join(out, f"shape-{shape}"), "wb") as f:
             f.write(data)
+
+# The holes target reads a kind (byte % 2), n, the holes and a seed: one
+# file per kind.
+out = os.path.join(here, "holes")
+os.makedirs(out, exist_ok=True)
+for i, kind in enumerate(["orthogonal-pillars", "simple-holes"]):
+    rnd = random.Random(f"holes-{kind}")
+    data = bytes([i]) + bytes(rnd.randrange(256) for _ in range(11))
+    with open(os.path.join(out, f"kind-{kind}"), "wb") as f:
+        f.write(data)

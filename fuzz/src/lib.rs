@@ -157,3 +157,58 @@ pub fn write_replay(v: &FoundViolation, target: &str) -> std::io::Result<PathBuf
     std::fs::write(&path, text)?;
     Ok(path)
 }
+
+/// A random map with holes from bytes: the kind (`orthogonal-pillars` or
+/// `simple-holes`, the random kinds of [`wai_gen::HOLED_KINDS`]; the
+/// layout-based kinds are too slow to fuzz), n in 6..=17, 1 to 3 holes, and
+/// a seed from the next eight bytes.
+pub fn holed_map_of(data: &[u8]) -> Option<Map> {
+    let mut u = Unstructured::new(data);
+    let kind = ["orthogonal-pillars", "simple-holes"][usize::from(u.arbitrary::<u8>().ok()? % 2)];
+    let n = 6 + usize::from(u.arbitrary::<u8>().ok()? % 12);
+    let holes = 1 + usize::from(u.arbitrary::<u8>().ok()? % 3);
+    let seed = u.arbitrary::<u64>().unwrap_or(0);
+    wai_gen::random_with_holes(kind, n, holes, seed).ok()
+}
+
+/// The `holes` target: every claim checker on a map with holes (thesis sec.
+/// 6.4). The claims assume a map without holes, so their violations there
+/// are findings (`wai check --maps holes` reports them), not failures; the
+/// law is that no checker panics and that a checker which walks one ring
+/// ([`wai_lemmas::Rings::Outer`]) examines nothing.
+///
+/// # Panics
+/// On a checker's panic, after writing its replay file.
+pub fn check_holes(data: &[u8]) {
+    let Some(map) = holed_map_of(data) else {
+        return;
+    };
+    let all: Vec<Checker> = wai_lemmas::checkers().collect();
+    let summary = inline(|| wai_hunt::run(&all, [&map]));
+    for c in all.iter().filter(|c| !c.examines(&map)) {
+        let tally = summary.tallies.iter().find(|t| t.claim == c.id);
+        assert!(
+            tally.is_none_or(|t| t.examined == 0),
+            "{} walks one ring but examined {:?} instances on the holed map {:?}",
+            c.id,
+            tally.map(|t| t.examined),
+            map.name()
+        );
+    }
+    let Some(v) = summary
+        .counterexamples()
+        .find(|v| v.violation.data["kind"] == "panic")
+    else {
+        return;
+    };
+    let replay = match write_replay(v, "holes") {
+        Ok(path) => path.display().to_string(),
+        Err(e) => format!("(could not write the replay file: {e})"),
+    };
+    panic!(
+        "the checker of {} panicked on the holed map {:?}: {}\nreplay file: {replay}\nreplay with: wai check --replay {replay}",
+        v.claim,
+        v.map_name.as_deref().unwrap_or("unnamed"),
+        v.violation.what,
+    );
+}
