@@ -134,3 +134,37 @@ fn bounds(ring: &[Point]) -> (Point, Point) {
         Point::new(xs.max().unwrap_or(1), ys.max().unwrap_or(1)),
     )
 }
+
+/// A room whose north wall is a convex chain of k vertices and with k
+/// small triangular pillars in a row below it (thesis sec. 6.4: with holes,
+/// Ω(n²r²) cells become possible). Every chain vertex sees every pillar, so
+/// each pillar sends about 2k visibility rays south (away from the chain
+/// vertices, tangent to the pillar), and rays of different pillars cross
+/// in the open room before the south wall, far below: Θ(k²) rays and up
+/// to Θ(k⁴) crossings, with n = 4k + 4 and r = 3k (the pillar corners; the
+/// chain's vertices are convex). Measured (`benches/results/cells/
+/// pillar-rays.md`), cells / (n²r) grows with k where Thm 3.9 bounds it
+/// for maps without holes; the pillars' corners are perturbed so that the
+/// rays are in general position.
+pub fn pillar_rays(k: u32) -> Map {
+    let k = i128::from(k.max(1));
+    let width = 100 * (k + 1);
+    let depth = 10_000 * k * k;
+    // South corners, then the east wall's top, the chain from east to
+    // west (bulging north: convex corners), the west wall's top.
+    let mut outer = vec![Point::new(0, -depth), Point::new(width, -depth)];
+    for m in (0..=k + 1).rev() {
+        outer.push(Point::new(100 * m, 10 * m * (k + 1 - m)));
+    }
+    let mut holes = Vec::new();
+    for i in 0..k {
+        let (cx, cy) = (100 * i + 50 + (i * 7) % 13, -100 - (i * 11) % 17);
+        holes.push(vec![
+            Point::new(cx - 4, cy),
+            Point::new(cx + 3 + i % 3, cy + 1),
+            Point::new(cx + (i % 5) - 2, cy - 5),
+        ]);
+    }
+    let (map, _) = Map::from_rings(outer, holes).expect("pillars apart below a convex chain");
+    map.with_name(format!("pillar-rays k={k}"))
+}

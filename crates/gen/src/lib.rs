@@ -46,7 +46,7 @@ pub use families::{
     overlap_fan_viewpoints, CombLayout, ConvexNichesLayout, MAX_FAMILY_VERTICES,
 };
 pub use grid::window_grid;
-pub use holes::{random_with_holes, HoledKindInfo, HOLED_KINDS};
+pub use holes::{pillar_rays, random_with_holes, HoledKindInfo, HOLED_KINDS};
 pub use indoor::{office, repeated_rooms};
 pub use interweave::{
     interweaved_gaps, shared_niches, shared_spiked_niches, CeilingNotch, PinholeLayout,
