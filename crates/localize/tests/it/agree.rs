@@ -345,7 +345,12 @@ fn degenerate_point_location_equals_testing_every_cell() {
 #[test]
 fn localizer_agrees_with_brute_force_on_maps_with_holes() {
     let mut total = Tally::default();
-    for kind in wai_gen::HOLED_KINDS {
+    // The random kinds (the chapter 4 layouts with pillars are one large
+    // map per seed, for the claim checkers).
+    for kind in wai_gen::HOLED_KINDS
+        .iter()
+        .filter(|k| ["orthogonal-pillars", "simple-holes"].contains(&k.id))
+    {
         for seed in 0..8 {
             let map = wai_gen::random_with_holes(
                 kind.id,

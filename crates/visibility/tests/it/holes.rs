@@ -18,7 +18,12 @@ fn check(map: &Map, what: &str) {
 #[test]
 fn random_maps_with_holes() {
     let mut maps = 0;
-    for kind in wai_gen::HOLED_KINDS {
+    // The random kinds (the chapter 4 layouts with pillars are one large
+    // map per seed, for the claim checkers).
+    for kind in wai_gen::HOLED_KINDS
+        .iter()
+        .filter(|k| ["orthogonal-pillars", "simple-holes"].contains(&k.id))
+    {
         for seed in 0..60 {
             for (n, h) in [(6, 1), (12, 3), (24, 8), (60, 15)] {
                 let map = wai_gen::random_with_holes(kind.id, n, h, seed).unwrap();
@@ -102,7 +107,12 @@ fn viewpoints(map: &Map, steps: i128) -> Vec<wai_exact::RatPoint> {
 fn visibility_and_skeletons_on_maps_with_holes() {
     let mut compared = 0;
     let mut maps = vec![];
-    for kind in wai_gen::HOLED_KINDS {
+    // The random kinds (the chapter 4 layouts with pillars are one large
+    // map per seed, for the claim checkers).
+    for kind in wai_gen::HOLED_KINDS
+        .iter()
+        .filter(|k| ["orthogonal-pillars", "simple-holes"].contains(&k.id))
+    {
         for seed in 0..12 {
             maps.push(wai_gen::random_with_holes(kind.id, 14, 5, seed).unwrap());
         }
