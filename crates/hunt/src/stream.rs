@@ -62,6 +62,22 @@ impl MapKind {
         kinds
     }
 
+    /// The n a random kind accepts, with or without holes (`None` for
+    /// layouts, families and bytes).
+    pub fn n_range(&self) -> Option<(usize, usize)> {
+        match self {
+            MapKind::Random(id) => wai_gen::RANDOM_KINDS
+                .iter()
+                .find(|k| k.id == *id)
+                .map(|k| (k.min_n, k.max_n)),
+            MapKind::Holed(id) => wai_gen::HOLED_KINDS
+                .iter()
+                .find(|k| k.id == *id)
+                .map(|k| (k.min_n, k.max_n)),
+            _ => None,
+        }
+    }
+
     /// The kinds with holes, the group `holes`; outside [`MapKind::all`].
     pub fn with_holes() -> Vec<MapKind> {
         wai_gen::HOLED_KINDS
@@ -137,37 +153,11 @@ pub fn parse_kinds(spec: &str) -> Result<Vec<KindSpec>, String> {
                 Some(r) => parse_range(r).map_err(|e| format!("--maps {part}: {e}"))?,
             };
             let sizes = match kind {
-                MapKind::Random(id) => {
-                    let info = wai_gen::RANDOM_KINDS
-                        .iter()
-                        .find(|k| k.id == id)
-                        .expect("a random kind of RANDOM_KINDS");
-                    let (a, b) = (
-                        (*sizes.start()).max(info.min_n),
-                        (*sizes.end()).min(info.max_n),
-                    );
+                MapKind::Random(id) | MapKind::Holed(id) => {
+                    let (min, max) = kind.n_range().expect("a generated kind has an n range");
+                    let (a, b) = ((*sizes.start()).max(min), (*sizes.end()).min(max));
                     if a > b {
-                        return Err(format!(
-                            "--maps {part}: {id} takes n from {} to {}",
-                            info.min_n, info.max_n
-                        ));
-                    }
-                    a..=b
-                }
-                MapKind::Holed(id) => {
-                    let info = wai_gen::HOLED_KINDS
-                        .iter()
-                        .find(|k| k.id == id)
-                        .expect("a kind of HOLED_KINDS");
-                    let (a, b) = (
-                        (*sizes.start()).max(info.min_n),
-                        (*sizes.end()).min(info.max_n),
-                    );
-                    if a > b {
-                        return Err(format!(
-                            "--maps {part}: {id} takes n from {} to {}",
-                            info.min_n, info.max_n
-                        ));
+                        return Err(format!("--maps {part}: {id} takes n from {min} to {max}"));
                     }
                     a..=b
                 }
